@@ -1,0 +1,127 @@
+#include "cli/options.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace wrc::cli {
+
+double parse_finite(const std::string& text, const std::string& what) {
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(value)) {
+    throw UsageError(what + ": '" + text + "' is not a finite number");
+  }
+  return value;
+}
+
+Options::Options(std::string command, std::string synopsis, std::vector<OptionSpec> specs,
+                 const std::vector<std::string>& args)
+    : command_(std::move(command)), synopsis_(std::move(synopsis)), specs_(std::move(specs)) {
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg == "--help" || arg == "-h") {
+      help_ = true;
+      continue;
+    }
+    if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
+      positional_.push_back(arg);
+      continue;
+    }
+    std::string name = arg;
+    std::optional<std::string> inline_value;
+    if (auto eq = arg.find('='); eq != std::string::npos) {
+      name = arg.substr(0, eq);
+      inline_value = arg.substr(eq + 1);
+    }
+    auto spec = std::find_if(specs_.begin(), specs_.end(), [&](const auto& s) { return s.name == name; });
+    if (spec == specs_.end()) throw UsageError("unknown option " + name + " (see wrc " + command_ + " --help)");
+    if (find(name)) throw UsageError("option " + name + " given twice");
+    if (!spec->takes_value) {
+      if (inline_value) throw UsageError("option " + name + " takes no value");
+      values_.emplace_back(name, "1");
+      continue;
+    }
+    if (inline_value) {
+      values_.emplace_back(name, *inline_value);
+    } else {
+      if (i + 1 >= args.size()) throw UsageError("option " + name + " needs a value");
+      values_.emplace_back(name, args[++i]);
+    }
+  }
+}
+
+std::string Options::help() const {
+  std::ostringstream out;
+  out << "usage: wrc " << command_ << " " << synopsis_ << "\n";
+  if (!specs_.empty()) out << "\noptions:\n";
+  for (const auto& s : specs_) {
+    std::string left = "  " + s.name + (s.takes_value ? " V" : "");
+    out << left << std::string(left.size() < 26 ? 26 - left.size() : 1, ' ') << s.help;
+    if (!s.default_text.empty()) out << " (default " << s.default_text << ")";
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::optional<std::string> Options::find(const std::string& name) const {
+  for (const auto& [k, v] : values_)
+    if (k == name) return v;
+  return std::nullopt;
+}
+
+bool Options::has(const std::string& name) const { return find(name).has_value(); }
+
+std::string Options::text(const std::string& name, const std::string& fallback) const {
+  return find(name).value_or(fallback);
+}
+
+std::string Options::required_text(const std::string& name) const {
+  auto v = find(name);
+  if (!v) throw UsageError("missing required option " + name);
+  return *v;
+}
+
+static double check_range(double value, const std::string& name, const std::string& text, double min, double max) {
+  if (value < min || value > max) {
+    std::ostringstream msg;
+    msg << name << ": " << text << " is outside [" << min << ", " << max << "]";
+    throw UsageError(msg.str());
+  }
+  return value;
+}
+
+double Options::number(const std::string& name, double fallback, double min, double max) const {
+  auto v = find(name);
+  if (!v) return fallback;
+  return check_range(parse_finite(*v, name), name, *v, min, max);
+}
+
+double Options::required_number(const std::string& name, double min, double max) const {
+  auto v = find(name);
+  if (!v) throw UsageError("missing required option " + name);
+  return check_range(parse_finite(*v, name), name, *v, min, max);
+}
+
+int Options::integer(const std::string& name, int fallback, int min, int max) const {
+  auto v = find(name);
+  if (!v) return fallback;
+  const double d = parse_finite(*v, name);
+  if (d != std::floor(d)) throw UsageError(name + ": '" + *v + "' is not a whole number");
+  return static_cast<int>(check_range(d, name, *v, min, max));
+}
+
+std::string Options::choice(const std::string& name, const std::vector<std::string>& words,
+                            const std::string& fallback) const {
+  auto v = find(name);
+  if (!v) return fallback;
+  if (std::find(words.begin(), words.end(), *v) != words.end()) return *v;
+  std::string list;
+  for (const auto& w : words) list += (list.empty() ? "" : ", ") + w;
+  throw UsageError(name + ": '" + *v + "' is not one of " + list);
+}
+
+}  // namespace wrc::cli

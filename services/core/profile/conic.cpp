@@ -1,0 +1,31 @@
+#include "core/profile/conic.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace wrc {
+namespace {
+constexpr double kHalfWidth = 0.06;
+}  // namespace
+
+ConicProfile::ConicProfile(double slope) : slope_(slope) {
+  if (!std::isfinite(slope)) {
+    throw std::invalid_argument("conic profile: slope must be finite");
+  }
+}
+
+ProfileSample ConicProfile::evaluate(double s) const { return {-slope_ * s, -slope_, 0.0}; }
+
+double ConicProfile::lower() const { return -kHalfWidth; }
+double ConicProfile::upper() const { return kHalfWidth; }
+ProfileSide ConicProfile::side() const { return ProfileSide::kWheel; }
+
+std::string ConicProfile::name() const {
+  std::ostringstream out;
+  out.precision(17);
+  out << "conic:" << slope_;
+  return out.str();
+}
+
+}  // namespace wrc

@@ -1,0 +1,75 @@
+#include "core/profile/profile_factory.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+
+#include "core/profile/circle_rail.hpp"
+#include "core/profile/conic.hpp"
+#include "core/profile/profile_error.hpp"
+#include "core/profile/s1002.hpp"
+#include "core/profile/uic60.hpp"
+
+namespace wrc {
+namespace {
+
+const char* side_name(ProfileSide side) { return side == ProfileSide::kWheel ? "wheel" : "rail"; }
+
+void require_side(const std::string& spec, ProfileSide wanted, ProfileSide actual) {
+  if (wanted != actual) {
+    throw ProfileError(spec, 0,
+                       std::string("is a ") + side_name(actual) + " profile, asked for as a " +
+                           side_name(wanted) + " profile");
+  }
+}
+
+// Parses the number after "<prefix>:"; the whole rest must be one finite number.
+double parse_parameter(const std::string& spec, std::size_t prefix_length) {
+  const std::string text = spec.substr(prefix_length);
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE ||
+      !std::isfinite(value)) {
+    throw ProfileError(spec, 0, "'" + text + "' is not a finite number");
+  }
+  return value;
+}
+
+bool starts_with(const std::string& text, const std::string& prefix) {
+  return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+}  // namespace
+
+ProfilePtr make_profile(const std::string& spec, ProfileSide side) {
+  if (spec == "S1002") {
+    require_side(spec, side, ProfileSide::kWheel);
+    return std::make_shared<S1002Profile>();
+  }
+  if (spec == "UIC60" || spec == "UIC60-MB") {
+    require_side(spec, side, ProfileSide::kRail);
+    return std::make_shared<Uic60Profile>(spec == "UIC60" ? Uic60Variant::kEn60E1
+                                                          : Uic60Variant::kManchester);
+  }
+  if (starts_with(spec, "conic:")) {
+    require_side(spec, side, ProfileSide::kWheel);
+    return std::make_shared<ConicProfile>(parse_parameter(spec, 6));
+  }
+  if (starts_with(spec, "circle:")) {
+    require_side(spec, side, ProfileSide::kRail);
+    const double radius = parse_parameter(spec, 7);
+    if (radius <= 0.0) {
+      throw ProfileError(spec, 0, "the circle radius must be positive [m]");
+    }
+    return std::make_shared<CircleRailProfile>(radius);
+  }
+  if (spec.empty()) {
+    throw ProfileError("(empty profile specification)", 0, "no profile name or file given");
+  }
+  // File readers follow in the next commit; until then anything else is an unknown name.
+  throw ProfileError(spec, 0, "unknown profile name");
+}
+
+}  // namespace wrc

@@ -1,0 +1,22 @@
+#pragma once
+/// @file
+/// Builds a profile from a short specification string (command lines, configuration files).
+
+#include <string>
+
+#include "core/profile/profile.hpp"
+
+namespace wrc {
+
+/// Builds the profile named by spec for the given side:
+/// - "S1002" (wheel): analytic S1002;
+/// - "UIC60" (rail): EN 60E1 construction; "UIC60-MB" (rail): Manchester variant (R80 at 7.7 mm);
+/// - "conic:<slope>" (wheel): cone F(s) = -slope*s, slope [-];
+/// - "circle:<radius>" (rail): circular head, radius [m] (> 0);
+/// - anything else: a profile file path (see profile_file.hpp for formats).
+/// Names are case-sensitive.
+/// @throws ProfileError if the spec is malformed, names a profile of the other side (e.g. "S1002"
+///         asked as a rail), or the file cannot be read.
+ProfilePtr make_profile(const std::string& spec, ProfileSide side);
+
+}  // namespace wrc

@@ -1,0 +1,18 @@
+#pragma once
+/// @file
+/// Profile and track options shared by the geometry commands (geometry, points, conicity, query).
+
+#include <vector>
+
+#include "cli/options.hpp"
+#include "core/geometry/wheelset_geometry.hpp"
+
+namespace wrc::cli {
+
+/// Option specs: --wheel, --rail, --rail-cant, --gauge, --flange-back, --inclination, --r0.
+std::vector<OptionSpec> profile_option_specs();
+
+/// Builds the wheelset geometry from parsed options (defaults: S1002 on UIC60, standard track).
+WheelsetGeometry geometry_from_options(const Options& options);
+
+}  // namespace wrc::cli

@@ -1,0 +1,74 @@
+#pragma once
+/// @file
+/// The curve C of the paper (section 3): wheel-surface points whose normal lies in a rail
+/// cross-section plane, and the vertical distance to the rail along it.
+
+#include <Eigen/Core>
+
+#include "core/geometry/placed_rail.hpp"
+#include "core/geometry/track.hpp"
+#include "core/geometry/wheel_side.hpp"
+#include "core/geometry/wheelset_pose.hpp"
+#include "core/profile/profile.hpp"
+
+namespace wrc {
+
+/// One point of the curve C, parametrised by the wheel profile coordinate s.
+struct LocusPoint {
+  bool over_rail = false;    ///< the point lies above the rail surface's lateral extent
+  double s = 0;              ///< wheel profile coordinate [m]
+  double theta = 0;          ///< angular position on the wheel from its lowest point, > 0 towards -x_body [rad]
+  double radius = 0;         ///< wheel radius R(s) = r0 + F(s) [m]
+  Eigen::Vector3d wheel{0, 0, 0};    ///< the wheel point in the track frame [m]
+  Eigen::Vector3d tangent{0, 0, 0};  ///< dC/ds in the track frame [-]
+  RailSample rail;           ///< rail surface below the wheel point
+  double distance = 0;       ///< vertical distance wheel point minus rail surface [m]
+  double distance_slope = 0; ///< d(distance)/ds [-]
+};
+
+/// The curve C of one wheel for one wheelset pose. Evaluation is cheap (one wheel-profile and one
+/// rail-profile evaluation plus a few trigonometric functions) and allocation-free.
+class ContactLocus {
+ public:
+  /// wheel and rail must outlive the locus.
+  ContactLocus(const Profile& wheel, const PlacedRail& rail, const TrackParameters& track,
+               WheelSide side, const WheelsetPose& pose);
+
+  /// The point of C at wheel profile coordinate s [m] (clamped to the wheel profile's domain).
+  LocusPoint at(double s) const;
+
+  /// d(distance)/ds at s [-]; NaN when the point is not over the rail.
+  double distance_slope(double s) const;
+
+  /// Range of s [m] whose points can lie over the rail (wheel domain intersected with the rail's
+  /// lateral extent, with a margin for roll and yaw).
+  double s_lower() const { return s_lower_; }
+  double s_upper() const { return s_upper_; }
+
+  /// Unit outward normal of the wheel surface at a locus point (pointing from the wheel towards
+  /// the rail), in the track frame.
+  Eigen::Vector3d wheel_normal(const LocusPoint& p, double slope) const;
+
+  const Eigen::Matrix3d& rotation() const { return rotation_; }
+  WheelSide side() const { return side_; }
+  const WheelsetPose& pose() const { return pose_; }
+  const Profile& wheel_profile() const { return wheel_; }
+  const PlacedRail& rail() const { return rail_; }
+  double nominal_radius() const { return r0_; }
+  /// Body-frame lateral coordinate of the taping line of this wheel [m] (signed).
+  double taping_y() const { return sigma_ * taping_; }
+
+ private:
+  const Profile& wheel_;
+  const PlacedRail& rail_;
+  WheelSide side_;
+  WheelsetPose pose_;
+  double sigma_;
+  double taping_;
+  double r0_;
+  Eigen::Matrix3d rotation_;
+  double rho_, beta_, a12_;
+  double s_lower_, s_upper_;
+};
+
+}  // namespace wrc

@@ -1,0 +1,138 @@
+#include "core/geometry/placed_rail.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/numerics/brent.hpp"
+
+namespace wrc {
+namespace {
+constexpr int kScanSamples = 4000;
+constexpr int kTableNodes = 1024;
+// Smallest dy/du accepted as part of the rail surface graph z(y): track slopes up to about 50.
+constexpr double kMinLateralStretch = 0.02;
+}  // namespace
+
+PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide side)
+    : rail_(std::move(rail)), side_(side), side_sign_(side_sign(side)) {
+  if (!rail_) throw std::invalid_argument("PlacedRail: no rail profile");
+  if (rail_->side() != ProfileSide::kRail)
+    throw std::invalid_argument("profile '" + rail_->name() + "' is a wheel profile, a rail profile is needed");
+  track.validate();
+  alpha_ = track.inclination - rail_->built_in_cant();
+  cos_ = std::cos(alpha_);
+  sin_ = std::sin(alpha_);
+
+  const double lo = rail_->lower(), hi = rail_->upper();
+  auto z_raw = [&](double u) { return u * sin_ + rail_->evaluate(u).height * cos_; };
+  auto dz_du = [&](double u) { return sin_ + rail_->evaluate(u).slope * cos_; };
+  auto dy_du = [&](double u) { return cos_ - rail_->evaluate(u).slope * sin_; };
+
+  // Top of rail: the highest point of the inclined profile.
+  int best = 0;
+  double best_z = -1e300;
+  const double du = (hi - lo) / kScanSamples;
+  for (int i = 0; i <= kScanSamples; ++i) {
+    const double z = z_raw(lo + i * du);
+    if (z > best_z) {
+      best_z = z;
+      best = i;
+    }
+  }
+  u_top_ = lo + best * du;
+  {
+    const double a = std::max(lo, u_top_ - du), b = std::min(hi, u_top_ + du);
+    const double fa = dz_du(a), fb = dz_du(b);
+    if (fa > 0 && fb < 0) u_top_ = brent_root(dz_du, a, b, fa, fb, 1e-13).x;
+  }
+  z0_ = -z_raw(u_top_);
+
+  // The part of the profile over which y(u) increases: the rail surface seen from above.
+  u_lower_ = u_top_;
+  while (u_lower_ - du >= lo && dy_du(u_lower_ - du) > kMinLateralStretch) u_lower_ -= du;
+  u_upper_ = u_top_;
+  while (u_upper_ + du <= hi && dy_du(u_upper_ + du) > kMinLateralStretch) u_upper_ += du;
+
+  // Gauge point: innermost point of the head between the top of rail and gauge_depth below it.
+  auto depth = [&](double u) { return z_raw(u) + z0_ + track.gauge_depth; };
+  double u_gauge = u_top_;
+  if (track.gauge_depth > 0) {
+    if (depth(u_lower_) > 0) {
+      std::ostringstream msg;
+      msg << "rail profile '" << rail_->name() << "' does not reach " << track.gauge_depth
+          << " m below its top on the gauge side: no gauge point";
+      throw std::invalid_argument(msg.str());
+    }
+    u_gauge = brent_root(depth, u_lower_, u_top_, depth(u_lower_), depth(u_top_), 1e-13).x;
+  }
+  double inner = u_gauge * cos_ - rail_->evaluate(u_gauge).height * sin_;
+  for (int i = 0; i <= 200; ++i) {
+    const double u = u_gauge + (u_top_ - u_gauge) * i / 200.0;
+    inner = std::min(inner, u * cos_ - rail_->evaluate(u).height * sin_);
+  }
+  axis_ = 0.5 * track.gauge - inner;
+  gauge_point_y_ = side_sign_ * 0.5 * track.gauge;
+
+  table_u_.resize(kTableNodes);
+  table_y_.resize(kTableNodes);
+  for (int i = 0; i < kTableNodes; ++i) {
+    const double u = u_lower_ + (u_upper_ - u_lower_) * i / (kTableNodes - 1.0);
+    table_u_[i] = u;
+    table_y_[i] = local_y(u, rail_->evaluate(u).height);
+  }
+  if (side_sign_ > 0) {
+    y_lower_ = table_y_.front();
+    y_upper_ = table_y_.back();
+  } else {
+    y_lower_ = -table_y_.back();
+    y_upper_ = -table_y_.front();
+  }
+}
+
+void PlacedRail::profile_to_track(double u, double& y, double& z) const {
+  const double v = rail_->evaluate(u).height;
+  y = side_sign_ * local_y(u, v);
+  z = local_z(u, v);
+}
+
+double PlacedRail::solve_u(double ly) const {
+  auto it = std::upper_bound(table_y_.begin(), table_y_.end(), ly);
+  size_t k = static_cast<size_t>(std::clamp<long>(it - table_y_.begin() - 1, 0, kTableNodes - 2));
+  double a = table_u_[k], b = table_u_[k + 1];
+  const double ya = table_y_[k], yb = table_y_[k + 1];
+  double u = a + (b - a) * (ly - ya) / (yb - ya);
+  for (int iter = 0; iter < 30; ++iter) {
+    const ProfileSample p = rail_->evaluate(u);
+    const double f = local_y(u, p.height) - ly;
+    if (f > 0) b = u; else a = u;
+    const double step = f / (cos_ - p.slope * sin_);
+    double next = u - step;
+    if (!(next > a && next < b)) next = 0.5 * (a + b);  // Newton left the bracket: bisect
+    if (std::fabs(next - u) < 1e-14) return next;
+    u = next;
+  }
+  return u;
+}
+
+RailSample PlacedRail::at(double y) const {
+  RailSample r;
+  const double ly = side_sign_ * y;
+  if (!(ly >= table_y_.front() && ly <= table_y_.back())) return r;
+  r.u = solve_u(ly);
+  const ProfileSample p = rail_->evaluate(r.u);
+  const double stretch = cos_ - p.slope * sin_;
+  r.valid = true;
+  r.z = local_z(r.u, p.height);
+  r.slope = side_sign_ * (sin_ + p.slope * cos_) / stretch;
+  r.d2 = p.curvature / (stretch * stretch * stretch);
+  return r;
+}
+
+double PlacedRail::curvature_at(double u) const {
+  const ProfileSample p = rail_->evaluate(u);
+  return -p.curvature / std::pow(1 + p.slope * p.slope, 1.5);
+}
+
+}  // namespace wrc

@@ -1,0 +1,175 @@
+#include "core/geometry/potential_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/numerics/brent.hpp"
+
+namespace wrc {
+namespace {
+
+struct Sample {
+  double s;
+  double slope;  // d(distance)/ds, NaN when not over the rail
+};
+
+bool valid(const Sample& x) { return !std::isnan(x.slope); }
+
+// Golden-section search for the extremum of sign * f in [a, b] (a minimum of sign * f).
+template <class F>
+Sample golden_extremum(F&& f, double a, double b, double sign, int iterations) {
+  const double r = 0.5 * (std::sqrt(5.0) - 1.0);
+  double c = b - r * (b - a), d = a + r * (b - a);
+  double fc = sign * f(c), fd = sign * f(d);
+  for (int i = 0; i < iterations; ++i) {
+    if (std::isnan(fc) || std::isnan(fd)) break;
+    if (fc < fd) {
+      b = d; d = c; fd = fc;
+      c = b - r * (b - a); fc = sign * f(c);
+    } else {
+      a = c; c = d; fc = fd;
+      d = a + r * (b - a); fd = sign * f(d);
+    }
+  }
+  const double s = fc < fd ? c : d;
+  return {s, f(s)};
+}
+
+}  // namespace
+
+ContactPoint make_contact_point(const ContactLocus& locus, double s, bool is_minimum) {
+  const LocusPoint p = locus.at(s);
+  const ProfileSample f = locus.wheel_profile().evaluate(p.s);
+  const double sigma = side_sign(locus.side());
+  ContactPoint c;
+  c.side = locus.side();
+  c.s = p.s;
+  c.rail_u = p.rail.u;
+  c.theta = p.theta;
+  c.wheel_point = p.wheel;
+  c.rail_point = Eigen::Vector3d(p.wheel.x(), p.wheel.y(), p.rail.z);
+  c.normal = -locus.wheel_normal(p, f.slope);
+  c.distance = p.distance;
+  c.contact_angle = std::atan(sigma * p.rail.slope);
+  c.rolling_radius = p.radius;
+  const double w = 1 + f.slope * f.slope;
+  c.wheel_curvature_lateral = -f.curvature / (w * std::sqrt(w));
+  c.wheel_curvature_rolling = 1.0 / (p.radius * std::sqrt(w));
+  c.rail_curvature_lateral = locus.rail().curvature_at(p.rail.u);
+  c.rail_curvature_rolling = 0.0;
+  const double h = 1e-6;
+  c.distance_curvature = (locus.distance_slope(p.s + h) - locus.distance_slope(p.s - h)) / (2 * h);
+  c.is_minimum = is_minimum;
+  return c;
+}
+
+std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const PotentialPointSearch& search) {
+  std::vector<ContactPoint> points;
+  const double lo = locus.s_lower(), hi = locus.s_upper();
+  if (!(hi > lo)) return points;
+  auto slope = [&](double s) { return locus.distance_slope(s); };
+
+  // Sample d(distance)/ds on a uniform grid plus the wheel profile's breakpoints.
+  std::vector<Sample> samples;
+  const int n = std::max(2, static_cast<int>(std::ceil((hi - lo) / search.step)));
+  samples.reserve(static_cast<size_t>(n) + 16);
+  for (int i = 0; i <= n; ++i) samples.push_back({lo + (hi - lo) * i / n, 0.0});
+  for (double b : locus.wheel_profile().breakpoints())
+    if (b > lo && b < hi) samples.push_back({b, 0.0});
+  std::sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) { return a.s < b.s; });
+  for (auto& x : samples) x.slope = slope(x.s);
+
+  auto add_root = [&](double a, double b, double fa, double fb) {
+    const RootResult r = brent_root(slope, a, b, fa, fb, search.tolerance);
+    // Distance decreasing before the root and increasing after it: a local minimum.
+    const bool minimum = fa < fb;
+    if (!points.empty() && std::fabs(points.back().s - r.x) < 10 * search.tolerance) return;
+    points.push_back(make_contact_point(locus, r.x, minimum));
+  };
+
+  for (size_t k = 0; k + 1 < samples.size(); ++k) {
+    const Sample& a = samples[k];
+    const Sample& b = samples[k + 1];
+    if (!valid(a) || !valid(b)) continue;
+    if (a.slope == 0) {
+      const double h = 1e-9;
+      const double left = slope(a.s - h), right = slope(a.s + h);
+      if (!std::isnan(left) && !std::isnan(right)) add_root(a.s - h, a.s + h, left, right);
+      continue;
+    }
+    if ((a.slope < 0) != (b.slope < 0) && b.slope != 0) {
+      add_root(a.s, b.s, a.slope, b.slope);
+      continue;
+    }
+    // Tangency check: a local extremum of the slope between samples may reach zero and hide a
+    // pair of roots. Fit a parabola through three samples and look closer where it comes near zero.
+    if (k == 0 || !valid(samples[k - 1])) continue;
+    const Sample& p = samples[k - 1];
+    const double sign = a.slope > 0 ? 1.0 : -1.0;
+    if (sign * a.slope > sign * p.slope || sign * a.slope > sign * b.slope) continue;
+    if ((p.slope < 0) != (a.slope < 0)) continue;
+    const double h1 = a.s - p.s, h2 = b.s - a.s;
+    const double d1 = (a.slope - p.slope) / h1, d2 = (b.slope - a.slope) / h2;
+    const double curv = 2 * (d2 - d1) / (h1 + h2);
+    double vertex = a.slope;
+    if (curv != 0) {
+      const double slope_at_a = (d1 * h2 + d2 * h1) / (h1 + h2);
+      vertex = a.slope - slope_at_a * slope_at_a / (2 * curv);
+    }
+    if (sign * vertex > 0.5 * sign * a.slope) continue;
+    const Sample e = golden_extremum(slope, p.s, b.s, sign, 60);
+    if (!valid(e) || (e.slope < 0) == (a.slope < 0)) continue;
+    // Two roots: [p, e] and [e, b] (the one in [p, a] may already have been added).
+    if (points.empty() || points.back().s < p.s) add_root(p.s, e.s, p.slope, e.slope);
+    add_root(e.s, b.s, e.slope, b.slope);
+  }
+  std::sort(points.begin(), points.end(), [](const ContactPoint& x, const ContactPoint& y) { return x.s < y.s; });
+  return points;
+}
+
+std::optional<LocusPoint> track_minimum(const ContactLocus& locus, double s_guess, double max_shift, double tolerance) {
+  auto slope = [&](double s) { return locus.distance_slope(s); };
+  // Grow a bracket [a, b] around s_guess with slope(a) < 0 < slope(b).
+  double h = 2e-5;
+  double a = s_guess, b = s_guess;
+  double fa = slope(a), fb = fa;
+  if (std::isnan(fa)) return std::nullopt;
+  while (h <= max_shift) {
+    if (fa >= 0) {
+      const double next = std::max(locus.s_lower(), s_guess - h);
+      const double fn = slope(next);
+      if (std::isnan(fn)) return std::nullopt;
+      if (fn < 0) { b = a; fb = fa; a = next; fa = fn; break; }
+      a = next; fa = fn;
+    } else if (fb <= 0) {
+      const double next = std::min(locus.s_upper(), s_guess + h);
+      const double fn = slope(next);
+      if (std::isnan(fn)) return std::nullopt;
+      if (fn > 0) { a = b; fa = fb; b = next; fb = fn; break; }
+      b = next; fb = fn;
+    }
+    h *= 2;
+  }
+  if (!(fa < 0 && fb >= 0)) return std::nullopt;
+  // The bracket may hold several roots after growing; Brent returns one of them. Accept it only if
+  // the distance is a local minimum there.
+  const RootResult r = brent_root(slope, a, b, fa, fb, tolerance);
+  const double step = 1e-7;
+  const double left = slope(r.x - step), right = slope(r.x + step);
+  if (!(left <= 0 && right >= 0)) return std::nullopt;
+  return locus.at(r.x);
+}
+
+std::optional<ContactPoint> select_common_point(const std::vector<ContactPoint>& points, double tie_tolerance) {
+  std::optional<ContactPoint> best;
+  for (const auto& p : points) {
+    if (!p.is_minimum) continue;
+    if (!best || p.distance < best->distance - tie_tolerance ||
+        (std::fabs(p.distance - best->distance) <= tie_tolerance && p.s > best->s)) {
+      best = p;
+    }
+  }
+  return best;
+}
+
+}  // namespace wrc

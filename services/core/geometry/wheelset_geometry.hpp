@@ -1,0 +1,51 @@
+#pragma once
+/// @file
+/// A wheel profile and a rail profile placed on a track: the exact contact geometry of both
+/// wheels of a rigid wheelset for any pose.
+
+#include <optional>
+#include <vector>
+
+#include "core/geometry/contact_locus.hpp"
+#include "core/geometry/contact_point.hpp"
+#include "core/geometry/placed_rail.hpp"
+#include "core/geometry/potential_points.hpp"
+#include "core/geometry/track.hpp"
+#include "core/profile/profile.hpp"
+
+namespace wrc {
+
+/// Wheelset on track: the same wheel profile on both wheels (mirrored for the right wheel) and the
+/// same rail profile on both rails (mirrored for the right rail).
+class WheelsetGeometry {
+ public:
+  /// Throws std::invalid_argument for a wheel given as rail (or vice versa) or invalid track values.
+  WheelsetGeometry(ProfilePtr wheel, ProfilePtr rail, const TrackParameters& track = {});
+
+  /// The curve C of one wheel at pose.
+  ContactLocus locus(WheelSide side, const WheelsetPose& pose) const;
+
+  /// Every potential common point of one wheel at pose, ordered by s.
+  std::vector<ContactPoint> potential_points(WheelSide side, const WheelsetPose& pose,
+                                             const PotentialPointSearch& search = {}) const;
+
+  /// The common point of one wheel at pose (nothing when the wheel is off the rail).
+  std::optional<ContactPoint> common_point(WheelSide side, const WheelsetPose& pose,
+                                           const PotentialPointSearch& search = {}) const;
+
+  const PlacedRail& rail(WheelSide side) const { return side == WheelSide::kLeft ? left_rail_ : right_rail_; }
+  const Profile& wheel_profile() const { return *wheel_; }
+  const ProfilePtr& wheel_profile_ptr() const { return wheel_; }
+  const ProfilePtr& rail_profile_ptr() const { return rail_; }
+  const TrackParameters& track() const { return track_; }
+
+ private:
+  static ProfilePtr checked_wheel(ProfilePtr wheel);
+  ProfilePtr wheel_;
+  ProfilePtr rail_;
+  TrackParameters track_;
+  PlacedRail left_rail_;
+  PlacedRail right_rail_;
+};
+
+}  // namespace wrc

@@ -1,0 +1,67 @@
+#pragma once
+/// @file
+/// Periodic heartbeat of a service process: who it is (model, instance, pid, request channel),
+/// its state (STARTING, READY, DRAINING), its load and the interface version it was built with.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <string>
+
+#include "bus/header_stamper.hpp"
+#include "bus/service_load.hpp"
+#include "wrc/heartbeat_t.hpp"
+
+namespace wrc::bus {
+
+/// Identity of a service as shown in its heartbeat.
+struct ServiceIdentity {
+  std::string program;          ///< executable name, e.g. "wrc-pingd"
+  std::string model;            ///< service kind / contact model, e.g. "pingd", "onepoint"
+  std::string instance;         ///< instance name, unique per model on one bus
+  std::string request_channel;  ///< full bus name of the channel it serves (may be empty)
+};
+
+/// Publishes heartbeat_t on the HEARTBEAT channel every period. Call tick() from the service
+/// loop; it publishes when a period has passed.
+class HeartbeatPublisher {
+ public:
+  /// channel: full bus name of the heartbeat channel; period [s] > 0 (throws
+  /// std::invalid_argument naming the value otherwise). Starts in state STARTING.
+  HeartbeatPublisher(lcm::LCM& lcm, std::string channel, ServiceIdentity identity, double period);
+
+  /// Changes the state and publishes at once (STARTING, READY, DRAINING of heartbeat_t).
+  void set_state(std::int8_t state);
+  /// Load figures for the next heartbeats.
+  void set_load(const ServiceLoad& load) { load_ = load; }
+  /// Geometry/spline table the service computes with (empty = none).
+  void set_table_hash(std::string hash) { table_hash_ = std::move(hash); }
+
+  /// Publishes if a period has passed since the last heartbeat; returns true when it did.
+  bool tick();
+  /// Publishes now and restarts the period.
+  void publish_now();
+  /// [s] until the next heartbeat is due (>= 0).
+  double seconds_until_due() const;
+
+  /// Current state.
+  std::int8_t state() const { return state_; }
+  /// [s] heartbeat period.
+  double period() const { return period_; }
+  /// Heartbeats published so far.
+  std::int64_t published() const { return published_; }
+
+ private:
+  lcm::LCM& lcm_;
+  std::string channel_;
+  ServiceIdentity identity_;
+  double period_;
+  double started_;      // [s] monotonic start time
+  double last_sent_;    // [s] monotonic time of the last heartbeat
+  std::int8_t state_ = wrc::heartbeat_t::STARTING;
+  ServiceLoad load_;
+  std::string table_hash_;
+  HeaderStamper stamper_;
+  std::int64_t published_ = 0;
+};
+
+}  // namespace wrc::bus

@@ -1,0 +1,181 @@
+#pragma once
+/// @file
+/// Service side of request/reply over LCM: decodes each request from the raw buffer, checks it,
+/// calls the service's handler and publishes the reply (request id echoed) on the request's
+/// reply channel. Undecodable, malformed or invalid requests are counted and logged, never
+/// crash the process; a handler exception becomes an error reply. Re-sent requests (same reply
+/// channel and id) are answered from a small cache instead of being computed again.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <deque>
+#include <exception>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "bus/channels.hpp"
+#include "bus/clock.hpp"
+#include "bus/decode.hpp"
+#include "bus/header_stamper.hpp"
+#include "bus/rejection_log.hpp"
+#include "bus/service_load.hpp"
+
+namespace wrc::bus {
+
+/// Kinds of error replies a server sends.
+enum class RequestError { kBadRequest, kInternalError };
+
+/// Counters of one server.
+struct ServerCounters {
+  std::int64_t received = 0;       ///< messages seen on the request channel
+  std::int64_t answered = 0;       ///< replies published (error replies included)
+  std::int64_t from_cache = 0;     ///< re-sent requests answered from the reply cache
+  std::int64_t not_addressed = 0;  ///< requests for another instance, ignored
+  std::int64_t rejected = 0;       ///< undecodable or invalid requests, handler failures
+};
+
+/// A request server for Request/Reply types with `request_id` and `reply_channel` (request) and
+/// `request_id` (reply) fields and a `header` in both.
+template <class Request, class Reply>
+class RequestServer : public LoadSource {
+ public:
+  /// Computes the reply of a valid request; may throw (std::invalid_argument = bad request,
+  /// anything else = internal error).
+  using Handler = std::function<void(const Request&, Reply&)>;
+  /// Checks a decoded request; returns an empty string when valid, else a one-line reason.
+  using Validator = std::function<std::string(const Request&)>;
+  /// Fills an error reply (status + message fields of the reply type).
+  using ErrorFiller = std::function<void(const Request&, RequestError, const std::string&, Reply&)>;
+  /// Returns false for requests meant for another instance (ignored, not an error).
+  using AddressFilter = std::function<bool(const Request&)>;
+
+  /// Subscribes to request_channel (full bus name). sender: header sender name.
+  /// Throws std::runtime_error when the subscription fails or handler is empty.
+  RequestServer(lcm::LCM& lcm, std::string request_channel, std::string sender, Handler handler)
+      : lcm_(lcm),
+        channel_(std::move(request_channel)),
+        stamper_(std::move(sender)),
+        rejections_(stamper_.sender() + " on " + channel_),
+        handler_(std::move(handler)) {
+    if (!handler_) throw std::runtime_error("request server on '" + channel_ + "' has no handler");
+    subscription_ = lcm_.subscribe(regex_escape(channel_), &RequestServer::on_request, this);
+    if (subscription_ == nullptr) {
+      throw std::runtime_error("cannot subscribe to request channel '" + channel_ + "'");
+    }
+    subscription_->setQueueCapacity(1000);
+  }
+  ~RequestServer() override { lcm_.unsubscribe(subscription_); }
+  RequestServer(const RequestServer&) = delete;
+  RequestServer& operator=(const RequestServer&) = delete;
+
+  /// Optional range/consistency check run before the handler.
+  void set_validator(Validator validator) { validator_ = std::move(validator); }
+  /// Optional: how to express errors in the reply type; without it, bad requests get no reply.
+  void set_error_filler(ErrorFiller filler) { error_filler_ = std::move(filler); }
+  /// Optional: which requests this instance answers.
+  void set_address_filter(AddressFilter filter) { address_filter_ = std::move(filter); }
+
+  /// Channel served.
+  const std::string& channel() const { return channel_; }
+  /// Counters since start.
+  const ServerCounters& counters() const { return counters_; }
+
+  void add_load(ServiceLoad& load) const override {
+    load.requests_handled += counters_.answered;
+    load.requests_rejected += counters_.rejected;
+    latencies_.summarise(load);
+  }
+  double take_busy_time() override { return std::exchange(busy_time_, 0.0); }
+
+ private:
+  static constexpr std::size_t kCacheSize = 16;
+
+  void on_request(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+    const double start = monotonic_seconds();
+    ++counters_.received;
+    Request request;
+    if (std::string why = decode_message(*rbuf, request); !why.empty()) {
+      reject(channel, why);
+      return;
+    }
+    if (address_filter_ && !address_filter_(request)) {
+      ++counters_.not_addressed;
+      return;
+    }
+    if (request.reply_channel.empty() || request.reply_channel.size() > kMaxChannelLength) {
+      reject(channel, "reply channel '" + request.reply_channel + "' is empty or longer than 63 characters");
+      return;
+    }
+    for (auto& [key, cached] : cache_) {
+      if (key.first == request.reply_channel && key.second == request.request_id) {
+        ++counters_.from_cache;
+        publish(request.reply_channel, cached, start);
+        return;
+      }
+    }
+    Reply reply;
+    std::string why;
+    if (request.request_id <= 0) {
+      why = "request_id " + std::to_string(request.request_id) + " is not positive";
+    } else if (validator_) {
+      why = validator_(request);
+    }
+    if (!why.empty()) {
+      reject(channel, why);
+      if (!error_filler_) return;
+      error_filler_(request, RequestError::kBadRequest, why, reply);
+    } else {
+      try {
+        handler_(request, reply);
+      } catch (const std::invalid_argument& e) {
+        reject(channel, e.what());
+        if (!error_filler_) return;
+        reply = Reply();
+        error_filler_(request, RequestError::kBadRequest, e.what(), reply);
+      } catch (const std::exception& e) {
+        reject(channel, std::string("handler failed: ") + e.what());
+        if (!error_filler_) return;
+        reply = Reply();
+        error_filler_(request, RequestError::kInternalError, e.what(), reply);
+      }
+    }
+    reply.request_id = request.request_id;
+    publish(request.reply_channel, reply, start);
+    if (cache_.size() == kCacheSize) cache_.pop_front();
+    cache_.emplace_back(std::make_pair(request.reply_channel, request.request_id), std::move(reply));
+  }
+
+  void publish(const std::string& reply_channel, Reply& reply, double start) {
+    stamper_.stamp(reply.header);
+    if (lcm_.publish(reply_channel, &reply) != 0) {
+      rejections_.reject(reply_channel, "publishing the reply failed");
+    }
+    ++counters_.answered;
+    const double elapsed = monotonic_seconds() - start;
+    latencies_.add(elapsed);
+    busy_time_ += elapsed;
+  }
+
+  void reject(const std::string& channel, const std::string& why) {
+    ++counters_.rejected;
+    rejections_.reject(channel, why);
+  }
+
+  lcm::LCM& lcm_;
+  std::string channel_;
+  HeaderStamper stamper_;
+  RejectionLog rejections_;
+  Handler handler_;
+  Validator validator_;
+  ErrorFiller error_filler_;
+  AddressFilter address_filter_;
+  lcm::Subscription* subscription_ = nullptr;
+  ServerCounters counters_;
+  LatencyWindow latencies_;
+  double busy_time_ = 0.0;  // [s] handler time since the last take_busy_time()
+  std::deque<std::pair<std::pair<std::string, std::int64_t>, Reply>> cache_;
+};
+
+}  // namespace wrc::bus

@@ -1,0 +1,88 @@
+// wrc status: lists the services on the bus from their heartbeats.
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "bus/channels.hpp"
+#include "bus/clock.hpp"
+#include "bus/heartbeat_monitor.hpp"
+#include "bus/service_loop.hpp"
+#include "cli/command.hpp"
+#include "cli/options.hpp"
+
+namespace wrc::cli {
+namespace {
+
+const char* state_name(std::int8_t state) {
+  switch (state) {
+    case wrc::heartbeat_t::STARTING: return "STARTING";
+    case wrc::heartbeat_t::READY: return "READY";
+    case wrc::heartbeat_t::DRAINING: return "DRAINING";
+    default: return "UNKNOWN";
+  }
+}
+
+int run_status(const std::vector<std::string>& args) {
+  Options options("status", "[options]",
+                  {{"--duration", true, "how long to listen for heartbeats [s]", "1.5"},
+                   {"--channel-prefix", true, "channel prefix of the simulation", "none"},
+                   {"--lcm-url", true, "LCM URL", "LCM's default"},
+                   {"--all", false, "also list services whose heartbeats stopped while listening", ""},
+                   {"--format", true, "table or csv", "table"}},
+                  args);
+  if (options.help_requested()) {
+    std::cout << options.help() << "\nOne line per live service: model, instance, pid, state, "
+                                   "load and request channel.\n";
+    return 0;
+  }
+  const double duration = options.number("--duration", 1.5, 0.05, 3600.0);
+  const std::string format = options.choice("--format", {"table", "csv"}, "table");
+  const bus::ChannelNames names(options.text("--channel-prefix"));
+  auto lcm = bus::open_lcm(options.text("--lcm-url"));
+  bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
+  const double end = bus::monotonic_seconds() + duration;
+  for (double left = duration; left > 0.0; left = end - bus::monotonic_seconds()) {
+    lcm->handleTimeout(static_cast<int>(std::ceil(left * 1e3)));
+  }
+  const double now = bus::monotonic_seconds();
+  std::ostringstream out;
+  if (format == "csv") {
+    out << "model,instance,pid,state,alive,version,uptime,handled,rejected,latency_p95,request_channel\n";
+  } else {
+    out << std::left << std::setw(12) << "MODEL" << std::setw(10) << "INSTANCE" << std::setw(8) << "PID"
+        << std::setw(10) << "STATE" << std::setw(10) << "UPTIME[s]" << std::setw(10) << "HANDLED"
+        << std::setw(9) << "REJECTED" << std::setw(14) << "P95[s]" << "CHANNEL\n";
+  }
+  int shown = 0;
+  for (const auto& s : monitor.services(now)) {
+    if (!s.alive && !options.has("--all")) continue;
+    ++shown;
+    const auto& hb = s.last;
+    std::string state = state_name(hb.state);
+    if (!s.alive) state = "DEAD";
+    if (hb.interface_version != wrc::heartbeat_t::INTERFACE_VERSION) state += "(v" + std::to_string(hb.interface_version) + "!)";
+    if (format == "csv") {
+      out << hb.model << "," << hb.instance << "," << hb.pid << "," << state << "," << (s.alive ? 1 : 0)
+          << "," << hb.interface_version << "," << hb.uptime << "," << hb.requests_handled << ","
+          << hb.requests_rejected << "," << hb.latency_p95 << "," << hb.request_channel << "\n";
+    } else {
+      std::ostringstream uptime;
+      uptime << std::fixed << std::setprecision(1) << hb.uptime;
+      out << std::left << std::setw(12) << hb.model << std::setw(10) << hb.instance << std::setw(8) << hb.pid
+          << std::setw(10) << state << std::setw(10) << uptime.str() << std::setw(10) << hb.requests_handled
+          << std::setw(9) << hb.requests_rejected << std::setw(14) << hb.latency_p95 << hb.request_channel
+          << "\n";
+    }
+  }
+  std::cout << out.str();
+  if (shown == 0) std::cerr << "status: no live service heard within " << duration << " s\n";
+  if (monitor.rejected() > 0) std::cerr << "status: " << monitor.rejected() << " heartbeats did not decode\n";
+  return 0;
+}
+
+const CommandRegistrar registrar{{"status", "list the live services from their heartbeats", run_status}};
+
+}  // namespace
+}  // namespace wrc::cli

@@ -8,6 +8,7 @@
 #include "core/profile/circle_rail.hpp"
 #include "core/profile/conic.hpp"
 #include "core/profile/profile_error.hpp"
+#include "core/profile/profile_file.hpp"
 #include "core/profile/s1002.hpp"
 #include "core/profile/uic60.hpp"
 
@@ -43,7 +44,8 @@ bool starts_with(const std::string& text, const std::string& prefix) {
 
 }  // namespace
 
-ProfilePtr make_profile(const std::string& spec, ProfileSide side) {
+ProfilePtr make_profile(const std::string& spec, ProfileSide side,
+                        const ProfileFileOptions& options) {
   if (spec == "S1002") {
     require_side(spec, side, ProfileSide::kWheel);
     return std::make_shared<S1002Profile>();
@@ -68,8 +70,7 @@ ProfilePtr make_profile(const std::string& spec, ProfileSide side) {
   if (spec.empty()) {
     throw ProfileError("(empty profile specification)", 0, "no profile name or file given");
   }
-  // File readers follow in the next commit; until then anything else is an unknown name.
-  throw ProfileError(spec, 0, "unknown profile name");
+  return read_profile_file(spec, side, options);
 }
 
 }  // namespace wrc

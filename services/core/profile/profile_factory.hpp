@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/profile/profile.hpp"
+#include "core/profile/profile_file_options.hpp"
 
 namespace wrc {
 
@@ -13,10 +14,12 @@ namespace wrc {
 /// - "UIC60" (rail): EN 60E1 construction; "UIC60-MB" (rail): Manchester variant (R80 at 7.7 mm);
 /// - "conic:<slope>" (wheel): cone F(s) = -slope*s, slope [-];
 /// - "circle:<radius>" (rail): circular head, radius [m] (> 0);
-/// - anything else: a profile file path (see profile_file.hpp for formats).
+/// - anything else: a profile file path (see profile_file.hpp for formats), read with options
+///   (e.g. the built-in cant of a MiniProf rail file).
 /// Names are case-sensitive.
 /// @throws ProfileError if the spec is malformed, names a profile of the other side (e.g. "S1002"
 ///         asked as a rail), or the file cannot be read.
-ProfilePtr make_profile(const std::string& spec, ProfileSide side);
+ProfilePtr make_profile(const std::string& spec, ProfileSide side,
+                        const ProfileFileOptions& options = {});
 
 }  // namespace wrc

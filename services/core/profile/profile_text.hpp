@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Small text helpers shared by the profile file readers (internal to the profile module).
+
+#include <string>
+#include <vector>
+
+namespace wrc {
+namespace profile_text {
+
+/// The string without leading and trailing white space.
+std::string trim(const std::string& text);
+
+/// Lower-case copy (ASCII).
+std::string lower(std::string text);
+
+/// Splits at white space, commas and semicolons; empty fields between separators are dropped.
+std::vector<std::string> split_fields(const std::string& text);
+
+/// Parses a whole token as a double (strtod; "nan" and "inf" parse and are caught later by the
+/// point validation). Returns false if the token is not entirely one number.
+bool parse_number(const std::string& token, double& value);
+
+/// The final path component, for profile names.
+std::string base_name(const std::string& path);
+
+/// All lines of a file. @throws ProfileError(path, 0, "cannot open file") if it cannot be read.
+std::vector<std::string> read_lines(const std::string& path);
+
+}  // namespace profile_text
+}  // namespace wrc

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/profile/profile_factory.hpp"
+#include "core/profile/profile_file_options.hpp"
 
 namespace wrc {
 namespace {
@@ -53,6 +54,23 @@ TEST(ProfileDerivatives, AnalyticProfilesMatchFiniteDifferences) {
   check_derivatives(*make_profile("conic:0.1", ProfileSide::kWheel), 5e-6);
   check_derivatives(*make_profile("circle:0.3", ProfileSide::kRail), 5e-6);
   check_derivatives(*make_profile("circle:0.02", ProfileSide::kRail), 5e-6);
+}
+
+}  // namespace
+}  // namespace wrc
+
+namespace wrc {
+namespace {
+
+// The file splines (shipped Manchester files, Apache-2.0, see profiles/README.md): C2 cubics, so
+// the same finite-difference checks hold everywhere (they list no breakpoints).
+TEST(ProfileDerivatives, FileSplinesMatchFiniteDifferences) {
+  const std::string dir = WRC_PROFILES_DIR;
+  check_derivatives(*make_profile(dir + "/MBench_S1002_v3.prw", ProfileSide::kWheel), 0.0);
+  check_derivatives(*make_profile(dir + "/MBench_UIC60_v3.prr", ProfileSide::kRail), 0.0);
+  ProfileFileOptions options;
+  options.built_in_cant = 0.025;
+  check_derivatives(*make_profile(dir + "/MBench_UIC60_v3.ban", ProfileSide::kRail, options), 0.0);
 }
 
 }  // namespace

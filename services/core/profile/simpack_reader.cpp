@@ -18,7 +18,7 @@ using profile_text::parse_number;
 using profile_text::split_fields;
 using profile_text::trim;
 
-constexpr double kStandardCant = 0.024994793618920122;  // atan(1/40) [rad]
+const double kStandardCant = std::atan(1.0 / 40.0);  // [rad]
 
 // The line without its '!' comment; '!' inside single quotes does not start a comment.
 std::string strip_comment(const std::string& line) {

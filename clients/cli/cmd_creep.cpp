@@ -1,0 +1,102 @@
+// wrc creep: creep forces on one Hertzian contact patch by FASTSIM or Kalker's linear theory.
+// Prints the forces on the wheel in SI units: CSV header `fx,fy,mz` and one row, or a text block.
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/command.hpp"
+#include "cli/options.hpp"
+#include "core/contact/fastsim.hpp"
+#include "core/contact/linear_creep.hpp"
+
+namespace wrc::cli {
+namespace {
+
+// Parses "MxN" (elements per strip x strips), each a whole number in 1..10000.
+void parse_grid(const std::string& text, int* elements_per_strip, int* strips) {
+  const auto x = text.find_first_of("xX");
+  auto whole = [&](const std::string& part) {
+    if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos) return -1;
+    return std::stoi(part);
+  };
+  const int m = x == std::string::npos ? -1 : whole(text.substr(0, x));
+  const int n = x == std::string::npos ? -1 : whole(text.substr(x + 1));
+  if (m < 1 || n < 1 || m > 10000 || n > 10000) {
+    throw UsageError("--grid: '" + text + "' is not MxN with whole numbers in 1..10000 (e.g. 20x20)");
+  }
+  *elements_per_strip = m;
+  *strips = n;
+}
+
+// A required number that must be strictly positive.
+double positive(const Options& o, const std::string& name) {
+  const double v = o.required_number(name);
+  if (!(v > 0.0)) throw UsageError(name + ": " + o.text(name) + " must be positive");
+  return v;
+}
+
+int run_creep(const std::vector<std::string>& args) {
+  const Options o("creep",
+                  "--a A --b B --normal-force N [--mu MU] [--shear-modulus G] [--poisson NU] "
+                  "[--xi-x X] [--xi-y Y] [--spin S] [--model fastsim|linear] [--grid MxN] [--format csv|text]\n"
+                  "Creep forces on the wheel for one Hertzian patch (x rolling direction, y lateral, moment about "
+                  "the normal).",
+                  {{"--a", true, "semi-axis in the rolling direction [m]", ""},
+                   {"--b", true, "semi-axis in the lateral direction [m]", ""},
+                   {"--normal-force", true, "normal force N [N]", ""},
+                   {"--mu", true, "friction coefficient [-]", "0.3"},
+                   {"--shear-modulus", true, "shear modulus G [Pa]", "8.2e10"},
+                   {"--poisson", true, "Poisson's ratio [-], 0..0.5", "0.28"},
+                   {"--xi-x", true, "longitudinal creepage [-]", "0"},
+                   {"--xi-y", true, "lateral creepage [-]", "0"},
+                   {"--spin", true, "spin creepage [1/m]", "0"},
+                   {"--model", true, "fastsim or linear (Kalker's linear theory, unsaturated)", "fastsim"},
+                   {"--grid", true, "FASTSIM grid: elements per strip x strips", "20x20"},
+                   {"--format", true, "csv or text", "csv"}},
+                  args);
+  if (o.help_requested()) {
+    std::cout << o.help();
+    return 0;
+  }
+  if (!o.positional().empty()) throw UsageError("unexpected argument '" + o.positional().front() + "'");
+  CreepPatch patch;
+  patch.a = positive(o, "--a");
+  patch.b = positive(o, "--b");
+  patch.normal_force = o.required_number("--normal-force");
+  if (patch.normal_force < 0.0) throw UsageError("--normal-force: " + o.text("--normal-force") + " must be >= 0");
+  patch.friction = o.number("--mu", 0.3);
+  if (patch.friction < 0.0) throw UsageError("--mu: " + o.text("--mu") + " must be >= 0");
+  patch.shear_modulus = o.number("--shear-modulus", 8.2e10);
+  if (!(patch.shear_modulus > 0.0)) {
+    throw UsageError("--shear-modulus: " + o.text("--shear-modulus") + " must be positive");
+  }
+  patch.poisson = o.number("--poisson", 0.28);
+  if (patch.poisson < 0.0 || patch.poisson > 0.5) {
+    throw UsageError("--poisson: " + o.text("--poisson") + " must be in [0, 0.5]");
+  }
+  const Creepages creep{o.number("--xi-x", 0.0), o.number("--xi-y", 0.0), o.number("--spin", 0.0)};
+  const std::string model = o.choice("--model", {"fastsim", "linear"}, "fastsim");
+  const std::string format = o.choice("--format", {"csv", "text"}, "csv");
+  int elements_per_strip = 20, strips = 20;
+  parse_grid(o.text("--grid", "20x20"), &elements_per_strip, &strips);
+
+  const CreepForces f = model == "linear" ? linear_creep_forces(patch, creep)
+                                          : Fastsim(elements_per_strip, strips).solve(patch, creep);
+  char line[256];
+  if (format == "csv") {
+    std::snprintf(line, sizeof line, "fx,fy,mz\n%.10g,%.10g,%.10g\n", f.fx + 0.0, f.fy + 0.0, f.mz + 0.0);
+  } else {
+    std::snprintf(line, sizeof line, "fx = %.6g N\nfy = %.6g N\nmz = %.6g N m\nslip fraction = %.4g\n", f.fx + 0.0,
+                  f.fy + 0.0, f.mz + 0.0, f.slip_fraction);
+  }
+  std::cout << line;
+  return 0;
+}
+
+const CommandRegistrar registrar{{"creep", "creep forces on one Hertzian patch (FASTSIM or linear theory)", run_creep}};
+
+}  // namespace
+}  // namespace wrc::cli

@@ -11,7 +11,8 @@ namespace wrc {
 /// Interpolating cubic spline through (x_i, y_i), x strictly increasing, at least 3 knots.
 /// End conditions: the second derivative at each end is set to that of the parabola through the
 /// three end points (exact for quadratics, and no artificial zero curvature as with natural ends).
-/// evaluate() does one binary search (O(log n)), no allocation.
+/// evaluate() finds the interval by direct indexing into a uniform cell table (4 cells per knot)
+/// plus a short forward scan, no allocation.
 class CubicSpline {
  public:
   /// @param x knots [any length unit], strictly increasing, size >= 3
@@ -30,6 +31,9 @@ class CubicSpline {
   std::vector<double> x_;
   // Interval i: y = a + t (b + t (c + t d)), t = x - x_i; stored as 4 consecutive doubles.
   std::vector<double> coefficients_;
+  // Interval lookup: cell k = floor((x - x_0) * cell_scale_) starts at interval cell_start_[k].
+  double cell_scale_ = 0;
+  std::vector<unsigned> cell_start_;
 };
 
 }  // namespace wrc

@@ -24,7 +24,7 @@ HeartbeatMonitor::HeartbeatMonitor(lcm::LCM& lcm, std::string channel, double mi
 HeartbeatMonitor::~HeartbeatMonitor() { lcm_.unsubscribe(subscription_); }
 
 void HeartbeatMonitor::on_heartbeat(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-  wrc::heartbeat_t hb;
+  wrc::heartbeat_t hb{};
   if (std::string why = decode_message(*rbuf, hb); !why.empty()) {
     rejections_.reject(channel, why);
     return;

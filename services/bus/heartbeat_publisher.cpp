@@ -41,7 +41,7 @@ double HeartbeatPublisher::seconds_until_due() const {
 }
 
 void HeartbeatPublisher::publish_now() {
-  wrc::heartbeat_t hb;
+  wrc::heartbeat_t hb{};
   stamper_.stamp(hb.header);
   hb.model = identity_.model;
   hb.instance = identity_.instance;

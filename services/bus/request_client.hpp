@@ -141,7 +141,7 @@ class RequestClient {
   }
 
   void on_reply(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-    Reply reply;
+    Reply reply{};
     if (std::string why = decode_message(*rbuf, reply); !why.empty()) {
       ++counters_.rejected_replies;
       rejections_.reject(channel, why);
@@ -149,7 +149,7 @@ class RequestClient {
     }
     if (pending_id_ != 0 && reply.request_id == pending_id_ && !answer_) {
       answer_ = std::move(reply);
-    } else if (reply.request_id == completed_id_ ||
+    } else if ((completed_id_ != 0 && reply.request_id == completed_id_) ||
                (pending_id_ != 0 && reply.request_id == pending_id_)) {
       ++counters_.duplicate_replies;
     } else {

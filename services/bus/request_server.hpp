@@ -42,7 +42,8 @@ template <class Request, class Reply>
 class RequestServer : public LoadSource {
  public:
   /// Computes the reply of a valid request; may throw (std::invalid_argument = bad request,
-  /// anything else = internal error).
+  /// anything else = internal error). The reply starts value-initialised (zeros, empty
+  /// arrays); every num_x count the handler sets must equal the size of its array.
   using Handler = std::function<void(const Request&, Reply&)>;
   /// Checks a decoded request; returns an empty string when valid, else a one-line reason.
   using Validator = std::function<std::string(const Request&)>;
@@ -95,7 +96,7 @@ class RequestServer : public LoadSource {
   void on_request(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
     const double start = monotonic_seconds();
     ++counters_.received;
-    Request request;
+    Request request{};
     if (std::string why = decode_message(*rbuf, request); !why.empty()) {
       reject(channel, why);
       return;
@@ -115,7 +116,7 @@ class RequestServer : public LoadSource {
         return;
       }
     }
-    Reply reply;
+    Reply reply{};
     std::string why;
     if (request.request_id <= 0) {
       why = "request_id " + std::to_string(request.request_id) + " is not positive";

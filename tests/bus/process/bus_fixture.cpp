@@ -1,0 +1,57 @@
+#include "bus_fixture.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "bus/clock.hpp"
+
+namespace wrc::bus::test {
+
+void BusTest::SetUp() {
+  lcm_ = std::make_unique<lcm::LCM>("");
+  ASSERT_TRUE(lcm_->good()) << "LCM not usable; run this test through clients/lib/netns.sh";
+  monitor_ = std::make_unique<HeartbeatMonitor>(*lcm_, names_.name(channel::kHeartbeat));
+  const std::string id = make_client_id("test");
+  client_ = std::make_unique<PingClient>(*lcm_, names_.name(channel::kPing),
+                                         names_.name(channel::kPingReply, id), id);
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  temp_dir_ = (std::filesystem::temp_directory_path() /
+               ("wrc-bus-" + std::string(info->name()) + "-" + std::to_string(::getpid())))
+                  .string();
+  std::filesystem::create_directories(temp_dir_);
+}
+
+bool BusTest::handle_until(const std::function<bool()>& pred, double timeout) {
+  const double deadline = monotonic_seconds() + timeout;
+  while (!pred() && monotonic_seconds() < deadline) lcm_->handleTimeout(10);
+  return pred();
+}
+
+std::unique_ptr<ChildProcess> BusTest::start_pingd(const std::string& instance, double period,
+                                                   const std::string& log_path) {
+  return std::make_unique<ChildProcess>(
+      WRC_PINGD_PATH,
+      std::vector<std::string>{"--instance", instance, "--heartbeat-period", std::to_string(period)},
+      log_path);
+}
+
+bool BusTest::wait_ready(const std::string& model, const std::string& instance, double timeout,
+                         int not_pid) {
+  return handle_until(
+      [&] {
+        auto s = monitor_->find(model, instance, monotonic_seconds());
+        return s && s->available() && s->last.pid != not_pid;
+      },
+      timeout);
+}
+
+bool BusTest::in_netns() {
+  const char* mode = std::getenv("WRC_BUS_ISOLATION");
+  return mode != nullptr && std::string(mode) == "netns";
+}
+
+std::string BusTest::temp_path(const std::string& name) const {
+  return (std::filesystem::path(temp_dir_) / name).string();
+}
+
+}  // namespace wrc::bus::test

@@ -1,0 +1,192 @@
+// Request/reply over memq://: ids echoed, timeouts and retries, stale and duplicate replies
+// ignored and counted, bad requests rejected and counted without crashing the server.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "bus/request_client.hpp"
+#include "bus/request_server.hpp"
+#include "memq_bus.hpp"
+#include "wrc/ping_reply_t.hpp"
+#include "wrc/ping_request_t.hpp"
+
+namespace {
+using namespace wrc::bus;
+using Client = RequestClient<wrc::ping_request_t, wrc::ping_reply_t>;
+using Server = RequestServer<wrc::ping_request_t, wrc::ping_reply_t>;
+
+Server::Handler echo_handler(int* calls = nullptr) {
+  return [calls](const wrc::ping_request_t& req, wrc::ping_reply_t& rep) {
+    if (calls != nullptr) ++*calls;
+    if (req.num_payload == 13) throw std::runtime_error("unlucky payload");
+    if (req.num_payload == 14) throw std::invalid_argument("payload of 14 bytes is not allowed");
+    rep.status = wrc::ping_reply_t::OK;
+    rep.num_payload = req.num_payload;
+    rep.payload = req.payload;
+  };
+}
+
+void fill_error(const wrc::ping_request_t&, RequestError kind, const std::string& why, wrc::ping_reply_t& rep) {
+  rep.status = kind == RequestError::kBadRequest ? wrc::ping_reply_t::BAD_REQUEST : 99;
+  rep.message = why;
+}
+
+wrc::ping_request_t ping(int bytes) {
+  wrc::ping_request_t req{};
+  req.num_payload = bytes;
+  req.payload.assign(static_cast<std::size_t>(bytes), 0x5a);
+  return req;
+}
+
+// A call gets the reply with its own id and the payload echoed, in one attempt.
+TEST(RequestReply, EchoesIdAndPayload) {
+  lcm::LCM lcm("memq://");
+  ASSERT_TRUE(lcm.good());
+  Server server(lcm, "PING", "test-server", echo_handler());
+  Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
+  for (int i = 1; i <= 3; ++i) {
+    auto req = ping(10 * i);
+    auto result = client.call(req, {0.5, 0});
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result.reply->request_id, req.request_id);
+    EXPECT_EQ(result.reply->request_id, i);
+    EXPECT_EQ(result.reply->num_payload, 10 * i);
+    EXPECT_EQ(result.attempts, 1);
+  }
+  EXPECT_EQ(server.counters().answered, 3);
+  EXPECT_EQ(client.counters().replies, 3);
+}
+
+// Without a server every attempt times out; the call reports failure after 1 + retries sends.
+TEST(RequestReply, TimesOutAndRetries) {
+  lcm::LCM lcm("memq://");
+  Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
+  auto req = ping(1);
+  const double start = monotonic_seconds();
+  auto result = client.call(req, {0.02, 2});
+  const double elapsed = monotonic_seconds() - start;
+  EXPECT_FALSE(result);
+  EXPECT_EQ(result.attempts, 3);
+  EXPECT_EQ(client.counters().sent, 3);
+  EXPECT_EQ(client.counters().retries, 2);
+  EXPECT_EQ(client.counters().failed_calls, 1);
+  EXPECT_GE(elapsed, 0.06);
+  EXPECT_LT(elapsed, 1.0);
+  EXPECT_THROW(client.call(req, {0.0, 1}), std::invalid_argument);
+  EXPECT_THROW(client.call(req, {0.1, -1}), std::invalid_argument);
+}
+
+// A test server that answers each request twice and also sends a reply for an old id.
+struct DoubleReplier {
+  lcm::LCM& lcm;
+  void on_request(const lcm::ReceiveBuffer*, const std::string&, const wrc::ping_request_t* req) {
+    wrc::ping_reply_t rep{};
+    rep.request_id = req->request_id - 2;  // an older call's id (or an id never used): stale
+    lcm.publish(req->reply_channel, &rep);
+    rep.request_id = req->request_id;
+    lcm.publish(req->reply_channel, &rep);
+    lcm.publish(req->reply_channel, &rep);  // duplicate
+  }
+};
+
+// Replies with an old id are counted stale, a second reply to a completed call duplicate; the
+// call still returns the right reply.
+TEST(RequestReply, IgnoresStaleAndDuplicateReplies) {
+  lcm::LCM lcm("memq://");
+  DoubleReplier replier{lcm};
+  lcm.subscribe("PING", &DoubleReplier::on_request, &replier);
+  Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
+  for (int i = 0; i < 3; ++i) {
+    auto req = ping(0);
+    auto result = client.call(req, {0.5, 0});
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result.reply->request_id, req.request_id);
+  }
+  test::drain(lcm);
+  EXPECT_EQ(client.counters().replies, 3);
+  EXPECT_EQ(client.counters().stale_replies, 3);
+  EXPECT_EQ(client.counters().duplicate_replies, 3);
+}
+
+// Undecodable messages on the request channel are counted and the server keeps answering.
+TEST(RequestReply, ServerRejectsMalformedMessagesAndKeepsAnswering) {
+  lcm::LCM lcm("memq://");
+  Server server(lcm, "PING", "test-server", echo_handler());
+  Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
+  const unsigned char garbage[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+  lcm.publish("PING", garbage, sizeof garbage);
+  wrc::ping_reply_t wrong_type{};
+  lcm.publish("PING", &wrong_type);
+  test::drain(lcm);
+  EXPECT_EQ(server.counters().rejected, 2);
+  auto req = ping(4);
+  EXPECT_TRUE(client.call(req, {0.5, 0}));
+  EXPECT_EQ(server.counters().answered, 1);
+}
+
+// Invalid requests (validator, invalid_argument from the handler) get a BAD_REQUEST reply;
+// other handler exceptions an internal-error reply; all are counted as rejections.
+TEST(RequestReply, InvalidRequestsGetErrorReplies) {
+  lcm::LCM lcm("memq://");
+  int calls = 0;
+  Server server(lcm, "PING", "test-server", echo_handler(&calls));
+  server.set_validator([](const wrc::ping_request_t& r) {
+    return r.num_payload > 100 ? "num_payload " + std::to_string(r.num_payload) + " exceeds 100" : std::string();
+  });
+  server.set_error_filler(fill_error);
+  Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
+  auto big = ping(101);
+  auto r1 = client.call(big, {0.5, 0});
+  ASSERT_TRUE(r1);
+  EXPECT_EQ(r1.reply->status, wrc::ping_reply_t::BAD_REQUEST);
+  EXPECT_EQ(r1.reply->message, "num_payload 101 exceeds 100");
+  EXPECT_EQ(calls, 0);
+  auto unlucky = ping(13);
+  auto r2 = client.call(unlucky, {0.5, 0});
+  ASSERT_TRUE(r2);
+  EXPECT_EQ(r2.reply->status, 99);
+  auto fourteen = ping(14);
+  auto r3 = client.call(fourteen, {0.5, 0});
+  ASSERT_TRUE(r3);
+  EXPECT_EQ(r3.reply->status, wrc::ping_reply_t::BAD_REQUEST);
+  EXPECT_EQ(server.counters().rejected, 3);
+}
+
+// A re-sent request (same reply channel and id) is answered from the cache, not recomputed.
+TEST(RequestReply, ResentRequestAnsweredFromCache) {
+  lcm::LCM lcm("memq://");
+  int calls = 0;
+  Server server(lcm, "PING", "test-server", echo_handler(&calls));
+  int replies = 0;
+  struct Counter {
+    int* n;
+    void on(const lcm::ReceiveBuffer*, const std::string&) { ++*n; }
+  } counter{&replies};
+  lcm.subscribe("R", &Counter::on, &counter);
+  auto req = ping(2);
+  req.request_id = 5;
+  req.reply_channel = "R";
+  lcm.publish("PING", &req);
+  lcm.publish("PING", &req);
+  test::drain(lcm);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(replies, 2);
+  EXPECT_EQ(server.counters().from_cache, 1);
+}
+
+// Requests for another instance are ignored without being counted as errors.
+TEST(RequestReply, AddressFilterIgnoresOtherInstances) {
+  lcm::LCM lcm("memq://");
+  Server server(lcm, "PING", "test-server", echo_handler());
+  server.set_address_filter([](const wrc::ping_request_t& r) { return r.instance.empty() || r.instance == "a"; });
+  Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
+  auto other = ping(1);
+  other.instance = "b";
+  EXPECT_FALSE(client.call(other, {0.02, 0}));
+  auto mine = ping(1);
+  mine.instance = "a";
+  EXPECT_TRUE(client.call(mine, {0.5, 0}));
+  EXPECT_EQ(server.counters().not_addressed, 1);
+  EXPECT_EQ(server.counters().rejected, 0);
+}
+}  // namespace

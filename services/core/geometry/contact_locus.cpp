@@ -60,6 +60,21 @@ LocusPoint ContactLocus::at(double s) const {
   return p;
 }
 
+double ContactLocus::s_at_lateral(double y) const {
+  // The locus point's lateral position is about y + sigma (taping + s): start there, then secant.
+  double s0 = sigma_ * (y - pose_.y) - taping_;
+  double f0 = at(s0).wheel.y() - y;
+  double s1 = s0 - 1e-4, f1 = at(s1).wheel.y() - y;
+  for (int i = 0; i < 8 && std::fabs(f1) > 1e-12 && f1 != f0; ++i) {
+    const double s2 = s1 - f1 * (s1 - s0) / (f1 - f0);
+    s0 = s1;
+    f0 = f1;
+    s1 = s2;
+    f1 = at(s1).wheel.y() - y;
+  }
+  return s1;
+}
+
 double ContactLocus::distance_slope(double s) const {
   const LocusPoint p = at(s);
   return p.over_rail ? p.distance_slope : std::numeric_limits<double>::quiet_NaN();

@@ -40,6 +40,10 @@ class ContactLocus {
   /// d(distance)/ds at s [-]; NaN when the point is not over the rail.
   double distance_slope(double s) const;
 
+  /// The wheel profile coordinate s [m] whose locus point lies at track lateral position y [m]
+  /// (secant iteration; used to map rail breakpoints onto the wheel).
+  double s_at_lateral(double y) const;
+
   /// Range of s [m] whose points can lie over the rail (wheel domain intersected with the rail's
   /// lateral extent, with a margin for roll and yaw).
   double s_lower() const { return s_lower_; }

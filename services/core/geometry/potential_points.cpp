@@ -74,8 +74,16 @@ std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const
   const int n = std::max(2, static_cast<int>(std::ceil((hi - lo) / search.step)));
   samples.reserve(static_cast<size_t>(n) + 16);
   for (int i = 0; i <= n; ++i) samples.push_back({lo + (hi - lo) * i / n, 0.0});
+  // Breakpoints of both profiles: the distance's curvature may jump there, so a pair of roots can
+  // hide in a kink between two uniform samples.
   for (double b : locus.wheel_profile().breakpoints())
     if (b > lo && b < hi) samples.push_back({b, 0.0});
+  for (double u : locus.rail().profile().breakpoints()) {
+    double y_rail, z_rail;
+    locus.rail().profile_to_track(u, y_rail, z_rail);
+    const double s = locus.s_at_lateral(y_rail);
+    if (s > lo && s < hi) samples.push_back({s, 0.0});
+  }
   std::sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) { return a.s < b.s; });
   for (auto& x : samples) x.slope = slope(x.s);
 

@@ -28,11 +28,11 @@ bool BusTest::handle_until(const std::function<bool()>& pred, double timeout) {
 }
 
 std::unique_ptr<ChildProcess> BusTest::start_pingd(const std::string& instance, double period,
-                                                   const std::string& log_path) {
-  return std::make_unique<ChildProcess>(
-      WRC_PINGD_PATH,
-      std::vector<std::string>{"--instance", instance, "--heartbeat-period", std::to_string(period)},
-      log_path);
+                                                   const std::string& log_path,
+                                                   const std::vector<std::string>& extra) {
+  std::vector<std::string> args{"--instance", instance, "--heartbeat-period", std::to_string(period)};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return std::make_unique<ChildProcess>(WRC_PINGD_PATH, args, log_path);
 }
 
 bool BusTest::wait_ready(const std::string& model, const std::string& instance, double timeout,

@@ -28,7 +28,8 @@ class BusTest : public ::testing::Test {
   bool handle_until(const std::function<bool()>& pred, double timeout);
   /// Starts wrc-pingd with the given instance and heartbeat period [s].
   std::unique_ptr<ChildProcess> start_pingd(const std::string& instance, double period,
-                                            const std::string& log_path = "");
+                                            const std::string& log_path = "",
+                                            const std::vector<std::string>& extra = {});
   /// Waits until model/instance heartbeats READY (optionally from a pid other than not_pid).
   bool wait_ready(const std::string& model, const std::string& instance, double timeout,
                   int not_pid = 0);

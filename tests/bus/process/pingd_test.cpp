@@ -127,5 +127,26 @@ TEST_F(BusTest, CleanShutdownPublishesDraining) {
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
 }
 
+// A service with --channel-prefix lives on its own channels: clients with the same prefix reach
+// it, the unprefixed heartbeat channel does not see it.
+TEST_F(BusTest, ChannelPrefixSeparatesSimulations) {
+  auto pingd = start_pingd("p", 0.1, "", {"--channel-prefix", "SIM2"});
+  const ChannelNames sim2("SIM2");
+  HeartbeatMonitor sim2_monitor(*lcm_, sim2.name(channel::kHeartbeat));
+  ASSERT_TRUE(handle_until(
+      [&] {
+        auto s = sim2_monitor.find("pingd", "p", monotonic_seconds());
+        return s && s->available();
+      },
+      5.0));
+  EXPECT_EQ(sim2_monitor.find("pingd", "p", monotonic_seconds())->last.request_channel, "SIM2.PING");
+  EXPECT_FALSE(monitor_->find("pingd", "p", monotonic_seconds()));
+  PingClient prefixed(*lcm_, sim2.name(channel::kPing), sim2.name(channel::kPingReply, "t"), "t");
+  auto req = ping(3);
+  EXPECT_TRUE(prefixed.call(req, {0.5, 2}));
+  auto unprefixed = ping(3);
+  EXPECT_FALSE(client_->call(unprefixed, {0.05, 1}));
+}
+
 }  // namespace
 }  // namespace wrc::bus::test

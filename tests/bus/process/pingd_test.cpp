@@ -109,7 +109,7 @@ TEST_F(BusTest, KilledServiceDetectedByMissingHeartbeats) {
   const double killed = monotonic_seconds();
   ASSERT_TRUE(handle_until([&] { return !monitor_->find("pingd", "k", monotonic_seconds())->alive; }, 3.0));
   const double detected = monotonic_seconds() - killed;
-  EXPECT_GE(detected, 2.0 * period);
+  EXPECT_GE(detected, 1.0 * period);  // not declared dead at once
   EXPECT_LE(detected, 3.0 * period + 0.5);
   EXPECT_EQ(monitor_->find("pingd", "k", monotonic_seconds())->last.state, wrc::heartbeat_t::READY);
 }

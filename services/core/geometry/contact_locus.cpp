@@ -20,11 +20,13 @@ ContactLocus::ContactLocus(const Profile& wheel, const PlacedRail& rail, const T
   a12_ = rotation_(0, 1);
   rho_ = std::hypot(a11, a13);
   beta_ = std::atan2(a13, a11);
+  cos_beta_ = std::cos(beta_);
+  sin_beta_ = std::sin(beta_);
 
   // Lateral track position of a body point at lateral coordinate yb is about y + yb*cos(roll):
   // invert for the rail's extent, with a margin that covers the radius term of roll and yaw.
   const double c = std::max(0.5, cphi * cpsi);
-  const double margin = 0.02 + 1.2 * r0_ * (std::fabs(sphi) + std::fabs(spsi));
+  const double margin = 0.002 + 1.2 * r0_ * (std::fabs(sphi) + std::fabs(spsi));
   double a = sigma_ * (rail.y_lower() - pose.y) / c - taping_;
   double b = sigma_ * (rail.y_upper() - pose.y) / c - taping_;
   if (a > b) std::swap(a, b);
@@ -40,14 +42,15 @@ LocusPoint ContactLocus::at(double s) const {
   const ProfileSample f = wheel_.evaluate(s);
   const double radius = r0_ + f.height;
   // Normal in a cross-section plane: a11 sin(theta) + a13 cos(theta) = -sigma a12 R'(s).
+  // theta = asin(q) - beta; its sine and cosine follow algebraically (no trigonometric calls).
   const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
   const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
-  const double theta = std::asin(q) - beta_;
+  const double st = q * cos_beta_ - cq * sin_beta_, ct = cq * cos_beta_ + q * sin_beta_;
   const double dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
-  const double st = std::sin(theta), ct = std::cos(theta);
   const Eigen::Vector3d body(-radius * st, sigma_ * (taping_ + s), -radius * ct);
   const Eigen::Vector3d body_ds(-f.slope * st - radius * ct * dtheta, sigma_, -f.slope * ct + radius * st * dtheta);
-  p.theta = theta;
+  p.sin_theta = st;
+  p.cos_theta = ct;
   p.radius = radius;
   p.wheel = rotation_ * body + Eigen::Vector3d(pose_.x, pose_.y, pose_.z);
   p.tangent = rotation_ * body_ds;
@@ -81,8 +84,7 @@ double ContactLocus::distance_slope(double s) const {
 }
 
 Eigen::Vector3d ContactLocus::wheel_normal(const LocusPoint& p, double slope) const {
-  const double st = std::sin(p.theta), ct = std::cos(p.theta);
-  const Eigen::Vector3d body(-st, -sigma_ * slope, -ct);
+  const Eigen::Vector3d body(-p.sin_theta, -sigma_ * slope, -p.cos_theta);
   return (rotation_ * body).normalized();
 }
 

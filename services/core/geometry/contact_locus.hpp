@@ -17,7 +17,8 @@ namespace wrc {
 struct LocusPoint {
   bool over_rail = false;    ///< the point lies above the rail surface's lateral extent
   double s = 0;              ///< wheel profile coordinate [m]
-  double theta = 0;          ///< angular position on the wheel from its lowest point, > 0 towards -x_body [rad]
+  double sin_theta = 0;      ///< sine of the angular position theta on the wheel (from its lowest point, > 0 towards -x_body)
+  double cos_theta = 1;      ///< cosine of theta
   double radius = 0;         ///< wheel radius R(s) = r0 + F(s) [m]
   Eigen::Vector3d wheel{0, 0, 0};    ///< the wheel point in the track frame [m]
   Eigen::Vector3d tangent{0, 0, 0};  ///< dC/ds in the track frame [-]
@@ -71,7 +72,7 @@ class ContactLocus {
   double taping_;
   double r0_;
   Eigen::Matrix3d rotation_;
-  double rho_, beta_, a12_;
+  double rho_, beta_, a12_, cos_beta_, sin_beta_;
   double s_lower_, s_upper_;
 };
 

@@ -75,13 +75,32 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
   axis_ = 0.5 * track.gauge - inner;
   gauge_point_y_ = side_sign_ * 0.5 * track.gauge;
 
-  table_u_.resize(kTableNodes);
-  table_y_.resize(kTableNodes);
-  for (int i = 0; i < kTableNodes; ++i) {
-    const double u = u_lower_ + (u_upper_ - u_lower_) * i / (kTableNodes - 1.0);
+  // Inverse table u(y) on uniform y nodes, for a direct-indexed starting value of the Newton solve.
+  const double y_first = local_y(u_lower_, rail_->evaluate(u_lower_).height);
+  const double y_last = local_y(u_upper_, rail_->evaluate(u_upper_).height);
+  table_y0_ = y_first;
+  table_dy_ = (y_last - y_first) / (kTableNodes - 1);
+  table_u_.assign(kTableNodes, 0.0);
+  table_u_.front() = u_lower_;
+  table_u_.back() = u_upper_;
+  double guess = u_lower_;
+  for (int i = 1; i + 1 < kTableNodes; ++i) {
+    const double target = y_first + table_dy_ * i;
+    // Bracketed Newton from the previous node (y(u) is increasing on [u_lower_, u_upper_]).
+    double a = guess, b = u_upper_, u = guess;
+    for (int iter = 0; iter < 100; ++iter) {
+      const ProfileSample p = rail_->evaluate(u);
+      const double f = local_y(u, p.height) - target;
+      if (f > 0) b = u; else a = u;
+      double next = u - f / (cos_ - p.slope * sin_);
+      if (!(next >= a && next <= b)) next = 0.5 * (a + b);
+      if (std::fabs(next - u) < 1e-15 || b - a < 1e-15) { u = next; break; }
+      u = next;
+    }
     table_u_[i] = u;
-    table_y_[i] = local_y(u, rail_->evaluate(u).height);
+    guess = u;
   }
+  table_y_ = {y_first, y_last};
   if (side_sign_ > 0) {
     y_lower_ = table_y_.front();
     y_upper_ = table_y_.back();
@@ -98,19 +117,18 @@ void PlacedRail::profile_to_track(double u, double& y, double& z) const {
 }
 
 double PlacedRail::solve_u(double ly) const {
-  auto it = std::upper_bound(table_y_.begin(), table_y_.end(), ly);
-  size_t k = static_cast<size_t>(std::clamp<long>(it - table_y_.begin() - 1, 0, kTableNodes - 2));
+  const double x = (ly - table_y0_) / table_dy_;
+  const int k = std::clamp(static_cast<int>(x), 0, kTableNodes - 2);
   double a = table_u_[k], b = table_u_[k + 1];
-  const double ya = table_y_[k], yb = table_y_[k + 1];
-  double u = a + (b - a) * (ly - ya) / (yb - ya);
+  double u = a + (b - a) * (x - k);
   for (int iter = 0; iter < 30; ++iter) {
     const ProfileSample p = rail_->evaluate(u);
     const double f = local_y(u, p.height) - ly;
     if (f > 0) b = u; else a = u;
     const double step = f / (cos_ - p.slope * sin_);
     double next = u - step;
-    if (!(next > a && next < b)) next = 0.5 * (a + b);  // Newton left the bracket: bisect
-    if (std::fabs(next - u) < 1e-14) return next;
+    if (std::fabs(step) < 1e-15) return next;           // converged (quadratically)
+    if (!(next >= a && next <= b)) next = 0.5 * (a + b);  // Newton left the bracket: bisect
     u = next;
   }
   return u;

@@ -68,8 +68,9 @@ class PlacedRail {
   double u_lower_ = 0, u_upper_ = 0;  // profile range over which y(u) is monotone
   double y_lower_ = 0, y_upper_ = 0;
   double gauge_point_y_ = 0;
-  std::vector<double> table_y_;  // side-local y at the table nodes (increasing)
-  std::vector<double> table_u_;
+  std::vector<double> table_y_;  // side-local y of the first and last table node
+  std::vector<double> table_u_;  // u at uniformly spaced side-local y
+  double table_y0_ = 0, table_dy_ = 1;
 };
 
 }  // namespace wrc

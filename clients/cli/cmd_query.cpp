@@ -1,0 +1,419 @@
+// wrc query: one contact query to a running contact service (wrc-contactd --model M) and its
+// patches, one row per patch. The service is found by its heartbeat: a READY instance of model M
+// that computes with the asked geometry (its heartbeat's table_hash equals the key of the
+// profile and track options, contactd/geometry_key.hpp); with several, the smallest instance name
+// is addressed. When none is heard within 1.5 s, the query starts one (wrc-contactd from the build
+// tree) in the background, waits for READY, asks it and stops it afterwards.
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bus/build_paths.hpp"
+#include "bus/channels.hpp"
+#include "bus/clock.hpp"
+#include "bus/heartbeat_monitor.hpp"
+#include "bus/request_client.hpp"
+#include "bus/service_loop.hpp"
+#include "cli/command.hpp"
+#include "cli/options.hpp"
+#include "cli/profile_options.hpp"
+#include "contactd/geometry_key.hpp"
+#include "core/geometry/rigid_wheelset.hpp"
+#include "core/geometry/wheelset_geometry.hpp"
+#include "core/profile/profile_factory.hpp"
+#include "wrc/contact_query_t.hpp"
+#include "wrc/contact_reply_t.hpp"
+
+namespace wrc::cli {
+namespace {
+
+constexpr double kDefaultLoad = 154715.0 / 2.0;  // [N] per wheel: the benchmark's axle load shared by two wheels
+constexpr double kDiscoveryTime = 1.5;           // [s] listen for a running service before starting one
+
+// Parses "MxN" (elements per strip x strips), each a whole number in 1..400 (contact_query_t limit).
+void parse_grid(const std::string& text, int* elements_per_strip, int* strips) {
+  const auto x = text.find_first_of("xX");
+  auto whole = [&](const std::string& part) {
+    if (part.empty() || part.size() > 3 || part.find_first_not_of("0123456789") != std::string::npos) return -1;
+    return std::stoi(part);
+  };
+  const int m = x == std::string::npos ? -1 : whole(text.substr(0, x));
+  const int n = x == std::string::npos ? -1 : whole(text.substr(x + 1));
+  if (m < 1 || n < 1 || m > 400 || n > 400) {
+    throw UsageError("--grid: '" + text + "' is not MxN with whole numbers in 1..400 (e.g. 20x20)");
+  }
+  *elements_per_strip = m;
+  *strips = n;
+}
+
+contactd::GeometrySpec geometry_spec(const Options& o) {
+  contactd::GeometrySpec spec;
+  spec.wheel = o.text("--wheel", spec.wheel);
+  spec.rail = o.text("--rail", spec.rail);
+  TrackParameters& track = spec.track;
+  track.gauge = o.number("--gauge", track.gauge, 0.5, 2.5);
+  track.gauge_depth = o.number("--gauge-depth", track.gauge_depth, 0.0, 0.05);
+  track.flange_back_spacing = o.number("--flange-back", track.flange_back_spacing, 0.4, 2.4);
+  track.nominal_radius = o.number("--r0", track.nominal_radius, 0.1, 1.5);
+  if (o.has("--inclination")) {
+    try {
+      track.inclination = parse_inclination(o.text("--inclination"));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--inclination: ") + e.what());
+    }
+  }
+  track.validate();
+  return spec;
+}
+
+// Height of the wheelset centre at which the closer wheel just touches its rail at (y, roll, yaw):
+// the vertical gaps change one for one with z, so one evaluation at z = r0 gives it exactly.
+double touching_height(const WheelsetGeometry& geometry, double y, double roll, double yaw) {
+  WheelsetPose pose;
+  pose.y = y;
+  pose.roll = roll;
+  pose.yaw = yaw;
+  pose.z = geometry.track().nominal_radius;
+  double gap = 1e300;
+  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
+    const auto point = geometry.common_point(side, pose);
+    if (!point) {
+      throw std::runtime_error("the " + std::string(side == WheelSide::kLeft ? "left" : "right") +
+                               " wheel has no contact point with its rail at y = " + std::to_string(y) + " m");
+    }
+    gap = std::min(gap, point->distance);
+  }
+  return pose.z - gap;
+}
+
+// ---- the background service --------------------------------------------------------------------
+
+class StartedService {
+ public:
+  StartedService(const std::string& path, const std::vector<std::string>& args, std::string log)
+      : log_(std::move(log)) {
+    std::vector<std::string> words{path};
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& w : words) argv.push_back(w.data());
+    argv.push_back(nullptr);
+    const pid_t parent = ::getpid();
+    pid_ = ::fork();
+    if (pid_ < 0) throw std::runtime_error("fork failed");
+    if (pid_ == 0) {
+      ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // the service drains when the query dies
+      if (::getppid() != parent) ::_exit(1);
+      const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (fd >= 0) {
+        ::dup2(fd, 1);
+        ::dup2(fd, 2);
+        ::close(fd);
+      }
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+  }
+  ~StartedService() { stop(); }
+  StartedService(const StartedService&) = delete;
+  StartedService& operator=(const StartedService&) = delete;
+
+  pid_t pid() const { return pid_; }
+  const std::string& log() const { return log_; }
+  /// True while the process has not ended.
+  bool alive() {
+    if (pid_ <= 0) return false;
+    int status = 0;
+    if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+      pid_ = -1;
+      return false;
+    }
+    return true;
+  }
+  /// SIGTERM, up to 5 s for a clean exit, then SIGKILL.
+  void stop() {
+    if (!alive()) return;
+    ::kill(pid_, SIGTERM);
+    const double deadline = bus::monotonic_seconds() + 5.0;
+    while (bus::monotonic_seconds() < deadline) {
+      if (::waitpid(pid_, nullptr, WNOHANG) == pid_) {
+        pid_ = -1;
+        return;
+      }
+      ::usleep(10000);
+    }
+    ::kill(pid_, SIGKILL);
+    ::waitpid(pid_, nullptr, 0);
+    pid_ = -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  std::string log_;
+};
+
+std::string tail_of(const std::string& path) {
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (text.size() > 2000) text = "..." + text.substr(text.size() - 2000);
+  return text;
+}
+
+// ---- discovery -----------------------------------------------------------------------------------
+
+// The smallest-named READY instance of model with the geometry key (or the named instance).
+std::optional<bus::ServiceStatus> pick(const bus::HeartbeatMonitor& monitor, const std::string& model,
+                                       const std::string& key, const std::string& instance, bool ready) {
+  for (const auto& s : monitor.services(bus::monotonic_seconds())) {  // sorted by model, instance
+    if (s.last.model != model || !s.alive || s.last.table_hash != key) continue;
+    if (!instance.empty() && s.last.instance != instance) continue;
+    if (ready ? s.available() : s.last.state == wrc::heartbeat_t::STARTING) return s;
+  }
+  return std::nullopt;
+}
+
+bool handle_until(lcm::LCM& lcm, double deadline, const std::function<bool()>& done) {
+  while (!done()) {
+    const double left = deadline - bus::monotonic_seconds();
+    if (left <= 0.0) return false;
+    lcm.handleTimeout(static_cast<int>(std::ceil(std::min(left, 0.05) * 1e3)));
+  }
+  return true;
+}
+
+// ---- output --------------------------------------------------------------------------------------
+
+std::string number(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+void print_patches(const wrc::contact_reply_t& reply, const std::string& format) {
+  const std::vector<std::string> header{"wheel", "s", "angle", "a", "b", "penetration", "normal_force", "fx", "fy",
+                                        "mz", "xi_x", "xi_y", "spin", "rolling_radius", "s_rail", "x", "y", "z"};
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& result : reply.results) {
+    for (const auto& p : result.patches) {
+      rows.push_back({p.wheel == wrc::contact_patch_t::LEFT ? "left" : "right", number(p.s_wheel),
+                      number(p.contact_angle), number(p.a), number(p.b), number(p.penetration), number(p.normal_force),
+                      number(p.fx), number(p.fy), number(p.mz), number(p.creepage_x), number(p.creepage_y),
+                      number(p.spin_creepage), number(p.rolling_radius), number(p.s_rail), number(p.wheel_point[0]),
+                      number(p.wheel_point[1]), number(p.wheel_point[2])});
+    }
+  }
+  std::ostringstream out;
+  if (format == "csv") {
+    for (std::size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i];
+    out << "\n";
+    for (const auto& row : rows) {
+      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << row[i];
+      out << "\n";
+    }
+  } else {
+    std::vector<std::size_t> width(header.size());
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      width[i] = header[i].size();
+      for (const auto& row : rows) width[i] = std::max(width[i], row[i].size());
+    }
+    auto line = [&](const std::vector<std::string>& cells) {
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        out << (i ? "  " : "") << std::setw(static_cast<int>(width[i])) << cells[i];
+      }
+      out << "\n";
+    };
+    line(header);
+    for (const auto& row : rows) line(row);
+  }
+  std::cout << out.str();
+}
+
+// ---- the command ---------------------------------------------------------------------------------
+
+int run_query(const std::vector<std::string>& args) {
+  std::vector<OptionSpec> specs{
+      {"--model", true, "contact model: onepoint, interp or multipoint", ""},
+      {"--y", true, "lateral shift of the wheelset [m], > 0 towards the left rail", ""},
+      {"--roll", true, "roll angle [rad], > 0 raises the left wheel", "0 (elastic without --z: rigid solution)"},
+      {"--yaw", true, "yaw angle [rad]", "0"},
+      {"--z", true, "height of the wheelset centre above the top-of-rail plane [m]",
+       "rigid: closer wheel just touching; elastic: that minus --penetration"},
+      {"--penetration", true, "elastic without --z: how far the centre is lowered below touching [m]", "1e-4"},
+      {"--load", true, "normal load per wheel, rigid formulation [N]", "77357.5"},
+      {"--formulation", true, "rigid (loads given) or elastic (forces from penetration)", "rigid"},
+      {"--speed", true, "forward speed V [m/s]", "30"},
+      {"--spin-rate", true, "angular velocity about the axle [rad/s]", "V/r0"},
+      {"--shear-modulus", true, "shear modulus G [Pa]", "8.2e10"},
+      {"--poisson", true, "Poisson's ratio [-]", "0.28"},
+      {"--friction", true, "friction coefficient mu [-]", "0.3"},
+      {"--grid", true, "FASTSIM grid: elements per strip x strips", "20x20"},
+      {"--timeout", true, "wait for the reply per attempt [s]", "1"},
+      {"--retries", true, "re-sends after a timeout", "3"},
+      {"--instance", true, "address this instance (must be running)", "from the heartbeats"},
+      {"--start-timeout", true, "wait for a started service to be READY [s]", "300"},
+      {"--channel-prefix", true, "channel prefix of the simulation", "none"},
+      {"--lcm-url", true, "LCM URL", "LCM's default"},
+      {"--build-dir", true, "build tree holding wrc-contactd", "this build"},
+      {"--format", true, "csv or table", "csv"}};
+  for (auto& spec : profile_option_specs()) specs.push_back(spec);
+  const Options o("query", "--model M --y Y [options]", specs, args);
+  if (o.help_requested()) {
+    std::cout << o.help()
+              << "\nSends one contact query to a service of model M and prints one row per contact patch:\n"
+                 "wheel,s,angle,a,b,penetration,normal_force,fx,fy,mz,xi_x,xi_y,spin,rolling_radius,s_rail,x,y,z\n"
+                 "(a rolling, b lateral semi-axis; forces on the wheel in the contact frame; x,y,z the contact\n"
+                 "point on the wheel, track frame; SI units). The service is a READY instance of M heard on\n"
+                 "HEARTBEAT that computes with the same profiles and track (smallest instance name first); when\n"
+                 "none is heard within 1.5 s one is started from the build tree and stopped afterwards.\n"
+                 "Rigid formulation: --load per wheel; z defaults to the height where the closer wheel just\n"
+                 "touches (positions only; the loads set the forces). Elastic: the forces follow from the\n"
+                 "penetration; without --z the rigid wheelset solution (both wheels touching; its roll unless\n"
+                 "--roll is given) is lowered by --penetration.\n";
+    return 0;
+  }
+  const std::string model = o.choice("--model", {"onepoint", "interp", "multipoint"}, "");
+  if (model.empty()) throw UsageError("--model is required (onepoint, interp or multipoint)");
+  const double y = o.required_number("--y", -0.5, 0.5);
+  const double yaw = o.number("--yaw", 0.0, -0.5, 0.5);
+  const std::string formulation = o.choice("--formulation", {"rigid", "elastic"}, "rigid");
+  const double speed = o.number("--speed", 30.0, 1e-6, 1000.0);
+  const double load = o.number("--load", kDefaultLoad, 0.0, 1e8);
+  int elements = 20, strips = 20;
+  if (o.has("--grid")) parse_grid(o.text("--grid"), &elements, &strips);
+  bus::CallPolicy policy;
+  policy.timeout = o.number("--timeout", 1.0, 1e-3, 600.0);
+  policy.retries = o.integer("--retries", 3, 0, 100);
+  const double start_timeout = o.number("--start-timeout", 300.0, 0.1, 3600.0);
+  const std::string format = o.choice("--format", {"csv", "table"}, "csv");
+  const contactd::GeometrySpec spec = geometry_spec(o);
+  const std::string key = contactd::geometry_key(spec);
+
+  // The configuration; the client's own geometry only serves z (and the rigid roll when elastic).
+  wrc::wheelset_configuration_t c{};
+  c.y = y;
+  c.yaw = yaw;
+  c.roll = o.number("--roll", 0.0, -0.5, 0.5);
+  c.spin_rate = o.number("--spin-rate", speed / spec.track.nominal_radius, -1e4, 1e4);
+  c.normal_load_left = load;
+  c.normal_load_right = load;
+  if (o.has("--z")) {
+    c.z = o.number("--z", 0.0, -10.0, 10.0);
+  } else {
+    const WheelsetGeometry geometry(make_profile(spec.wheel, ProfileSide::kWheel),
+                                    make_profile(spec.rail, ProfileSide::kRail), spec.track);
+    if (formulation == "elastic" && !o.has("--roll")) {
+      const RigidContact rigid = RigidWheelsetSolver(geometry).solve(y, yaw);
+      c.roll = rigid.pose.roll;
+      c.z = rigid.pose.z;
+    } else {
+      c.z = touching_height(geometry, y, c.roll, yaw);
+    }
+    if (formulation == "elastic") c.z -= o.number("--penetration", 1e-4, 0.0, 0.01);
+  }
+  wrc::contact_query_t query{};
+  query.model = model;
+  query.table_hash = key;
+  query.formulation = formulation == "elastic" ? wrc::contact_query_t::ELASTIC : wrc::contact_query_t::RIGID;
+  query.shear_modulus = o.number("--shear-modulus", 8.2e10, 1.0, 1e13);
+  query.poisson_ratio = o.number("--poisson", 0.28, 0.0, 0.5);
+  query.friction = o.number("--friction", 0.3, 0.0, 10.0);
+  query.fastsim_nx = static_cast<std::int16_t>(elements);
+  query.fastsim_ny = static_cast<std::int16_t>(strips);
+  query.speed = speed;
+  query.num_configurations = 1;
+  query.configurations = {c};
+
+  // Find the service, or start one.
+  const bus::ChannelNames names(o.text("--channel-prefix"));
+  auto lcm = bus::open_lcm(o.text("--lcm-url"));
+  bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
+  const std::string wanted = o.text("--instance");
+  std::optional<bus::ServiceStatus> service;
+  handle_until(*lcm, bus::monotonic_seconds() + kDiscoveryTime,
+               [&] { return (service = pick(monitor, model, key, wanted, true)).has_value(); });
+  std::unique_ptr<StartedService> started;
+  if (!service && !wanted.empty()) {
+    throw std::runtime_error("no READY instance '" + wanted + "' of model " + model + " with geometry " + key +
+                             " heard within 1.5 s");
+  }
+  if (!service && pick(monitor, model, key, "", false)) {
+    std::cerr << "query: an instance of " << model << " is starting; waiting for it\n";
+    handle_until(*lcm, bus::monotonic_seconds() + start_timeout,
+                 [&] { return (service = pick(monitor, model, key, "", true)).has_value(); });
+  }
+  if (!service) {
+    const std::string build = o.text("--build-dir", bus::build_dir());
+    const auto path = bus::find_service_executable("wrc-contactd", build);
+    if (!path) throw std::runtime_error("no " + model + " service runs and wrc-contactd is not built in " + build);
+    const std::string instance = "q" + std::to_string(::getpid());
+    std::vector<std::string> service_args{"--model", model, "--instance", instance, "--heartbeat-period", "0.2"};
+    for (auto& a : contactd::geometry_arguments(spec)) service_args.push_back(a);
+    if (o.has("--channel-prefix")) service_args.insert(service_args.end(), {"--channel-prefix", o.text("--channel-prefix")});
+    if (o.has("--lcm-url")) service_args.insert(service_args.end(), {"--lcm-url", o.text("--lcm-url")});
+    const std::string log =
+        (std::filesystem::temp_directory_path() / ("wrc-query-contactd-" + instance + ".log")).string();
+    std::cerr << "query: no " << model << " service heard; starting " << *path << " --instance " << instance
+              << " (log " << log << ")\n";
+    started = std::make_unique<StartedService>(*path, service_args, log);
+    const double t0 = bus::monotonic_seconds();
+    handle_until(*lcm, t0 + start_timeout, [&] {
+      return (service = pick(monitor, model, key, instance, true)).has_value() || !started->alive();
+    });
+    if (!service) {
+      const bool died = !started->alive();
+      throw std::runtime_error("the started " + model + " service " +
+                               (died ? std::string("exited") : "was not READY within " + number(start_timeout) + " s") +
+                               "; its log:\n" + tail_of(log));
+    }
+    std::cerr << "query: " << model << " service " << instance << " READY after " << number(bus::monotonic_seconds() - t0)
+              << " s\n";
+  }
+  query.instance = service->last.instance;
+
+  const std::string client_id = bus::make_client_id("query");
+  bus::RequestClient<wrc::contact_query_t, wrc::contact_reply_t> client(
+      *lcm, names.name(bus::channel::kContactQuery, model), names.name(bus::channel::kContactReply, client_id),
+      bus::sender_name("wrc-query", client_id));
+  auto result = client.call(query, policy);
+  if (started) {
+    started->stop();
+    if (result && result.reply->status == wrc::contact_reply_t::OK) std::filesystem::remove(started->log());
+  }
+  if (!result) {
+    throw std::runtime_error("no reply from " + model + " instance " + query.instance + " after " +
+                             std::to_string(result.attempts) + " attempts of " + number(policy.timeout) + " s");
+  }
+  const wrc::contact_reply_t& reply = *result.reply;
+  std::cerr << "query: " << model << " instance " << reply.instance << " answered in "
+            << number(result.round_trip * 1e3) << " ms (compute " << number(reply.compute_time * 1e3) << " ms, "
+            << result.attempts << " attempt" << (result.attempts > 1 ? "s" : "") << ")\n";
+  if (reply.status != wrc::contact_reply_t::OK) {
+    static const char* names_of[] = {"OK", "BAD_REQUEST", "NO_CONTACT", "IMPOSSIBLE_CONFIGURATION", "INTERNAL_ERROR"};
+    const char* status = reply.status >= 0 && reply.status <= 4 ? names_of[reply.status] : "UNKNOWN";
+    std::cerr << "query: " << status << ": " << reply.message << "\n";
+    return 1;
+  }
+  print_patches(reply, format);
+  return 0;
+}
+
+const CommandRegistrar registrar{
+    {"query", "one contact query to a contact service (started when none runs); one row per patch", run_query}};
+
+}  // namespace
+}  // namespace wrc::cli

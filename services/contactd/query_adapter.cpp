@@ -1,0 +1,216 @@
+#include "contactd/query_adapter.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+
+namespace wrc::contactd {
+
+namespace {
+
+std::string number_text(double value) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.9g", value);
+  return buf;
+}
+
+/// "" when value is finite and in [lo, hi], else "<name> = <value> is ...".
+std::string check_range(const std::string& name, double value, double lo, double hi, const char* unit) {
+  if (!std::isfinite(value)) return name + " = " + number_text(value) + " is not a finite number";
+  if (value < lo || value > hi) {
+    return name + " = " + number_text(value) + " is outside [" + number_text(lo) + ", " + number_text(hi) +
+           "] " + unit;
+  }
+  return {};
+}
+
+std::string check_positive(const std::string& name, double value, double hi, const char* unit) {
+  if (std::string why = check_range(name, value, 0.0, hi, unit); !why.empty()) return why;
+  if (!(value > 0.0)) return name + " = " + number_text(value) + " is not positive";
+  return {};
+}
+
+std::string validate_configuration(const wrc::wheelset_configuration_t& c, int i, bool rigid) {
+  const std::string p = "configurations[" + std::to_string(i) + "].";
+  struct Field {
+    const char* name;
+    double value;
+    double lo, hi;
+    const char* unit;
+  };
+  // Ranges of a wheelset that is on a track at all; whether a wheel touches its rail there is
+  // for the model to say (IMPOSSIBLE_CONFIGURATION).
+  const Field fields[] = {
+      {"y", c.y, -0.5, 0.5, "m"},
+      {"z", c.z, -10.0, 10.0, "m"},
+      {"roll", c.roll, -0.5, 0.5, "rad"},
+      {"yaw", c.yaw, -0.5, 0.5, "rad"},
+      {"y_dot", c.y_dot, -100.0, 100.0, "m/s"},
+      {"z_dot", c.z_dot, -100.0, 100.0, "m/s"},
+      {"roll_dot", c.roll_dot, -100.0, 100.0, "rad/s"},
+      {"yaw_dot", c.yaw_dot, -100.0, 100.0, "rad/s"},
+      {"spin_rate", c.spin_rate, -1e4, 1e4, "rad/s"},
+      {"normal_load_left", c.normal_load_left, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
+      {"normal_load_right", c.normal_load_right, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
+  };
+  for (const Field& f : fields) {
+    if (std::string why = check_range(p + f.name, f.value, f.lo, f.hi, f.unit); !why.empty()) return why;
+  }
+  return {};
+}
+
+std::string configuration_label(const wrc::wheelset_configuration_t& c, int i) {
+  return "configuration " + std::to_string(i) + " (y=" + number_text(c.y) + ", roll=" + number_text(c.roll) +
+         ", yaw=" + number_text(c.yaw) + "): ";
+}
+
+void copy3(const Eigen::Vector3d& from, double to[3]) {
+  for (int k = 0; k < 3; ++k) to[k] = from[k];
+}
+
+}  // namespace
+
+int status_severity(std::int8_t status) {
+  switch (status) {
+    case wrc::contact_reply_t::OK: return 0;
+    case wrc::contact_reply_t::NO_CONTACT: return 1;
+    case wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION: return 2;
+    case wrc::contact_reply_t::BAD_REQUEST: return 3;
+    case wrc::contact_reply_t::INTERNAL_ERROR: return 4;
+    default: return 5;
+  }
+}
+
+const char* status_name(std::int8_t status) {
+  switch (status) {
+    case wrc::contact_reply_t::OK: return "OK";
+    case wrc::contact_reply_t::BAD_REQUEST: return "BAD_REQUEST";
+    case wrc::contact_reply_t::NO_CONTACT: return "NO_CONTACT";
+    case wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION: return "IMPOSSIBLE_CONFIGURATION";
+    case wrc::contact_reply_t::INTERNAL_ERROR: return "INTERNAL_ERROR";
+    default: return "UNKNOWN";
+  }
+}
+
+std::string validate_query(const wrc::contact_query_t& q) {
+  if (q.formulation != wrc::contact_query_t::RIGID && q.formulation != wrc::contact_query_t::ELASTIC) {
+    return "formulation = " + std::to_string(q.formulation) + " is neither RIGID (0) nor ELASTIC (1)";
+  }
+  if (std::string why = check_positive("shear_modulus", q.shear_modulus, 1e13, "Pa"); !why.empty()) return why;
+  if (std::string why = check_range("poisson_ratio", q.poisson_ratio, 0.0, 0.5, "[-]"); !why.empty()) return why;
+  if (std::string why = check_range("friction", q.friction, 0.0, 10.0, "[-]"); !why.empty()) return why;
+  if (std::string why = check_positive("speed", q.speed, 1000.0, "m/s"); !why.empty()) return why;
+  if (q.fastsim_nx < 1 || q.fastsim_nx > 400) {
+    return "fastsim_nx = " + std::to_string(q.fastsim_nx) + " is outside [1, 400]";
+  }
+  if (q.fastsim_ny < 1 || q.fastsim_ny > 400) {
+    return "fastsim_ny = " + std::to_string(q.fastsim_ny) + " is outside [1, 400]";
+  }
+  if (q.num_configurations < 1 || q.num_configurations > kMaxConfigurations) {
+    return "num_configurations = " + std::to_string(q.num_configurations) + " is outside [1, " +
+           std::to_string(kMaxConfigurations) + "]";
+  }
+  if (static_cast<std::size_t>(q.num_configurations) != q.configurations.size()) {
+    return "num_configurations = " + std::to_string(q.num_configurations) + " but " +
+           std::to_string(q.configurations.size()) + " configurations";
+  }
+  const bool rigid = q.formulation == wrc::contact_query_t::RIGID;
+  for (int i = 0; i < q.num_configurations; ++i) {
+    if (std::string why = validate_configuration(q.configurations[static_cast<std::size_t>(i)], i, rigid);
+        !why.empty()) {
+      return why;
+    }
+  }
+  return {};
+}
+
+ContactQuery to_contact_query(const wrc::contact_query_t& q, int index) {
+  const auto& c = q.configurations.at(static_cast<std::size_t>(index));
+  ContactQuery out;
+  out.pose.y = c.y;
+  out.pose.z = c.z;
+  out.pose.roll = c.roll;
+  out.pose.yaw = c.yaw;
+  out.y_dot = c.y_dot;
+  out.z_dot = c.z_dot;
+  out.roll_dot = c.roll_dot;
+  out.yaw_dot = c.yaw_dot;
+  out.spin_rate = c.spin_rate;
+  out.speed = q.speed;
+  out.normal_load = {c.normal_load_left, c.normal_load_right};
+  out.formulation = q.formulation == wrc::contact_query_t::ELASTIC ? ContactFormulation::kElastic
+                                                                   : ContactFormulation::kRigid;
+  out.material.shear_modulus = q.shear_modulus;
+  out.material.poisson_ratio = q.poisson_ratio;
+  out.material.friction = q.friction;
+  out.fastsim_elements = q.fastsim_nx;
+  out.fastsim_strips = q.fastsim_ny;
+  return out;
+}
+
+void to_result_message(const ContactResult& result, wrc::contact_result_t& message) {
+  message.status = wrc::contact_reply_t::OK;
+  message.num_patches = static_cast<std::int32_t>(result.patches.size());
+  message.patches.assign(result.patches.size(), wrc::contact_patch_t{});
+  for (std::size_t i = 0; i < result.patches.size(); ++i) {
+    const ContactPatch& p = result.patches[i];
+    wrc::contact_patch_t& m = message.patches[i];
+    m.wheel = p.point.side == WheelSide::kLeft ? wrc::contact_patch_t::LEFT : wrc::contact_patch_t::RIGHT;
+    m.s_wheel = p.point.s;
+    m.s_rail = p.point.rail_u;
+    copy3(p.point.wheel_point, m.wheel_point);
+    copy3(p.point.rail_point, m.rail_point);
+    copy3(p.point.normal, m.normal);
+    m.contact_angle = p.point.contact_angle;
+    m.rolling_radius = p.point.rolling_radius;
+    m.a = p.a;
+    m.b = p.b;
+    m.penetration = p.penetration;
+    m.normal_force = p.normal_force;
+    m.creepage_x = p.creepages.longitudinal;
+    m.creepage_y = p.creepages.lateral;
+    m.spin_creepage = p.creepages.spin;
+    m.fx = p.forces.fx;
+    m.fy = p.forces.fy;
+    m.mz = p.forces.mz;
+  }
+  copy3(result.force, message.force);
+  copy3(result.moment, message.moment);
+}
+
+void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query, wrc::contact_reply_t& reply) {
+  reply.status = wrc::contact_reply_t::OK;
+  reply.message.clear();
+  reply.num_configurations = query.num_configurations;
+  reply.results.assign(static_cast<std::size_t>(query.num_configurations), wrc::contact_result_t{});
+  for (int i = 0; i < query.num_configurations; ++i) {
+    wrc::contact_result_t& out = reply.results[static_cast<std::size_t>(i)];
+    std::int8_t status = wrc::contact_reply_t::OK;
+    std::string why;
+    try {
+      to_result_message(model.evaluate(to_contact_query(query, i)), out);
+    } catch (const ContactConfigurationError& e) {
+      status = wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION;
+      why = e.what();
+    } catch (const std::invalid_argument& e) {
+      status = wrc::contact_reply_t::BAD_REQUEST;
+      why = e.what();
+    } catch (const std::exception& e) {
+      status = wrc::contact_reply_t::INTERNAL_ERROR;
+      why = e.what();
+    } catch (...) {
+      status = wrc::contact_reply_t::INTERNAL_ERROR;
+      why = "unknown exception";
+    }
+    if (status == wrc::contact_reply_t::OK) continue;
+    out = wrc::contact_result_t{};
+    out.status = status;
+    if (status_severity(status) > status_severity(reply.status)) {
+      reply.status = status;
+      reply.message = configuration_label(query.configurations[static_cast<std::size_t>(i)], i) + why;
+    }
+  }
+}
+
+}  // namespace wrc::contactd

@@ -10,6 +10,8 @@ std::vector<OptionSpec> profile_option_specs() {
   return {
       {"--wheel", true, "wheel profile: S1002, conic:<slope>, or a profile file", "S1002"},
       {"--rail", true, "rail profile: UIC60, UIC60-MB, circle:<radius [m]>, or a profile file", "UIC60"},
+      {"--rail-cant", true, "inclination already contained in a rail profile file: 1:N, none or [rad] "
+                            "(SIMPACK files saying 'canted': 1:40)", "from the file"},
       {"--gauge", true, "track gauge, measured --gauge-depth below the top of rail [m]", "1.435"},
       {"--gauge-depth", true, "depth below the top of rail where the gauge is measured [m]", "0.014"},
       {"--flange-back", true, "flange-back spacing [m]", "1.360"},
@@ -33,7 +35,15 @@ WheelsetGeometry geometry_from_options(const Options& options) {
   }
   track.validate();
   auto wheel = make_profile(options.text("--wheel", "S1002"), ProfileSide::kWheel);
-  auto rail = make_profile(options.text("--rail", "UIC60"), ProfileSide::kRail);
+  ProfileFileOptions rail_options;
+  if (options.has("--rail-cant")) {
+    try {
+      rail_options.built_in_cant = parse_inclination(options.text("--rail-cant"));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--rail-cant: ") + e.what());
+    }
+  }
+  auto rail = make_profile(options.text("--rail", "UIC60"), ProfileSide::kRail, rail_options);
   return WheelsetGeometry(wheel, rail, track);
 }
 

@@ -70,6 +70,7 @@ class PlacedRail {
   double gauge_point_y_ = 0;
   std::vector<double> table_y_;  // side-local y of the first and last table node
   std::vector<double> table_u_;  // u at uniformly spaced side-local y
+  std::vector<double> table_du_; // du/dy at the nodes times the node spacing
   double table_y0_ = 0, table_dy_ = 1;
 };
 

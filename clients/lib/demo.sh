@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The main job of wrc (`clients/wrc demo`), run after set-up and build by clients/wrc:
+# shows what the product computes today, from the exact geometry to the contact services on the bus.
+# By default the services run on a private LCM bus (a network namespace of this demo, see
+# clients/lib/netns.sh); `clients/wrc demo --host-bus` uses the host's default LCM bus instead, so that
+# `clients/wrc spy` in another terminal sees the traffic.
+set -euo pipefail
+: "${WRC_ROOT:?}" "${WRC_BUILD_DIR:?}"
+wrc() { "$WRC_BUILD_DIR/clients/wrc-cli" "$@"; }
+
+if [ "${1:-}" != "--host-bus" ] && [ "${WRC_DEMO_INNER:-}" != 1 ]; then
+  WRC_DEMO_INNER=1 exec bash "$WRC_ROOT/clients/lib/netns.sh" bash "$0" "$@"
+fi
+
+section() { printf '\n=== %s\n' "$*"; }
+
+section "Rigid-wheelset geometry, S1002 on UIC60 (EN 60E1), gauge 1435 mm, 1:40 (wrc geometry)"
+echo "Both wheels touch; roll and height solved for each lateral shift. Note the jumps of the contact"
+echo "point (s) onto the flange root and the flange: they are computed, not smoothed."
+wrc geometry --y-from -0.008 --y-to 0.008 --y-step 0.001
+
+section "Potential common points of the left wheel at y = 5 mm (wrc points)"
+wrc points --y 0.005 --z 0.46
+
+section "Contact area around the common point at y = 5 mm, roll 0.3 mrad (wrc area; the paper's figures 1-3)"
+wrc area --y 0.005 --roll 0.0003
+
+section "Equivalent conicity, harmonic linearisation (wrc conicity)"
+wrc conicity --amplitude 0.001,0.002,0.003,0.004,0.005,0.006 --format table
+
+section "Creep forces on one Hertzian patch, FASTSIM 20x20 vs Kalker's linear theory (wrc creep)"
+for model in fastsim linear; do
+  printf '%-8s ' "$model"; wrc creep --a 0.0066 --b 0.005 --normal-force 80000 --mu 0.3 --shear-modulus 8.2e10 \
+    --poisson 0.28 --xi-x 0.0005 --xi-y 0.0003 --spin 0.1 --model $model | tail -1
+done
+
+section "Contact services on the bus (wrc launch, wrc status, wrc query)"
+log=$(mktemp)
+wrc launch contact-onepoint contact-interp contact-multipoint pingd >"$log" 2>&1 &
+launcher=$!
+trap 'kill -TERM $launcher 2>/dev/null || true; wait $launcher 2>/dev/null || true; rm -f "$log"' EXIT
+ready=0
+for _ in $(seq 1 60); do
+  if wrc status --format csv 2>/dev/null | grep -q "multipoint.*READY"; then ready=1; break; fi
+done
+wrc status || true
+if [ "$ready" = 1 ]; then
+  for model in onepoint interp multipoint; do
+    printf '\n%s, y = 5 mm, rigid formulation, 77357.5 N per wheel:\n' "$model"
+    wrc query --model "$model" --y 0.005 --format table || echo "query to $model failed"
+  done
+else
+  echo "the contact services did not report READY; launcher log:"; cat "$log"
+fi
+kill -TERM $launcher 2>/dev/null || true
+wait $launcher 2>/dev/null || true
+section "Launcher log"
+cat "$log"

@@ -57,6 +57,9 @@ struct ContactPatch {
   double normal_force = 0;  ///< [N], >= 0
   Creepages creepages;      ///< longitudinal, lateral [-], spin [1/m]
   CreepForces forces;       ///< fx, fy [N] and mz [N m] on the wheel, contact frame
+  /// The lateral relative curvature B was raised to the conformal-contact floor (B <= floor * A at
+  /// the point, see ContactModelOptions::lateral_curvature_floor): Hertz does not hold there.
+  bool lateral_curvature_floored = false;
 };
 
 /// Result of one configuration: every patch (left wheel first, then right) and the resultant.

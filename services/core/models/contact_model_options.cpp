@@ -1,0 +1,47 @@
+#include "core/models/contact_model_options.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace wrc {
+namespace {
+
+void require_count(int value, const char* name) {
+  if (value >= 2 && value <= 10000) return;
+  std::ostringstream msg;
+  msg << "interpolation grid: " << name << " = " << value << " must be in 2..10000";
+  throw std::invalid_argument(msg.str());
+}
+
+void require_positive(double value, const char* where, const char* name, const char* unit) {
+  if (value > 0.0 && std::isfinite(value)) return;
+  std::ostringstream msg;
+  msg << where << ": " << name << " = " << value << " " << unit << " must be positive and finite";
+  throw std::invalid_argument(msg.str());
+}
+
+}  // namespace
+
+void InterpolationGrid::validate() const {
+  require_count(y_points, "y_points");
+  require_count(roll_points, "roll_points");
+  require_count(yaw_points, "yaw_points");
+  require_positive(y_max, "interpolation grid", "y_max", "m");
+  require_positive(roll_max, "interpolation grid", "roll_max", "rad");
+  require_positive(yaw_max, "interpolation grid", "yaw_max", "rad");
+}
+
+void ContactModelOptions::validate() const {
+  if (!(lateral_curvature_floor >= 0.0) || !std::isfinite(lateral_curvature_floor)) {
+    std::ostringstream msg;
+    msg << "contact model options: lateral_curvature_floor = " << lateral_curvature_floor
+        << " must be non-negative and finite";
+    throw std::invalid_argument(msg.str());
+  }
+  require_positive(search.step, "contact model options", "search.step", "m");
+  require_positive(search.tolerance, "contact model options", "search.tolerance", "m");
+  interp.validate();
+}
+
+}  // namespace wrc

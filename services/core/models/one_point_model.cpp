@@ -1,0 +1,64 @@
+#include "core/models/one_point_model.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "core/contact/hertz.hpp"
+#include "core/models/patch_builder.hpp"
+#include "core/models/query_validation.hpp"
+#include "core/models/wheelset_motion.hpp"
+
+namespace wrc {
+
+std::string describe_pose(const WheelsetPose& pose) {
+  std::ostringstream msg;
+  msg << "y = " << pose.y << " m, z = " << pose.z << " m, roll = " << pose.roll << " rad, yaw = " << pose.yaw
+      << " rad";
+  return msg.str();
+}
+
+ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose,
+                                  const PotentialPointSearch& search) {
+  std::optional<ContactPoint> point = geometry.common_point(side, pose, search);
+  if (!point) {
+    throw ContactConfigurationError(std::string("the ") + side_name(side) +
+                                    " wheel has no contact point on its rail (shifted off the rail or flange "
+                                    "climbed over) at " +
+                                    describe_pose(pose));
+  }
+  return *point;
+}
+
+OnePointModel::OnePointModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options)
+    : geometry_(std::move(geometry)), options_(options) {
+  if (!geometry_) throw std::invalid_argument("OnePointModel: no geometry");
+  options_.validate();
+}
+
+ContactResult OnePointModel::evaluate(const ContactQuery& query) const {
+  validate_contact_query(query);
+  const WheelsetMotion motion = WheelsetMotion::from_query(query);
+  const PatchContext context{query, motion, fastsim_.get(query.fastsim_elements, query.fastsim_strips),
+                             contact_modulus(query.material.shear_modulus, query.material.poisson_ratio)};
+  ContactResult result;
+  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
+    const ContactPoint point = require_common_point(*geometry_, side, query.pose, options_.search);
+    if (query.formulation == ContactFormulation::kRigid) {
+      const double load = query.normal_load[static_cast<int>(side)];
+      if (load > 0.0) {
+        result.patches.push_back(
+            patch_from_force(point, contact_shape(point, options_.lateral_curvature_floor), load, context));
+      }
+    } else {
+      const double delta = normal_penetration(point);
+      if (delta > 0.0) {
+        result.patches.push_back(
+            patch_from_penetration(point, contact_shape(point, options_.lateral_curvature_floor), delta, context));
+      }
+    }
+  }
+  for (const ContactPatch& patch : result.patches) add_to_resultant(patch, motion.centre, result);
+  return result;
+}
+
+}  // namespace wrc

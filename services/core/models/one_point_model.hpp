@@ -1,0 +1,47 @@
+#pragma once
+/// @file
+/// Hertzian one-point contact (Arnold, section 2/3): one Hertz ellipse per wheel at its common
+/// point, the potential common point with the smallest distance, from the exact geometry.
+
+#include <memory>
+
+#include "core/models/contact_model.hpp"
+#include "core/models/contact_model_options.hpp"
+#include "core/models/fastsim_cache.hpp"
+
+namespace wrc {
+
+/// Model "onepoint". Per wheel, the common point at the query pose (a full potential-point scan
+/// of the exact geometry, so the point jumps where the global minimum of the distance jumps).
+///  - kRigid: the wheel's normal_load is the normal force N along the contact normal; Hertz from
+///    force; penetration reported as 0. A wheel with load 0 gets no patch.
+///  - kElastic: penetration delta = -distance cos(contact_angle) (normal_penetration()), the
+///    vertical overlap at the query's z projected on the normal; N = C_H delta^{3/2} when
+///    delta > 0, otherwise the wheel gets no patch (lifted).
+/// A wheel without any local minimum of the distance over its rail (shifted off the rail, flange
+/// climbed over) throws ContactConfigurationError.
+class OnePointModel final : public ContactModel {
+ public:
+  /// @throws std::invalid_argument for a null geometry or invalid options.
+  explicit OnePointModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options = {});
+
+  std::string name() const override { return "onepoint"; }
+  ContactResult evaluate(const ContactQuery& query) const override;
+  const WheelsetGeometry& geometry() const override { return *geometry_; }
+  const ContactModelOptions& options() const { return options_; }
+
+ private:
+  std::shared_ptr<const WheelsetGeometry> geometry_;
+  ContactModelOptions options_;
+  FastsimCache fastsim_;
+};
+
+/// The common point of one wheel at pose, or ContactConfigurationError naming the wheel and the
+/// pose when the wheel has no local minimum of the distance over its rail.
+ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose,
+                                  const PotentialPointSearch& search);
+
+/// "y = ... m, roll = ... rad, yaw = ... rad" for error messages.
+std::string describe_pose(const WheelsetPose& pose);
+
+}  // namespace wrc

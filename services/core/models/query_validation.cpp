@@ -1,0 +1,53 @@
+#include "core/models/query_validation.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace wrc {
+namespace {
+
+[[noreturn]] void reject(const char* field, double value, const char* rule) {
+  std::ostringstream msg;
+  msg << "contact query: " << field << " = " << value << " " << rule;
+  throw std::invalid_argument(msg.str());
+}
+
+void require_finite(double value, const char* field) {
+  if (!std::isfinite(value)) reject(field, value, "must be finite");
+}
+
+}  // namespace
+
+void validate_contact_query(const ContactQuery& q) {
+  require_finite(q.pose.y, "pose.y [m]");
+  require_finite(q.pose.z, "pose.z [m]");
+  require_finite(q.pose.roll, "pose.roll [rad]");
+  require_finite(q.pose.yaw, "pose.yaw [rad]");
+  require_finite(q.pose.x, "pose.x [m]");
+  require_finite(q.y_dot, "y_dot [m/s]");
+  require_finite(q.z_dot, "z_dot [m/s]");
+  require_finite(q.roll_dot, "roll_dot [rad/s]");
+  require_finite(q.yaw_dot, "yaw_dot [rad/s]");
+  require_finite(q.spin_rate, "spin_rate [rad/s]");
+  if (!(q.speed > 0.0) || !std::isfinite(q.speed)) reject("speed [m/s]", q.speed, "must be positive and finite");
+  if (!(q.normal_load[0] >= 0.0) || !std::isfinite(q.normal_load[0]))
+    reject("normal_load[0] (left) [N]", q.normal_load[0], "must be non-negative and finite");
+  if (!(q.normal_load[1] >= 0.0) || !std::isfinite(q.normal_load[1]))
+    reject("normal_load[1] (right) [N]", q.normal_load[1], "must be non-negative and finite");
+  if (q.formulation != ContactFormulation::kRigid && q.formulation != ContactFormulation::kElastic)
+    reject("formulation", static_cast<double>(q.formulation), "is not kRigid or kElastic");
+  const ContactMaterial& m = q.material;
+  if (!(m.shear_modulus > 0.0) || !std::isfinite(m.shear_modulus))
+    reject("material.shear_modulus [Pa]", m.shear_modulus, "must be positive and finite");
+  if (!(m.poisson_ratio > 0.0 && m.poisson_ratio < 0.5))
+    reject("material.poisson_ratio [-]", m.poisson_ratio, "must be in (0, 0.5)");
+  if (!(m.friction >= 0.0) || !std::isfinite(m.friction))
+    reject("material.friction [-]", m.friction, "must be non-negative and finite");
+  if (q.fastsim_elements < kMinFastsimGrid || q.fastsim_elements > kMaxFastsimGrid)
+    reject("fastsim_elements", q.fastsim_elements, "must be in 2..400");
+  if (q.fastsim_strips < kMinFastsimGrid || q.fastsim_strips > kMaxFastsimGrid)
+    reject("fastsim_strips", q.fastsim_strips, "must be in 2..400");
+}
+
+}  // namespace wrc

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "core/models/interpolated_model.hpp"
+#include "core/models/multi_point_model.hpp"
 #include "core/models/one_point_model.hpp"
 
 namespace wrc {
@@ -12,8 +14,8 @@ std::unique_ptr<ContactModel> make_contact_model(const std::string& name,
                                                  std::shared_ptr<const WheelsetGeometry> geometry,
                                                  const ContactModelOptions& options) {
   if (name == "onepoint") return std::make_unique<OnePointModel>(std::move(geometry), options);
-  if (name == "interp" || name == "multipoint")
-    throw std::invalid_argument("contact model '" + name + "' is not available yet in this build");
+  if (name == "interp") return std::make_unique<InterpolatedModel>(std::move(geometry), options);
+  if (name == "multipoint") return std::make_unique<MultiPointModel>(std::move(geometry), options);
   if (name == "spline")
     throw std::invalid_argument(
         "contact model 'spline' (Arnold's spline approximation) is not available yet; known models: onepoint, "

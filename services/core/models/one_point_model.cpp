@@ -43,19 +43,8 @@ ContactResult OnePointModel::evaluate(const ContactQuery& query) const {
   ContactResult result;
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const ContactPoint point = require_common_point(*geometry_, side, query.pose, options_.search);
-    if (query.formulation == ContactFormulation::kRigid) {
-      const double load = query.normal_load[static_cast<int>(side)];
-      if (load > 0.0) {
-        result.patches.push_back(
-            patch_from_force(point, contact_shape(point, options_.lateral_curvature_floor), load, context));
-      }
-    } else {
-      const double delta = normal_penetration(point);
-      if (delta > 0.0) {
-        result.patches.push_back(
-            patch_from_penetration(point, contact_shape(point, options_.lateral_curvature_floor), delta, context));
-      }
-    }
+    std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
+    if (patch) result.patches.push_back(std::move(*patch));
   }
   for (const ContactPatch& patch : result.patches) add_to_resultant(patch, motion.centre, result);
   return result;

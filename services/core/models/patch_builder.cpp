@@ -80,6 +80,18 @@ ContactPatch patch_from_penetration(const ContactPoint& point, const PatchShape&
   return finish_patch(point, shape, hertz, penetration, context);
 }
 
+std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const PatchContext& context,
+                                            double lateral_curvature_floor) {
+  if (context.query.formulation == ContactFormulation::kRigid) {
+    const double load = context.query.normal_load[static_cast<int>(point.side)];
+    if (!(load > 0.0)) return std::nullopt;
+    return patch_from_force(point, contact_shape(point, lateral_curvature_floor), load, context);
+  }
+  const double delta = normal_penetration(point);
+  if (!(delta > 0.0)) return std::nullopt;
+  return patch_from_penetration(point, contact_shape(point, lateral_curvature_floor), delta, context);
+}
+
 double normal_penetration(const ContactPoint& point) { return -point.distance * std::cos(point.contact_angle); }
 
 void add_to_resultant(const ContactPatch& patch, const Eigen::Vector3d& centre, ContactResult& result) {

@@ -4,6 +4,8 @@
 /// conformal-contact fallback), one complete ContactPatch (Hertz, creepages, FASTSIM) from a normal
 /// force or from a penetration, and the penetration implied by a vertical overlap.
 
+#include <optional>
+
 #include "core/contact/fastsim.hpp"
 #include "core/contact/hertz.hpp"
 #include "core/models/contact_model.hpp"
@@ -45,6 +47,13 @@ ContactPatch patch_from_force(const ContactPoint& point, const PatchShape& shape
 /// @param penetration delta along the normal [m], > 0.
 ContactPatch patch_from_penetration(const ContactPoint& point, const PatchShape& shape, double penetration,
                                     const PatchContext& context);
+
+/// Hertzian one-point contact at point (OnePointModel and InterpolatedModel):
+///  - kRigid: the wheel's normal_load is the normal force N; nothing when the load is 0;
+///  - kElastic: delta = normal_penetration(point), N = C_H delta^{3/2}; nothing when delta <= 0.
+/// @param lateral_curvature_floor as in contact_shape() [-].
+std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const PatchContext& context,
+                                            double lateral_curvature_floor);
 
 /// The approach of the surfaces along the normal implied by the point's vertical overlap:
 /// delta = -distance cos(contact_angle) [m] (< 0: a gap). A vertical rigid approach d of the wheel

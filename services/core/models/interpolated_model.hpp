@@ -1,0 +1,48 @@
+#pragma once
+/// @file
+/// Interpolated Hertzian contact as in MEDYNA (Arnold, section 3): Hertzian one-point contact at a
+/// set of interpolation configurations, its parameters interpolated in between.
+
+#include <memory>
+
+#include "core/models/contact_model.hpp"
+#include "core/models/contact_model_options.hpp"
+#include "core/models/contact_point_table.hpp"
+#include "core/models/fastsim_cache.hpp"
+
+namespace wrc {
+
+/// Model "interp". The constructor tabulates the exact common point of each wheel on the grid
+/// options.interp (ContactPointTable); evaluate() interpolates contact point, normal, angle,
+/// radius, distance and curvatures there (no geometry scan) and builds one Hertz patch per wheel
+/// exactly as OnePointModel does (same rigid and elastic rules, same curvature floor). The
+/// interpolation is continuous in the configuration, so the jumps of the common point are
+/// smoothed over one grid cell; at the nodes the model reproduces OnePointModel.
+/// A configuration outside the table throws ContactConfigurationError naming the coordinate.
+class InterpolatedModel final : public ContactModel {
+ public:
+  /// Builds the table (2 y_points roll_points yaw_points potential-point scans; ~40 ms for the
+  /// default 41 x 3 x 3 grid).
+  /// @throws std::invalid_argument for a null geometry or invalid options; ContactConfigurationError
+  ///         when a node of the table has no contact.
+  explicit InterpolatedModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options = {});
+
+  std::string name() const override { return "interp"; }
+  ContactResult evaluate(const ContactQuery& query) const override;
+  const WheelsetGeometry& geometry() const override { return *geometry_; }
+  const ContactModelOptions& options() const { return options_; }
+  /// The interpolation table.
+  const ContactPointTable& table() const { return table_; }
+  /// Wall time the constructor spent building the table [s].
+  double precomputation_seconds() const { return precomputation_seconds_; }
+
+ private:
+  static std::shared_ptr<const WheelsetGeometry> checked(std::shared_ptr<const WheelsetGeometry> geometry);
+  std::shared_ptr<const WheelsetGeometry> geometry_;
+  ContactModelOptions options_;
+  double precomputation_seconds_ = 0;
+  ContactPointTable table_;
+  FastsimCache fastsim_;
+};
+
+}  // namespace wrc

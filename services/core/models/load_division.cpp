@@ -1,0 +1,70 @@
+#include "core/models/load_division.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/numerics/brent.hpp"
+
+namespace wrc {
+
+LoadDivision divide_load(double load, const std::vector<DivisionPoint>& points) {
+  if (points.empty()) throw std::invalid_argument("divide_load: no contact points");
+  if (!(load >= 0.0) || !std::isfinite(load)) {
+    std::ostringstream msg;
+    msg << "divide_load: load = " << load << " N must be non-negative and finite";
+    throw std::invalid_argument(msg.str());
+  }
+  size_t closest = 0;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const DivisionPoint& p = points[k];
+    if (!(p.stiffness > 0.0) || !std::isfinite(p.stiffness) || !(p.gap >= 0.0) || !std::isfinite(p.gap) ||
+        !(p.cos_angle > 0.0) || !(p.cos_angle <= 1.0)) {
+      std::ostringstream msg;
+      msg << "divide_load: point " << k << ": stiffness = " << p.stiffness << " N/m^1.5, gap = " << p.gap
+          << " m, cos(angle) = " << p.cos_angle << " (need stiffness > 0, gap >= 0, 0 < cos <= 1)";
+      throw std::invalid_argument(msg.str());
+    }
+    if (p.gap < points[closest].gap) closest = k;
+  }
+  LoadDivision out;
+  out.normal_force.assign(points.size(), 0.0);
+  out.penetration.assign(points.size(), 0.0);
+  if (load == 0.0) return out;
+
+  auto total = [&](double d) {
+    double sum = 0;
+    for (const DivisionPoint& p : points) {
+      const double delta = (d - p.gap) * p.cos_angle;
+      if (delta > 0) sum += p.stiffness * delta * std::sqrt(delta);
+    }
+    return sum;
+  };
+  const DivisionPoint& c = points[closest];
+  const double d1 = c.gap + std::pow(load / c.stiffness, 2.0 / 3.0) / c.cos_angle;
+  const double lo = c.gap;
+  const RootResult root =
+      brent_root([&](double d) { return total(d) - load; }, lo, d1, -load, total(d1) - load, 1e-14 * d1, 200);
+  out.approach = root.x;
+
+  double sum = 0;
+  for (size_t k = 0; k < points.size(); ++k) {
+    const double delta = (out.approach - points[k].gap) * points[k].cos_angle;
+    if (delta > 0) {
+      out.penetration[k] = delta;
+      out.normal_force[k] = points[k].stiffness * delta * std::sqrt(delta);
+      sum += out.normal_force[k];
+      ++out.active;
+    }
+  }
+  if (out.active == 1) {
+    for (double& n : out.normal_force)
+      if (n > 0) n = load;
+  } else {
+    const double scale = load / sum;
+    for (double& n : out.normal_force) n *= scale;
+  }
+  return out;
+}
+
+}  // namespace wrc

@@ -1,0 +1,198 @@
+// wrc-contactd: one contact model (onepoint, interp or multipoint) as a service on the wrc bus.
+// It builds the wheelset geometry and the model (heartbeat state STARTING meanwhile, the build
+// time in its log), then answers every contact_query_t on CONTACT_QUERY.<model> addressed to its
+// instance (or to any instance while it is the model's leader: contactd/instance_filter.hpp) with
+// a contact_reply_t on the query's reply channel, request id echoed. Heartbeats: model, instance,
+// state (STARTING, READY, DRAINING on SIGTERM/SIGINT), geometry key as table_hash, and the load
+// (queries handled and rejected, handling time mean/p95/max). The service adds nothing to the
+// model: contactd/query_adapter.hpp only translates.
+//
+//   wrc-contactd --model onepoint|interp|multipoint [--wheel W --rail R --gauge G ...]
+//                [--instance NAME] [--channel-prefix P] [--lcm-url URL] [--heartbeat-period S]
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <future>
+#include <iostream>
+#include <memory>
+#include <vector>
+
+#include "bus/channels.hpp"
+#include "bus/clock.hpp"
+#include "bus/heartbeat_publisher.hpp"
+#include "bus/request_server.hpp"
+#include "bus/service_loop.hpp"
+#include "bus/service_options.hpp"
+#include "bus/shutdown_signal.hpp"
+#include "contactd/contactd_options.hpp"
+#include "contactd/instance_filter.hpp"
+#include "contactd/query_adapter.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "core/profile/profile_factory.hpp"
+#include "wrc/contact_query_t.hpp"
+#include "wrc/contact_reply_t.hpp"
+
+namespace {
+
+/// The geometry and model a service computes with, and what building them cost.
+struct Built {
+  std::shared_ptr<const wrc::WheelsetGeometry> geometry;
+  std::unique_ptr<const wrc::ContactModel> model;
+  double geometry_seconds = 0.0;
+  double model_seconds = 0.0;
+};
+
+Built build(const wrc::contactd::ContactdOptions& options) {
+  Built out;
+  const double t0 = wrc::bus::monotonic_seconds();
+  const auto& spec = options.geometry;
+  out.geometry = std::make_shared<const wrc::WheelsetGeometry>(
+      wrc::make_profile(spec.wheel, wrc::ProfileSide::kWheel), wrc::make_profile(spec.rail, wrc::ProfileSide::kRail),
+      spec.track);
+  const double t1 = wrc::bus::monotonic_seconds();
+  out.model = wrc::make_contact_model(options.model, out.geometry, wrc::ContactModelOptions{});
+  out.geometry_seconds = t1 - t0;
+  out.model_seconds = wrc::bus::monotonic_seconds() - t1;
+  return out;
+}
+
+/// Compute times of the recent queries, for the log (the heartbeat has mean, p95 and max).
+class ComputeTimes {
+ public:
+  void add(double seconds) {
+    if (samples_.size() < kWindow) {
+      samples_.push_back(seconds);
+    } else {
+      samples_[next_] = seconds;
+    }
+    next_ = (next_ + 1) % kWindow;
+  }
+  std::string summary() const {
+    if (samples_.empty()) return "no queries";
+    std::vector<double> s = samples_;
+    std::sort(s.begin(), s.end());
+    double sum = 0.0;
+    for (double v : s) sum += v;
+    auto at = [&](double p) { return s[std::min(s.size() - 1, static_cast<std::size_t>(p * (s.size() - 1) + 0.5))]; };
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "compute time over the last %zu queries: mean %.1f us, p50 %.1f us, p99 %.1f us",
+                  s.size(), 1e6 * sum / s.size(), 1e6 * at(0.5), 1e6 * at(0.99));
+    return buf;
+  }
+
+ private:
+  static constexpr std::size_t kWindow = 1000;
+  std::vector<double> samples_;
+  std::size_t next_ = 0;
+};
+
+int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOptions& options) {
+  using namespace wrc::bus;
+  using wrc::contact_query_t;
+  using wrc::contact_reply_t;
+  ShutdownSignal::install();
+  const ChannelNames names(service.channel_prefix);
+  auto lcm = open_lcm(service.lcm_url);
+  const std::string request_channel = names.name(channel::kContactQuery, options.model);
+  const std::string sender = sender_name("wrc-contactd", service.instance);
+  const std::string model_name = options.model;
+  const std::string instance = service.instance;
+  const std::string key = wrc::contactd::geometry_key(options.geometry);
+
+  HeartbeatPublisher heartbeat(*lcm, names.name(channel::kHeartbeat),
+                               {"wrc-contactd", model_name, instance, request_channel}, service.heartbeat_period);
+  heartbeat.set_table_hash(key);
+  heartbeat.publish_now();  // STARTING
+
+  // Build in a worker thread so that STARTING heartbeats keep coming while the model is built
+  // (the interpolated model takes a while); LCM is only used from this thread.
+  std::cerr << sender << ": building the " << model_name << " model (wheel " << options.geometry.wheel << ", rail "
+            << options.geometry.rail << ", geometry key " << key << ")\n";
+  auto pending = std::async(std::launch::async, build, std::cref(options));
+  while (pending.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
+    if (ShutdownSignal::requested()) {
+      heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+      std::cerr << sender << ": signal " << ShutdownSignal::signal_number()
+                << " while building the model; exiting without waiting for it\n";
+      std::cerr.flush();
+      std::_Exit(0);  // the build thread cannot be interrupted; nothing else needs cleaning up
+    }
+    heartbeat.tick();
+  }
+  Built built;
+  try {
+    built = pending.get();
+  } catch (const std::exception& e) {
+    heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+    std::cerr << sender << ": cannot build the " << model_name << " model: " << e.what() << "\n";
+    return 1;
+  }
+  std::cerr << sender << ": built the " << model_name << " model in " << built.model_seconds << " s (geometry "
+            << built.geometry_seconds << " s)\n";
+
+  const wrc::ContactModel& model = *built.model;
+  ComputeTimes compute_times;
+  wrc::contactd::InstanceFilter filter(*lcm, names.name(channel::kHeartbeat), model_name, instance);
+  RequestServer<contact_query_t, contact_reply_t> server(
+      *lcm, request_channel, sender, [&](const contact_query_t& query, contact_reply_t& reply) {
+        const double t0 = monotonic_seconds();
+        reply.model = model_name;
+        reply.instance = instance;
+        reply.table_hash = key;
+        wrc::contactd::evaluate_query(model, query, reply);
+        reply.compute_time = monotonic_seconds() - t0;
+        compute_times.add(reply.compute_time);
+      });
+  server.set_address_filter([&filter](const contact_query_t& query) { return filter.answers(query); });
+  server.set_validator([&](const contact_query_t& query) -> std::string {
+    if (!query.model.empty() && query.model != model_name) {
+      return "model = '" + query.model + "' but this service runs '" + model_name + "'";
+    }
+    if (!query.table_hash.empty() && query.table_hash != key) {
+      return "table_hash = '" + query.table_hash + "' but this service computes with geometry " + key;
+    }
+    return wrc::contactd::validate_query(query);
+  });
+  server.set_error_filler([&](const contact_query_t&, RequestError error, const std::string& why,
+                              contact_reply_t& reply) {
+    reply.model = model_name;
+    reply.instance = instance;
+    reply.table_hash = key;
+    reply.status = error == RequestError::kBadRequest ? contact_reply_t::BAD_REQUEST : contact_reply_t::INTERNAL_ERROR;
+    reply.message = why;
+    reply.num_configurations = 0;
+    reply.results.clear();
+  });
+
+  ServiceLoop loop(*lcm, heartbeat);
+  loop.add_load_source(&server);
+  std::cerr << sender << ": serving " << request_channel << "\n";
+  const int rc = loop.run();
+  const auto& c = server.counters();
+  std::cerr << sender << ": stopped (signal " << ShutdownSignal::signal_number() << "), answered " << c.answered
+            << ", rejected " << c.rejected << ", for other instances " << c.not_addressed << "; "
+            << compute_times.summary() << "\n";
+  return rc;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const auto service = wrc::bus::ServiceOptions::parse(argc, argv);
+    if (service.help) {
+      std::cout << "usage: wrc-contactd --model onepoint|interp|multipoint [options]\n"
+                   "Contact service: answers contact_query_t on CONTACT_QUERY.<model> with contact_reply_t.\n\n"
+                << wrc::contactd::ContactdOptions::help_text() << wrc::bus::ServiceOptions::help_text();
+      return 0;
+    }
+    const auto options = wrc::contactd::ContactdOptions::parse(service.rest);
+    return run(service, options);
+  } catch (const std::exception& e) {
+    std::cerr << "wrc-contactd: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,285 @@
+// Contact service round trip against its two floors, measured interleaved in one run (same
+// machine noise for all):
+//   bare_ping    : plain lcm-cpp echo of an empty ping_request_t (the bus baseline of bus_bench)
+//   bare_contact : plain lcm-cpp echo with the contact message types and sizes (query of one
+//                  configuration in, reply with two patches out; no checks, no computation)
+//   service      : wrc::bus::RequestClient -> wrc-contactd --model onepoint, one configuration,
+//                  both wheels, FASTSIM 20x20
+//   in_process   : ContactModel::evaluate of the same query in this process
+// Goal (issue 4): median(service) <= median(bare) + median(in_process) + 0.1 median(bare), checked
+// against both bare floors (goal_ping, goal_contact = 1 when met). Run on a private bus:
+//   clients/lib/netns.sh build/tests/bench_contact_service
+// (`bench_contact_service --bare-echo` is the echo process it starts itself.)
+
+#include <benchmark/benchmark.h>
+#include <lcm/lcm-cpp.hpp>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bus/build_paths.hpp"
+#include "bus/channels.hpp"
+#include "bus/clock.hpp"
+#include "bus/request_client.hpp"
+#include "bus/shutdown_signal.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "core/profile/profile_factory.hpp"
+#include "wrc/contact_query_t.hpp"
+#include "wrc/contact_reply_t.hpp"
+#include "wrc/ping_reply_t.hpp"
+#include "wrc/ping_request_t.hpp"
+
+namespace {
+
+constexpr const char* kBarePing = "BENCH_BARE_PING";
+constexpr const char* kBarePong = "BENCH_BARE_PONG";
+constexpr const char* kBareQuery = "BENCH_BARE_CONTACT_QUERY";
+constexpr const char* kBareReply = "BENCH_BARE_CONTACT_REPLY";
+
+wrc::contact_query_t bench_query() {
+  wrc::contact_query_t q{};
+  q.model = "onepoint";
+  q.instance = "bench";
+  q.formulation = wrc::contact_query_t::RIGID;
+  q.shear_modulus = 8.2e10;
+  q.poisson_ratio = 0.28;
+  q.friction = 0.3;
+  q.fastsim_nx = 20;
+  q.fastsim_ny = 20;
+  q.speed = 30.0;
+  wrc::wheelset_configuration_t c{};
+  c.y = 0.002;
+  c.z = 0.46;
+  c.yaw = 0.0005;
+  c.y_dot = 0.01;
+  c.spin_rate = 30.0 / 0.46;
+  c.normal_load_left = 154715.0 / 2.0;
+  c.normal_load_right = 154715.0 / 2.0;
+  q.num_configurations = 1;
+  q.configurations = {c};
+  return q;
+}
+
+wrc::ContactQuery library_query(const wrc::contact_query_t& q) {
+  const auto& c = q.configurations[0];
+  wrc::ContactQuery out;
+  out.pose.y = c.y;
+  out.pose.z = c.z;
+  out.pose.yaw = c.yaw;
+  out.y_dot = c.y_dot;
+  out.spin_rate = c.spin_rate;
+  out.speed = q.speed;
+  out.normal_load = {c.normal_load_left, c.normal_load_right};
+  out.fastsim_elements = q.fastsim_nx;
+  out.fastsim_strips = q.fastsim_ny;
+  return out;
+}
+
+// ---- the bare echo process: plain LCM, typed handlers, no checks, no computation ----------------
+struct BareEcho {
+  lcm::LCM& lcm;
+  wrc::contact_reply_t canned{};
+  void on_ping(const lcm::ReceiveBuffer*, const std::string&, const wrc::ping_request_t* req) {
+    wrc::ping_reply_t reply{};
+    reply.request_id = req->request_id;
+    lcm.publish(kBarePong, &reply);
+  }
+  void on_query(const lcm::ReceiveBuffer*, const std::string&, const wrc::contact_query_t* req) {
+    canned.request_id = req->request_id;
+    lcm.publish(kBareReply, &canned);
+  }
+};
+
+int run_bare_echo() {
+  wrc::bus::ShutdownSignal::install();
+  lcm::LCM lcm("");
+  if (!lcm.good()) return 1;
+  BareEcho echo{lcm};
+  echo.canned.model = "onepoint";
+  echo.canned.instance = "bench";
+  echo.canned.num_configurations = 1;
+  echo.canned.results.resize(1);
+  echo.canned.results[0].num_patches = 2;  // the size of a real one-point reply: one patch per wheel
+  echo.canned.results[0].patches.resize(2);
+  lcm.subscribe(kBarePing, &BareEcho::on_ping, &echo);
+  lcm.subscribe(kBareQuery, &BareEcho::on_query, &echo);
+  while (!wrc::bus::ShutdownSignal::requested()) lcm.handleTimeout(100);
+  return 0;
+}
+
+// ---- bare clients: plain LCM request/reply with an id check ---------------------------------------
+template <class Request, class Reply>
+class BareClient {
+ public:
+  BareClient(lcm::LCM& lcm, const char* out, const char* in, Request request)
+      : lcm_(lcm), out_(out), request_(std::move(request)) {
+    lcm_.subscribe(in, &BareClient::on_reply, this);
+  }
+  /// One round trip; false on a 1 s timeout.
+  bool round_trip() {
+    request_.request_id = ++id_;
+    got_ = false;
+    lcm_.publish(out_, &request_);
+    const double deadline = wrc::bus::monotonic_seconds() + 1.0;
+    while (!got_ && wrc::bus::monotonic_seconds() < deadline) lcm_.handleTimeout(1000);
+    return got_;
+  }
+
+ private:
+  void on_reply(const lcm::ReceiveBuffer*, const std::string&, const Reply* reply) {
+    if (reply->request_id == id_) got_ = true;
+  }
+  lcm::LCM& lcm_;
+  const char* out_;
+  Request request_;
+  std::int64_t id_ = 0;
+  bool got_ = false;
+};
+
+pid_t spawn(const std::vector<std::string>& words) {
+  std::vector<std::string> w = words;
+  std::vector<char*> argv;
+  for (auto& s : w) argv.push_back(s.data());
+  argv.push_back(nullptr);
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(1);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+struct Bench {
+  using Client = wrc::bus::RequestClient<wrc::contact_query_t, wrc::contact_reply_t>;
+  std::unique_ptr<lcm::LCM> lcm;
+  std::unique_ptr<BareClient<wrc::ping_request_t, wrc::ping_reply_t>> bare_ping;
+  std::unique_ptr<BareClient<wrc::contact_query_t, wrc::contact_reply_t>> bare_contact;
+  std::unique_ptr<Client> service;
+  std::unique_ptr<const wrc::ContactModel> model;
+  wrc::contact_query_t query = bench_query();
+  std::vector<pid_t> children;
+
+  Bench() {
+    lcm = std::make_unique<lcm::LCM>("");
+    if (!lcm->good()) throw std::runtime_error("LCM not usable (run through clients/lib/netns.sh)");
+    const auto contactd = wrc::bus::find_service_executable("wrc-contactd", wrc::bus::build_dir());
+    if (!contactd) throw std::runtime_error("wrc-contactd is not built");
+    children.push_back(spawn({"/proc/self/exe", "--bare-echo"}));
+    children.push_back(spawn({*contactd, "--model", "onepoint", "--instance", "bench"}));
+    auto geometry = std::make_shared<const wrc::WheelsetGeometry>(
+        wrc::make_profile("S1002", wrc::ProfileSide::kWheel), wrc::make_profile("UIC60", wrc::ProfileSide::kRail));
+    model = wrc::make_contact_model("onepoint", geometry, wrc::ContactModelOptions{});
+    wrc::ping_request_t ping{};
+    ping.reply_channel = kBarePong;
+    bare_ping = std::make_unique<BareClient<wrc::ping_request_t, wrc::ping_reply_t>>(*lcm, kBarePing, kBarePong, ping);
+    wrc::contact_query_t bare_query = query;
+    bare_query.reply_channel = kBareReply;
+    bare_contact = std::make_unique<BareClient<wrc::contact_query_t, wrc::contact_reply_t>>(*lcm, kBareQuery,
+                                                                                             kBareReply, bare_query);
+    const wrc::bus::ChannelNames names;
+    const std::string id = wrc::bus::make_client_id("bench");
+    service = std::make_unique<Client>(*lcm, names.name(wrc::bus::channel::kContactQuery, "onepoint"),
+                                       names.name(wrc::bus::channel::kContactReply, id), id);
+    const double deadline = wrc::bus::monotonic_seconds() + 60.0;
+    bool bare_ok = false, service_ok = false;
+    while ((!bare_ok || !service_ok) && wrc::bus::monotonic_seconds() < deadline) {
+      if (!bare_ok) bare_ok = bare_ping->round_trip() && bare_contact->round_trip();
+      if (!service_ok) {
+        auto r = service->call(query, {0.2, 0});
+        if (r && r.reply->status != wrc::contact_reply_t::OK) throw std::runtime_error("service: " + r.reply->message);
+        service_ok = static_cast<bool>(r);
+      }
+    }
+    if (!bare_ok || !service_ok) throw std::runtime_error("echo or contact service does not answer");
+  }
+  ~Bench() {
+    for (pid_t pid : children) {
+      ::kill(pid, SIGTERM);
+      ::waitpid(pid, nullptr, 0);
+    }
+  }
+};
+
+Bench& bench() {
+  static Bench instance;
+  return instance;
+}
+
+double percentile(std::vector<double> v, double p) {
+  std::sort(v.begin(), v.end());
+  const std::size_t i = std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5));
+  return v[i];
+}
+
+bool service_round_trip() {
+  auto r = bench().service->call(bench().query, {1.0, 0});
+  return r && r.reply->status == wrc::contact_reply_t::OK && r.reply->results[0].num_patches >= 2;
+}
+
+void InProcess(benchmark::State& state) {
+  const wrc::ContactQuery q = library_query(bench().query);
+  for (auto _ : state) benchmark::DoNotOptimize(bench().model->evaluate(q));
+}
+
+void Interleaved(benchmark::State& state) {
+  std::vector<double> ping_us, contact_us, service_us, local_us;
+  const wrc::ContactQuery q = library_query(bench().query);
+  auto time = [](std::vector<double>& into, auto&& f) {
+    const double t0 = wrc::bus::monotonic_seconds();
+    const bool ok = f();
+    into.push_back((wrc::bus::monotonic_seconds() - t0) * 1e6);
+    return ok;
+  };
+  for (auto _ : state) {
+    if (!time(ping_us, [] { return bench().bare_ping->round_trip(); })) state.SkipWithError("bare ping timed out");
+    if (!time(contact_us, [] { return bench().bare_contact->round_trip(); })) state.SkipWithError("bare contact timed out");
+    if (!time(service_us, [] { return service_round_trip(); })) state.SkipWithError("service round trip failed");
+    time(local_us, [&] {
+      benchmark::DoNotOptimize(bench().model->evaluate(q));
+      return true;
+    });
+  }
+  const double ping = percentile(ping_us, 0.5), contact = percentile(contact_us, 0.5);
+  const double service = percentile(service_us, 0.5), local = percentile(local_us, 0.5);
+  state.counters["bare_ping_median_us"] = ping;
+  state.counters["bare_contact_median_us"] = contact;
+  state.counters["service_median_us"] = service;
+  state.counters["in_process_median_us"] = local;
+  state.counters["service_p99_us"] = percentile(service_us, 0.99);
+  state.counters["bare_contact_p99_us"] = percentile(contact_us, 0.99);
+  state.counters["budget_ping_us"] = 1.1 * ping + local;
+  state.counters["budget_contact_us"] = 1.1 * contact + local;
+  state.counters["goal_ping"] = service <= 1.1 * ping + local ? 1 : 0;
+  state.counters["goal_contact"] = service <= 1.1 * contact + local ? 1 : 0;
+}
+
+BENCHMARK(InProcess)->Unit(benchmark::kMicrosecond);
+BENCHMARK(Interleaved)->Iterations(5000)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--bare-echo") return run_bare_echo();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  try {
+    bench();
+  } catch (const std::exception& e) {
+    std::cerr << "bench_contact_service: " << e.what() << "\n";
+    return 1;
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -5,6 +5,8 @@
 //                  configuration in, reply with two patches out; no checks, no computation)
 //   service      : wrc::bus::RequestClient -> wrc-contactd --model onepoint, one configuration,
 //                  both wheels, FASTSIM 20x20
+//   bare_compute : the bare echo that also evaluates the query with the model (no bus layer, no
+//                  adapter): the floor of a service round trip including the wait for the computation
 //   in_process   : ContactModel::evaluate of the same query in this process
 // Goal (issue 4): median(service) <= median(bare) + median(in_process) + 0.1 median(bare), checked
 // against both bare floors (goal_ping, goal_contact = 1 when met). Run on a private bus:
@@ -43,6 +45,8 @@ constexpr const char* kBarePing = "BENCH_BARE_PING";
 constexpr const char* kBarePong = "BENCH_BARE_PONG";
 constexpr const char* kBareQuery = "BENCH_BARE_CONTACT_QUERY";
 constexpr const char* kBareReply = "BENCH_BARE_CONTACT_REPLY";
+constexpr const char* kComputeQuery = "BENCH_BARE_COMPUTE_QUERY";
+constexpr const char* kComputeReply = "BENCH_BARE_COMPUTE_REPLY";
 
 wrc::contact_query_t bench_query() {
   wrc::contact_query_t q{};
@@ -84,9 +88,21 @@ wrc::ContactQuery library_query(const wrc::contact_query_t& q) {
 }
 
 // ---- the bare echo process: plain LCM, typed handlers, no checks, no computation ----------------
+std::unique_ptr<const wrc::ContactModel> make_onepoint() {
+  auto geometry = std::make_shared<const wrc::WheelsetGeometry>(
+      wrc::make_profile("S1002", wrc::ProfileSide::kWheel), wrc::make_profile("UIC60", wrc::ProfileSide::kRail));
+  return wrc::make_contact_model("onepoint", geometry, wrc::ContactModelOptions{});
+}
+
 struct BareEcho {
   lcm::LCM& lcm;
   wrc::contact_reply_t canned{};
+  std::unique_ptr<const wrc::ContactModel> model;
+  void on_compute(const lcm::ReceiveBuffer*, const std::string&, const wrc::contact_query_t* req) {
+    benchmark::DoNotOptimize(model->evaluate(library_query(*req)));
+    canned.request_id = req->request_id;
+    lcm.publish(kComputeReply, &canned);
+  }
   void on_ping(const lcm::ReceiveBuffer*, const std::string&, const wrc::ping_request_t* req) {
     wrc::ping_reply_t reply{};
     reply.request_id = req->request_id;
@@ -102,7 +118,7 @@ int run_bare_echo() {
   wrc::bus::ShutdownSignal::install();
   lcm::LCM lcm("");
   if (!lcm.good()) return 1;
-  BareEcho echo{lcm};
+  BareEcho echo{lcm, {}, nullptr};
   echo.canned.model = "onepoint";
   echo.canned.instance = "bench";
   echo.canned.num_configurations = 1;
@@ -111,6 +127,8 @@ int run_bare_echo() {
   echo.canned.results[0].patches.resize(2);
   lcm.subscribe(kBarePing, &BareEcho::on_ping, &echo);
   lcm.subscribe(kBareQuery, &BareEcho::on_query, &echo);
+  echo.model = make_onepoint();
+  lcm.subscribe(kComputeQuery, &BareEcho::on_compute, &echo);
   while (!wrc::bus::ShutdownSignal::requested()) lcm.handleTimeout(100);
   return 0;
 }
@@ -165,6 +183,7 @@ struct Bench {
   std::unique_ptr<lcm::LCM> lcm;
   std::unique_ptr<BareClient<wrc::ping_request_t, wrc::ping_reply_t>> bare_ping;
   std::unique_ptr<BareClient<wrc::contact_query_t, wrc::contact_reply_t>> bare_contact;
+  std::unique_ptr<BareClient<wrc::contact_query_t, wrc::contact_reply_t>> bare_compute;
   std::unique_ptr<Client> service;
   std::unique_ptr<const wrc::ContactModel> model;
   wrc::contact_query_t query = bench_query();
@@ -177,9 +196,7 @@ struct Bench {
     if (!contactd) throw std::runtime_error("wrc-contactd is not built");
     children.push_back(spawn({"/proc/self/exe", "--bare-echo"}));
     children.push_back(spawn({*contactd, "--model", "onepoint", "--instance", "bench"}));
-    auto geometry = std::make_shared<const wrc::WheelsetGeometry>(
-        wrc::make_profile("S1002", wrc::ProfileSide::kWheel), wrc::make_profile("UIC60", wrc::ProfileSide::kRail));
-    model = wrc::make_contact_model("onepoint", geometry, wrc::ContactModelOptions{});
+    model = make_onepoint();
     wrc::ping_request_t ping{};
     ping.reply_channel = kBarePong;
     bare_ping = std::make_unique<BareClient<wrc::ping_request_t, wrc::ping_reply_t>>(*lcm, kBarePing, kBarePong, ping);
@@ -187,6 +204,8 @@ struct Bench {
     bare_query.reply_channel = kBareReply;
     bare_contact = std::make_unique<BareClient<wrc::contact_query_t, wrc::contact_reply_t>>(*lcm, kBareQuery,
                                                                                              kBareReply, bare_query);
+    bare_compute = std::make_unique<BareClient<wrc::contact_query_t, wrc::contact_reply_t>>(*lcm, kComputeQuery,
+                                                                                             kComputeReply, bare_query);
     const wrc::bus::ChannelNames names;
     const std::string id = wrc::bus::make_client_id("bench");
     service = std::make_unique<Client>(*lcm, names.name(wrc::bus::channel::kContactQuery, "onepoint"),
@@ -194,7 +213,7 @@ struct Bench {
     const double deadline = wrc::bus::monotonic_seconds() + 60.0;
     bool bare_ok = false, service_ok = false;
     while ((!bare_ok || !service_ok) && wrc::bus::monotonic_seconds() < deadline) {
-      if (!bare_ok) bare_ok = bare_ping->round_trip() && bare_contact->round_trip();
+      if (!bare_ok) bare_ok = bare_ping->round_trip() && bare_contact->round_trip() && bare_compute->round_trip();
       if (!service_ok) {
         auto r = service->call(query, {0.2, 0});
         if (r && r.reply->status != wrc::contact_reply_t::OK) throw std::runtime_error("service: " + r.reply->message);
@@ -233,7 +252,7 @@ void InProcess(benchmark::State& state) {
 }
 
 void Interleaved(benchmark::State& state) {
-  std::vector<double> ping_us, contact_us, service_us, local_us;
+  std::vector<double> ping_us, contact_us, compute_us, service_us, local_us;
   const wrc::ContactQuery q = library_query(bench().query);
   auto time = [](std::vector<double>& into, auto&& f) {
     const double t0 = wrc::bus::monotonic_seconds();
@@ -244,6 +263,7 @@ void Interleaved(benchmark::State& state) {
   for (auto _ : state) {
     if (!time(ping_us, [] { return bench().bare_ping->round_trip(); })) state.SkipWithError("bare ping timed out");
     if (!time(contact_us, [] { return bench().bare_contact->round_trip(); })) state.SkipWithError("bare contact timed out");
+    if (!time(compute_us, [] { return bench().bare_compute->round_trip(); })) state.SkipWithError("bare compute timed out");
     if (!time(service_us, [] { return service_round_trip(); })) state.SkipWithError("service round trip failed");
     time(local_us, [&] {
       benchmark::DoNotOptimize(bench().model->evaluate(q));
@@ -256,6 +276,7 @@ void Interleaved(benchmark::State& state) {
   state.counters["bare_contact_median_us"] = contact;
   state.counters["service_median_us"] = service;
   state.counters["in_process_median_us"] = local;
+  state.counters["bare_compute_median_us"] = percentile(compute_us, 0.5);
   state.counters["service_p99_us"] = percentile(service_us, 0.99);
   state.counters["bare_contact_p99_us"] = percentile(contact_us, 0.99);
   state.counters["budget_ping_us"] = 1.1 * ping + local;

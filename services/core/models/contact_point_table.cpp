@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/models/contact_model.hpp"
+#include "core/models/flange_climb.hpp"
 #include "core/models/one_point_model.hpp"
 
 namespace wrc {
@@ -55,6 +56,7 @@ ContactPointTable::ContactPointTable(const WheelsetGeometry& geometry, const Int
     : grid_(grid) {
   grid_.validate();
   const double z_ref = geometry.track().nominal_radius;
+  const double steepest = steepest_flange_point(geometry.wheel_profile());
   const size_t size = static_cast<size_t>(kFields) * grid_.roll_points * grid_.yaw_points * grid_.y_points;
   const double h_y = 2.0 * grid_.y_max / (grid_.y_points - 1);
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
@@ -72,7 +74,7 @@ ContactPointTable::ContactPointTable(const WheelsetGeometry& geometry, const Int
           pose.yaw = yaw_node(k);
           ContactPoint p;
           try {
-            p = require_common_point(geometry, side, pose, search);
+            p = require_common_point(geometry, side, pose, search, steepest);
           } catch (const ContactConfigurationError& e) {
             throw ContactConfigurationError(std::string("interp table node: ") + e.what() +
                                             " (reduce the table's y_max, roll_max or yaw_max)");

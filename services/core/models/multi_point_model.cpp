@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
+#include "core/models/flange_climb.hpp"
 #include "core/models/load_division.hpp"
 #include "core/models/one_point_model.hpp"
 #include "core/models/patch_builder.hpp"
@@ -16,6 +17,7 @@ MultiPointModel::MultiPointModel(std::shared_ptr<const WheelsetGeometry> geometr
     : geometry_(std::move(geometry)), options_(options) {
   if (!geometry_) throw std::invalid_argument("MultiPointModel: no geometry");
   options_.validate();
+  steepest_flange_ = steepest_flange_point(geometry_->wheel_profile());
 }
 
 ContactResult MultiPointModel::evaluate(const ContactQuery& query) const {
@@ -36,6 +38,10 @@ ContactResult MultiPointModel::evaluate(const ContactQuery& query) const {
                                       "climbed over) at " +
                                       describe_pose(query.pose));
     }
+    size_t closest = 0;
+    for (size_t k = 1; k < minima.size(); ++k)
+      if (minima[k].distance < minima[closest].distance) closest = k;
+    check_flange_not_climbed(minima[closest], steepest_flange_, query.pose);
     if (query.formulation == ContactFormulation::kElastic) {
       for (const ContactPoint& p : minima) {
         const double delta = normal_penetration(p);
@@ -47,9 +53,6 @@ ContactResult MultiPointModel::evaluate(const ContactQuery& query) const {
     if (!(load > 0.0)) continue;
     // The closest minimum alone carrying the load bounds the approach: minima farther away than
     // that cannot be reached and need no Hertz shape (their curvatures may not even be Hertzian).
-    size_t closest = 0;
-    for (size_t k = 1; k < minima.size(); ++k)
-      if (minima[k].distance < minima[closest].distance) closest = k;
     const PatchShape closest_shape = contact_shape(minima[closest], floor);
     const double closest_cos = std::cos(minima[closest].contact_angle);
     const double reach = std::pow(load / hertz_stiffness(closest_shape.shape, context.contact_modulus), 2.0 / 3.0) /

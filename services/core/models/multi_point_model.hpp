@@ -19,6 +19,7 @@ namespace wrc {
 ///    the rigid wheel, delta_k = (d - (distance_k - distance_min)) cos(angle_k), chosen so that
 ///    the normal forces sum to the load (the one-point model's meaning of the load). Minima not
 ///    reached (delta_k <= 0) get no patch; penetration is reported as 0 (kRigid convention).
+/// A wheel without a minimum, or whose smallest minimum shows a climbed flange (flange_climb.hpp), throws ContactConfigurationError as in OnePointModel.
 /// With a single minimum, or a single reached minimum, the result is identical to OnePointModel's.
 /// Patches of one wheel are ordered by s (flange first), left wheel first.
 class MultiPointModel final : public ContactModel {
@@ -34,6 +35,7 @@ class MultiPointModel final : public ContactModel {
  private:
   std::shared_ptr<const WheelsetGeometry> geometry_;
   ContactModelOptions options_;
+  double steepest_flange_;  // [m]
   FastsimCache fastsim_;
 };
 

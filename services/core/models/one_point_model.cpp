@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
+#include "core/models/flange_climb.hpp"
 #include "core/models/patch_builder.hpp"
 #include "core/models/query_validation.hpp"
 #include "core/models/wheelset_motion.hpp"
@@ -18,7 +19,7 @@ std::string describe_pose(const WheelsetPose& pose) {
 }
 
 ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose,
-                                  const PotentialPointSearch& search) {
+                                  const PotentialPointSearch& search, double steepest_flange) {
   std::optional<ContactPoint> point = geometry.common_point(side, pose, search);
   if (!point) {
     throw ContactConfigurationError(std::string("the ") + side_name(side) +
@@ -26,6 +27,7 @@ ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide si
                                     "climbed over) at " +
                                     describe_pose(pose));
   }
+  check_flange_not_climbed(*point, steepest_flange, pose);
   return *point;
 }
 
@@ -33,6 +35,7 @@ OnePointModel::OnePointModel(std::shared_ptr<const WheelsetGeometry> geometry, C
     : geometry_(std::move(geometry)), options_(options) {
   if (!geometry_) throw std::invalid_argument("OnePointModel: no geometry");
   options_.validate();
+  steepest_flange_ = steepest_flange_point(geometry_->wheel_profile());
 }
 
 ContactResult OnePointModel::evaluate(const ContactQuery& query) const {
@@ -42,7 +45,7 @@ ContactResult OnePointModel::evaluate(const ContactQuery& query) const {
                              contact_modulus(query.material.shear_modulus, query.material.poisson_ratio)};
   ContactResult result;
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
-    const ContactPoint point = require_common_point(*geometry_, side, query.pose, options_.search);
+    const ContactPoint point = require_common_point(*geometry_, side, query.pose, options_.search, steepest_flange_);
     std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
     if (patch) result.patches.push_back(std::move(*patch));
   }

@@ -18,8 +18,9 @@ namespace wrc {
 ///  - kElastic: penetration delta = -distance cos(contact_angle) (normal_penetration()), the
 ///    vertical overlap at the query's z projected on the normal; N = C_H delta^{3/2} when
 ///    delta > 0, otherwise the wheel gets no patch (lifted).
-/// A wheel without any local minimum of the distance over its rail (shifted off the rail, flange
-/// climbed over) throws ContactConfigurationError.
+/// A wheel without any local minimum of the distance over its rail (shifted off the rail), or whose
+/// flange has climbed onto the rail (flange_climb.hpp), throws
+/// ContactConfigurationError.
 class OnePointModel final : public ContactModel {
  public:
   /// @throws std::invalid_argument for a null geometry or invalid options.
@@ -33,13 +34,15 @@ class OnePointModel final : public ContactModel {
  private:
   std::shared_ptr<const WheelsetGeometry> geometry_;
   ContactModelOptions options_;
+  double steepest_flange_;  // [m]
   FastsimCache fastsim_;
 };
 
 /// The common point of one wheel at pose, or ContactConfigurationError naming the wheel and the
-/// pose when the wheel has no local minimum of the distance over its rail.
+/// pose when the wheel has no local minimum of the distance over its rail or its flange has climbed
+/// onto the rail (check_flange_not_climbed() with the steepest flange point steepest_flange [m]).
 ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose,
-                                  const PotentialPointSearch& search);
+                                  const PotentialPointSearch& search, double steepest_flange);
 
 /// "y = ... m, roll = ... rad, yaw = ... rad" for error messages.
 std::string describe_pose(const WheelsetPose& pose);

@@ -1,0 +1,204 @@
+// Contact models at their boundary: malformed queries throw std::invalid_argument naming the field
+// and the value (for every model), impossible configurations throw ContactConfigurationError, the
+// factory knows its names, and the conformal-contact fallback for B <= 0 works as documented.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "core/contact/hertz.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "core/models/patch_builder.hpp"
+#include "core/profile/profile_factory.hpp"
+
+namespace wrc {
+namespace {
+
+std::shared_ptr<const WheelsetGeometry> s1002_uic60() {
+  return std::make_shared<const WheelsetGeometry>(make_profile("S1002", ProfileSide::kWheel),
+                                                  make_profile("UIC60", ProfileSide::kRail));
+}
+
+ContactModelOptions small_table() {
+  ContactModelOptions o;
+  o.interp.y_points = 5;
+  o.interp.roll_points = 2;
+  o.interp.yaw_points = 2;
+  return o;
+}
+
+ContactQuery good_query() {
+  ContactQuery q;
+  q.pose.z = 0.46;
+  q.spin_rate = 30.0 / 0.46;
+  q.normal_load = {80e3, 80e3};
+  return q;
+}
+
+// Expects std::invalid_argument whose message contains every one of the given fragments.
+void expect_invalid(const ContactModel& model, const ContactQuery& q, const std::string& field,
+                    const std::string& value) {
+  try {
+    model.evaluate(q);
+    ADD_FAILURE() << model.name() << ": no exception for " << field;
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(field), std::string::npos) << what;
+    EXPECT_NE(what.find(value), std::string::npos) << what;
+  }
+}
+
+// Every malformed field is rejected before any computation, by every model, with the field's name
+// and its value in the message.
+TEST(ModelsValidation, BadQueriesThrowNamingTheField) {
+  auto geometry = s1002_uic60();
+  for (const std::string& name : contact_model_names()) {
+    const auto model = make_contact_model(name, geometry, small_table());
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    struct Case {
+      std::function<void(ContactQuery&)> spoil;
+      std::string field, value;
+    };
+    const Case cases[] = {
+        {[&](ContactQuery& q) { q.pose.y = nan; }, "pose.y", "nan"},
+        {[&](ContactQuery& q) { q.pose.roll = nan; }, "pose.roll", "nan"},
+        {[&](ContactQuery& q) { q.pose.z = std::numeric_limits<double>::infinity(); }, "pose.z", "inf"},
+        {[&](ContactQuery& q) { q.yaw_dot = nan; }, "yaw_dot", "nan"},
+        {[&](ContactQuery& q) { q.spin_rate = nan; }, "spin_rate", "nan"},
+        {[](ContactQuery& q) { q.speed = 0.0; }, "speed", "0"},
+        {[](ContactQuery& q) { q.speed = -5.0; }, "speed", "-5"},
+        {[](ContactQuery& q) { q.normal_load[1] = -10.0; }, "normal_load[1]", "-10"},
+        {[&](ContactQuery& q) { q.normal_load[0] = nan; }, "normal_load[0]", "nan"},
+        {[](ContactQuery& q) { q.material.shear_modulus = 0.0; }, "shear_modulus", "0"},
+        {[](ContactQuery& q) { q.material.poisson_ratio = 0.5; }, "poisson_ratio", "0.5"},
+        {[](ContactQuery& q) { q.material.poisson_ratio = 0.0; }, "poisson_ratio", "0"},
+        {[](ContactQuery& q) { q.material.friction = -0.1; }, "friction", "-0.1"},
+        {[](ContactQuery& q) { q.fastsim_elements = 1; }, "fastsim_elements", "1"},
+        {[](ContactQuery& q) { q.fastsim_strips = 401; }, "fastsim_strips", "401"},
+    };
+    for (const Case& c : cases) {
+      ContactQuery q = good_query();
+      c.spoil(q);
+      expect_invalid(*model, q, c.field, c.value);
+    }
+    // The unspoilt query works, also with a non-default FASTSIM grid (cached solver).
+    EXPECT_EQ(model->evaluate(good_query()).patches.size() >= 2, true) << name;
+    ContactQuery fine = good_query();
+    fine.fastsim_elements = 40;
+    fine.fastsim_strips = 10;
+    EXPECT_GE(model->evaluate(fine).patches.size(), 2u) << name;
+  }
+}
+
+// A wheelset shifted 50 mm sideways has a wheel off its rail: ContactConfigurationError naming the
+// wheel and y (interp: the configuration lies outside its table, also named), never a result.
+TEST(ModelsValidation, WheelOffTheRailIsAConfigurationError) {
+  auto geometry = s1002_uic60();
+  for (const std::string& name : contact_model_names()) {
+    const auto model = make_contact_model(name, geometry, small_table());
+    for (ContactFormulation formulation : {ContactFormulation::kRigid, ContactFormulation::kElastic}) {
+      ContactQuery q = good_query();
+      q.pose.y = 0.05;
+      q.formulation = formulation;
+      try {
+        model->evaluate(q);
+        ADD_FAILURE() << name << ": no exception at y = 0.05 m";
+      } catch (const ContactConfigurationError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("0.05"), std::string::npos) << what;
+        if (name != "interp") {
+          EXPECT_NE(what.find("left wheel"), std::string::npos) << what;
+        }
+      }
+    }
+  }
+}
+
+// The factory builds the three models under their names, says that "spline" is not available yet
+// and lists the known names for anything else.
+TEST(ModelsValidation, FactoryNames) {
+  auto geometry = s1002_uic60();
+  for (const char* name : {"onepoint", "interp", "multipoint"}) {
+    EXPECT_EQ(make_contact_model(name, geometry, small_table())->name(), name);
+  }
+  try {
+    make_contact_model("spline", geometry);
+    ADD_FAILURE() << "spline built";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("not available yet"), std::string::npos) << e.what();
+  }
+  try {
+    make_contact_model("twopoint", geometry);
+    ADD_FAILURE() << "twopoint built";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("twopoint"), std::string::npos) << what;
+    EXPECT_NE(what.find("onepoint, interp, multipoint"), std::string::npos) << what;
+  }
+  EXPECT_THROW(make_contact_model("onepoint", nullptr), std::invalid_argument);
+  ContactModelOptions bad;
+  bad.interp.y_points = 1;
+  EXPECT_THROW(make_contact_model("interp", geometry, bad), std::invalid_argument);
+  bad = ContactModelOptions{};
+  bad.lateral_curvature_floor = -1;
+  EXPECT_THROW(make_contact_model("onepoint", geometry, bad), std::invalid_argument);
+}
+
+// Conformal contact (concave wheel profile flatter than the rail: B <= 0) has no Hertz ellipse.
+// With the default floor, B is raised to 0.01 A and the patch is flagged; with the floor disabled
+// the point is a ContactConfigurationError naming B.
+TEST(ModelsValidation, ConformalCurvatureFloorAndError) {
+  ContactPoint p;
+  p.side = WheelSide::kLeft;
+  p.s = -0.03;
+  p.wheel_curvature_rolling = 1.0 / 0.47;
+  p.wheel_curvature_lateral = -1.0 / 0.012;  // flange root fillet, concave
+  p.rail_curvature_lateral = 1.0 / 0.013;    // gauge corner R13, convex but flatter
+  ASSERT_LE(p.relative_curvature_lateral(), 0.0);
+  const PatchShape floored = contact_shape(p, 0.01);
+  EXPECT_TRUE(floored.floored);
+  EXPECT_DOUBLE_EQ(floored.shape.A, p.relative_curvature_rolling());
+  EXPECT_DOUBLE_EQ(floored.shape.B, 0.01 * p.relative_curvature_rolling());
+  EXPECT_LT(floored.shape.axis_ratio, 1.0 / 10);  // wide patch, a/b ~ 1/16
+  EXPECT_GT(floored.shape.axis_ratio, 1.0 / 50);
+  try {
+    contact_shape(p, 0.0);
+    ADD_FAILURE() << "no exception with the floor disabled";
+  } catch (const ContactConfigurationError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("B = "), std::string::npos) << what;
+    EXPECT_NE(what.find("left wheel"), std::string::npos) << what;
+  }
+  // A regular point is left alone.
+  p.rail_curvature_lateral = 1.0 / 0.3;
+  p.wheel_curvature_lateral = 0.0;
+  const PatchShape regular = contact_shape(p, 0.01);
+  EXPECT_FALSE(regular.floored);
+  EXPECT_DOUBLE_EQ(regular.shape.B, p.relative_curvature_lateral());
+}
+
+// The floor acts inside the models: a floor of 100 A lies above every S1002/UIC60 tread B, so
+// every patch is flagged and its ellipse is the Hertz ellipse of (A, 100 A).
+TEST(ModelsValidation, FloorIsAppliedInTheModels) {
+  ContactModelOptions options = small_table();
+  options.lateral_curvature_floor = 100.0;
+  auto geometry = s1002_uic60();
+  for (const std::string& name : contact_model_names()) {
+    const ContactResult res = make_contact_model(name, geometry, options)->evaluate(good_query());
+    ASSERT_FALSE(res.patches.empty());
+    for (const ContactPatch& p : res.patches) {
+      EXPECT_TRUE(p.lateral_curvature_floored) << name;
+      const double A = p.point.relative_curvature_rolling();
+      const HertzContact h = hertz_from_force(A, 100 * A, contact_modulus(8.2e10, 0.28), p.normal_force);
+      EXPECT_NEAR(p.a, h.a, 1e-12) << name;
+      EXPECT_NEAR(p.b, h.b, 1e-12) << name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace wrc

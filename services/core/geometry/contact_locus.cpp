@@ -7,8 +7,8 @@
 namespace wrc {
 
 ContactLocus::ContactLocus(const Profile& wheel, const PlacedRail& rail, const TrackParameters& track,
-                           WheelSide side, const WheelsetPose& pose)
-    : wheel_(wheel), rail_(rail), side_(side), pose_(pose), sigma_(side_sign(side)),
+                           WheelSide side, const WheelsetPose& pose, const SlopeEnvelope* wheel_envelope)
+    : wheel_(wheel), rail_(rail), wheel_envelope_(wheel_envelope), side_(side), pose_(pose), sigma_(side_sign(side)),
       taping_(track.taping_half_distance()), r0_(track.nominal_radius) {
   const double cpsi = std::cos(pose.yaw), spsi = std::sin(pose.yaw);
   const double cphi = std::cos(pose.roll), sphi = std::sin(pose.roll);
@@ -63,24 +63,65 @@ LocusPoint ContactLocus::at(double s) const {
   return p;
 }
 
+double ContactLocus::distance_curvature_bound(double s0, double s1) const {
+  if (!wheel_envelope_ || wheel_envelope_->empty()) return 0.0;
+  // distance'' = W_z'' - z_r''(W_y')^2 - z_r' W_y'' along C. With roll phi and yaw psi:
+  // |W_z''| <= |F''| (1 + ...) , |W_y'| <= 1 + |F'| |sin phi|, |W_y''| <= |F''| |sin phi| + yaw terms;
+  // theta' ~ sin(psi) F'' adds r0 theta'^2 and |F'| theta' to the curvature of C.
+  const double rpp = wheel_envelope_->max_second(s0, s1), rp = wheel_envelope_->max_slope(s0, s1);
+  const double y0 = pose_.y + sigma_ * (taping_ + s0), y1 = pose_.y + sigma_ * (taping_ + s1);
+  const double pad = 1e-3 + r0_ * (std::fabs(std::sin(pose_.roll)) + std::fabs(std::sin(pose_.yaw)));
+  const double ya = std::min(y0, y1) - pad, yb = std::max(y0, y1) + pad;
+  const double zpp = rail_.envelope().max_second(ya, yb), zp = rail_.envelope().max_slope(ya, yb);
+  const double sr = std::fabs(std::sin(pose_.roll)), sy = std::fabs(std::sin(pose_.yaw));
+  const double theta_rate = sy * rpp * 1.1;
+  const double wy = 1 + rp * sr + r0_ * theta_rate * sy;
+  return rpp * (1 + zp * sr) + zpp * wy * wy + 2 * (r0_ * theta_rate * theta_rate + rp * theta_rate) + 1.0;
+}
+
+double ContactLocus::lateral_at(double s) const {
+  s = std::clamp(s, wheel_.lower(), wheel_.upper());
+  const ProfileSample f = wheel_.evaluate(s);
+  const double radius = r0_ + f.height;
+  const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
+  const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
+  const double st = q * cos_beta_ - cq * sin_beta_, ct = cq * cos_beta_ + q * sin_beta_;
+  return rotation_(1, 0) * (-radius * st) + rotation_(1, 1) * sigma_ * (taping_ + s) + rotation_(1, 2) * (-radius * ct) +
+         pose_.y;
+}
+
 double ContactLocus::s_at_lateral(double y) const {
   // The locus point's lateral position is about y + sigma (taping + s): start there, then secant.
   double s0 = sigma_ * (y - pose_.y) - taping_;
-  double f0 = at(s0).wheel.y() - y;
-  double s1 = s0 - 1e-4, f1 = at(s1).wheel.y() - y;
+  double f0 = lateral_at(s0) - y;
+  double s1 = s0 - 1e-4, f1 = lateral_at(s1) - y;
   for (int i = 0; i < 8 && std::fabs(f1) > 1e-12 && f1 != f0; ++i) {
     const double s2 = s1 - f1 * (s1 - s0) / (f1 - f0);
     s0 = s1;
     f0 = f1;
     s1 = s2;
-    f1 = at(s1).wheel.y() - y;
+    f1 = lateral_at(s1) - y;
   }
   return s1;
 }
 
 double ContactLocus::distance_slope(double s) const {
-  const LocusPoint p = at(s);
-  return p.over_rail ? p.distance_slope : std::numeric_limits<double>::quiet_NaN();
+  // The lean path of at(): only the lateral position and the y, z components of the tangent.
+  s = std::clamp(s, wheel_.lower(), wheel_.upper());
+  const ProfileSample f = wheel_.evaluate(s);
+  const double radius = r0_ + f.height;
+  const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
+  const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
+  const double st = q * cos_beta_ - cq * sin_beta_, ct = cq * cos_beta_ + q * sin_beta_;
+  const double dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
+  const double bx = -radius * st, by = sigma_ * (taping_ + s), bz = -radius * ct;
+  const double dx = -f.slope * st - radius * ct * dtheta, dy = sigma_, dz = -f.slope * ct + radius * st * dtheta;
+  const double wy = rotation_(1, 0) * bx + rotation_(1, 1) * by + rotation_(1, 2) * bz + pose_.y;
+  const double ty = rotation_(1, 0) * dx + rotation_(1, 1) * dy + rotation_(1, 2) * dz;
+  const double tz = rotation_(2, 0) * dx + rotation_(2, 1) * dy + rotation_(2, 2) * dz;
+  double rail_slope;
+  if (!rail_.slope_at(wy, rail_slope)) return std::numeric_limits<double>::quiet_NaN();
+  return tz - rail_slope * ty;
 }
 
 Eigen::Vector3d ContactLocus::wheel_normal(const LocusPoint& p, double slope) const {

@@ -31,15 +31,23 @@ struct LocusPoint {
 /// rail-profile evaluation plus a few trigonometric functions) and allocation-free.
 class ContactLocus {
  public:
-  /// wheel and rail must outlive the locus.
+  /// wheel, rail and wheel_envelope (bounds of |F'|, |F''| of the wheel profile; optional) must
+  /// outlive the locus.
   ContactLocus(const Profile& wheel, const PlacedRail& rail, const TrackParameters& track,
-               WheelSide side, const WheelsetPose& pose);
+               WheelSide side, const WheelsetPose& pose, const SlopeEnvelope* wheel_envelope = nullptr);
+
+  /// An upper bound of |d2(distance)/ds2| over [s0, s1] [1/m], from the profile envelopes; 0 when
+  /// no wheel envelope was given (callers then sample uniformly).
+  double distance_curvature_bound(double s0, double s1) const;
 
   /// The point of C at wheel profile coordinate s [m] (clamped to the wheel profile's domain).
   LocusPoint at(double s) const;
 
   /// d(distance)/ds at s [-]; NaN when the point is not over the rail.
   double distance_slope(double s) const;
+
+  /// Track-frame lateral position of the locus point at s [m].
+  double lateral_at(double s) const;
 
   /// The wheel profile coordinate s [m] whose locus point lies at track lateral position y [m]
   /// (secant iteration; used to map rail breakpoints onto the wheel).
@@ -66,6 +74,7 @@ class ContactLocus {
  private:
   const Profile& wheel_;
   const PlacedRail& rail_;
+  const SlopeEnvelope* wheel_envelope_;
   WheelSide side_;
   WheelsetPose pose_;
   double sigma_;

@@ -11,8 +11,9 @@ namespace wrc {
 namespace {
 constexpr int kScanSamples = 4000;
 constexpr int kTableNodes = 4096;
-// Smallest dy/du accepted as part of the rail surface graph z(y): track slopes up to about 50.
-constexpr double kMinLateralStretch = 0.02;
+// Steepest rail face (track frame) kept in the surface graph z(y): tan(80.5 deg). A wheel flange
+// (S1002: 70 deg, plus roll) never touches steeper faces; they would only make z(y) ill-conditioned.
+constexpr double kMaxRailSlope = 6.0;
 }  // namespace
 
 PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide side)
@@ -28,7 +29,12 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
   const double lo = rail_->lower(), hi = rail_->upper();
   auto z_raw = [&](double u) { return u * sin_ + rail_->evaluate(u).height * cos_; };
   auto dz_du = [&](double u) { return sin_ + rail_->evaluate(u).slope * cos_; };
-  auto dy_du = [&](double u) { return cos_ - rail_->evaluate(u).slope * sin_; };
+  // Part of the rail surface graph: y(u) increasing and |dz/dy| <= kMaxRailSlope.
+  auto on_surface = [&](double u) {
+    const double v1 = rail_->evaluate(u).slope;
+    const double dy = cos_ - v1 * sin_, dz = sin_ + v1 * cos_;
+    return dy > 0 && std::fabs(dz) <= kMaxRailSlope * dy;
+  };
 
   // Top of rail: the highest point of the inclined profile.
   int best = 0;
@@ -51,21 +57,24 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
 
   // The part of the profile over which y(u) increases: the rail surface seen from above.
   u_lower_ = u_top_;
-  while (u_lower_ - du >= lo && dy_du(u_lower_ - du) > kMinLateralStretch) u_lower_ -= du;
+  while (u_lower_ - du >= lo && on_surface(u_lower_ - du)) u_lower_ -= du;
   u_upper_ = u_top_;
-  while (u_upper_ + du <= hi && dy_du(u_upper_ + du) > kMinLateralStretch) u_upper_ += du;
+  while (u_upper_ + du <= hi && on_surface(u_upper_ + du)) u_upper_ += du;
 
-  // Gauge point: innermost point of the head between the top of rail and gauge_depth below it.
+  // Gauge point: innermost point of the head between the top of rail and gauge_depth below it,
+  // searched over the whole gauge side where y(u) still increases (steep faces included).
+  double u_gauge_side = u_top_;
+  while (u_gauge_side - du >= lo && cos_ - rail_->evaluate(u_gauge_side - du).slope * sin_ > 0) u_gauge_side -= du;
   auto depth = [&](double u) { return z_raw(u) + z0_ + track.gauge_depth; };
   double u_gauge = u_top_;
   if (track.gauge_depth > 0) {
-    if (depth(u_lower_) > 0) {
+    if (depth(u_gauge_side) > 0) {
       std::ostringstream msg;
       msg << "rail profile '" << rail_->name() << "' does not reach " << track.gauge_depth
           << " m below its top on the gauge side: no gauge point";
       throw std::invalid_argument(msg.str());
     }
-    u_gauge = brent_root(depth, u_lower_, u_top_, depth(u_lower_), depth(u_top_), 1e-13).x;
+    u_gauge = brent_root(depth, u_gauge_side, u_top_, depth(u_gauge_side), depth(u_top_), 1e-13).x;
   }
   double inner = u_gauge * cos_ - rail_->evaluate(u_gauge).height * sin_;
   for (int i = 0; i <= 200; ++i) {
@@ -111,6 +120,11 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
     y_lower_ = -table_y_.back();
     y_upper_ = -table_y_.front();
   }
+  envelope_ = SlopeEnvelope(y_lower_, y_upper_, 1e-3, 32, 1.25, [this](double y, double& d1, double& d2) {
+    const RailSample r = at(y);
+    d1 = r.slope;
+    d2 = r.d2;
+  });
 }
 
 void PlacedRail::profile_to_track(double u, double& y, double& z) const {
@@ -119,18 +133,35 @@ void PlacedRail::profile_to_track(double u, double& y, double& z) const {
   z = local_z(u, v);
 }
 
+double PlacedRail::hermite_u(double ly) const {
+  const double x = (ly - table_y0_) / table_dy_;
+  const int k = std::clamp(static_cast<int>(x), 0, kTableNodes - 2);
+  const double t = x - k, t2 = t * t, t3 = t2 * t;
+  const double u = (2 * t3 - 3 * t2 + 1) * table_u_[k] + (t3 - 2 * t2 + t) * table_du_[k] +
+                   (-2 * t3 + 3 * t2) * table_u_[k + 1] + (t3 - t2) * table_du_[k + 1];
+  return std::clamp(u, table_u_[k], table_u_[k + 1]);
+}
+
 double PlacedRail::solve_u(double ly) const {
   // Cubic Hermite interpolation of u(y) between table nodes (exact values and slopes there), then
   // one Newton step on y(u) = ly: the start is within ~1e-9 m even across a curvature jump, so
   // the step leaves an error of order 1e-18 m.
-  const double x = (ly - table_y0_) / table_dy_;
-  const int k = std::clamp(static_cast<int>(x), 0, kTableNodes - 2);
-  const double t = x - k, t2 = t * t, t3 = t2 * t;
-  double u = (2 * t3 - 3 * t2 + 1) * table_u_[k] + (t3 - 2 * t2 + t) * table_du_[k] + (-2 * t3 + 3 * t2) * table_u_[k + 1] +
-             (t3 - t2) * table_du_[k + 1];
-  u = std::clamp(u, table_u_[k], table_u_[k + 1]);
+  const double u = hermite_u(ly);
   const ProfileSample p = rail_->evaluate(u);
   return u - (local_y(u, p.height) - ly) / (cos_ - p.slope * sin_);
+}
+
+bool PlacedRail::slope_at(double y, double& slope) const {
+  const double ly = side_sign_ * y;
+  if (!(ly >= table_y_.front() && ly <= table_y_.back())) return false;
+  // One profile evaluation: the Newton correction du of solve_u moves the slope by v'' du, to
+  // first order; the neglected term is O(v''' du^2) ~ 1e-15 relative.
+  const double u = hermite_u(ly);
+  const ProfileSample p = rail_->evaluate(u);
+  const double du = -(local_y(u, p.height) - ly) / (cos_ - p.slope * sin_);
+  const double v1 = p.slope + p.curvature * du;
+  slope = side_sign_ * (sin_ + v1 * cos_) / (cos_ - v1 * sin_);
+  return true;
 }
 
 RailSample PlacedRail::at(double y) const {

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "core/geometry/slope_envelope.hpp"
 #include "core/geometry/track.hpp"
 #include "core/geometry/wheel_side.hpp"
 #include "core/profile/profile.hpp"
@@ -24,7 +25,8 @@ struct RailSample {
 /// that its highest point lies at z = 0 and so that its innermost point within gauge_depth below
 /// the top of rail lies at |y| = gauge / 2. The right rail is the mirror image (y -> -y).
 /// The rail surface is then the graph z(y) over the lateral range where the inclined profile is a
-/// function of y (an overhanging flank below that is cut off: a wheel never reaches it).
+/// function of y with |dz/dy| <= 6 (80.5 degrees): steeper faces and overhangs below them are cut
+/// off, since no wheel flange (S1002: 70 degrees) can touch them.
 class PlacedRail {
  public:
   /// Throws std::invalid_argument when the profile is not a rail, the track is invalid, or no
@@ -33,6 +35,10 @@ class PlacedRail {
 
   /// Surface height and derivatives below track lateral position y [m].
   RailSample at(double y) const;
+
+  /// Only the surface slope dz/dy below y [m] (one profile evaluation; what the potential-point
+  /// scan needs). Returns false outside the rail's lateral extent.
+  bool slope_at(double y, double& slope) const;
 
   /// Track-frame lateral position and height of rail profile coordinate u [m].
   void profile_to_track(double u, double& y, double& z) const;
@@ -52,11 +58,14 @@ class PlacedRail {
   const Profile& profile() const { return *rail_; }
   /// Geometric curvature of the rail profile at u [1/m], positive where the head is convex.
   double curvature_at(double u) const;
+  /// Bounds of |dz/dy| and |d2z/dy2| of the rail surface over track-y bins (step-size control).
+  const SlopeEnvelope& envelope() const { return envelope_; }
 
  private:
   double local_y(double u, double v) const { return axis_ + u * cos_ - v * sin_; }  // side-local |y|
   double local_z(double u, double v) const { return z0_ + u * sin_ + v * cos_; }
   double solve_u(double side_local_y) const;
+  double hermite_u(double side_local_y) const;
 
   ProfilePtr rail_;
   WheelSide side_;
@@ -68,6 +77,7 @@ class PlacedRail {
   double u_lower_ = 0, u_upper_ = 0;  // profile range over which y(u) is monotone
   double y_lower_ = 0, y_upper_ = 0;
   double gauge_point_y_ = 0;
+  SlopeEnvelope envelope_;
   std::vector<double> table_y_;  // side-local y of the first and last table node
   std::vector<double> table_u_;  // u at uniformly spaced side-local y
   std::vector<double> table_du_; // du/dy at the nodes times the node spacing

@@ -69,23 +69,55 @@ std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const
   if (!(hi > lo)) return points;
   auto slope = [&](double s) { return locus.distance_slope(s); };
 
-  // Sample d(distance)/ds on a uniform grid plus the wheel profile's breakpoints.
-  std::vector<Sample> samples;
-  const int n = std::max(2, static_cast<int>(std::ceil((hi - lo) / search.step)));
-  samples.reserve(static_cast<size_t>(n) + 16);
-  for (int i = 0; i <= n; ++i) samples.push_back({lo + (hi - lo) * i / n, 0.0});
   // Breakpoints of both profiles: the distance's curvature may jump there, so a pair of roots can
-  // hide in a kink between two uniform samples.
+  // hide in a kink between two samples. They are always sampled.
+  std::vector<double> breaks;
   for (double b : locus.wheel_profile().breakpoints())
-    if (b > lo && b < hi) samples.push_back({b, 0.0});
+    if (b > lo && b < hi) breaks.push_back(b);
   for (double u : locus.rail().profile().breakpoints()) {
     double y_rail, z_rail;
     locus.rail().profile_to_track(u, y_rail, z_rail);
     const double s = locus.s_at_lateral(y_rail);
-    if (s > lo && s < hi) samples.push_back({s, 0.0});
+    if (s > lo && s < hi) breaks.push_back(s);
   }
-  std::sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) { return a.s < b.s; });
-  for (auto& x : samples) x.slope = slope(x.s);
+  // The edges of the rail surface: the first and last sample over the rail lie on them, so that
+  // no stretch next to an edge goes unsampled.
+  for (double y_edge : {locus.rail().y_lower() + 1e-9, locus.rail().y_upper() - 1e-9}) {
+    const double s = locus.s_at_lateral(y_edge);
+    if (s > lo && s < hi) breaks.push_back(s);
+  }
+  std::sort(breaks.begin(), breaks.end());
+  breaks.push_back(hi);
+
+  // Sample d(distance)/ds. Adaptive: no root lies within |g| / max|g'| of a sample with value g.
+  std::vector<Sample> samples;
+  samples.reserve(256);
+  const bool adaptive = locus.distance_curvature_bound(lo, lo + search.step) > 0;
+  double s = lo;
+  size_t next_break = 0;
+  int current_block = -1;
+  double block_bound = 0;
+  while (true) {
+    const double g = slope(s);
+    samples.push_back({s, g});
+    if (s >= hi) break;
+    double h = search.step;
+    if (adaptive && !std::isnan(g)) {
+      // The bound holds on fixed blocks of 2 steps; a step never crosses more than one block
+      // boundary, so the bound of the current and the next block covers it.
+      const int block = static_cast<int>((s - lo) / (2 * search.step));
+      if (block != current_block) {
+        current_block = block;
+        const double b0 = lo + 2 * search.step * block;
+        block_bound = locus.distance_curvature_bound(b0, b0 + 4 * search.step);
+      }
+      h = std::clamp(std::fabs(g) / block_bound, search.min_step, search.step);
+    }
+    double next = s + h;
+    while (next_break < breaks.size() && breaks[next_break] <= s) ++next_break;
+    if (next_break < breaks.size() && breaks[next_break] < next + 0.25 * search.min_step) next = breaks[next_break];
+    s = std::min(next, hi);
+  }
 
   auto add_root = [&](double a, double b, double fa, double fb) {
     const RootResult r = brent_root(slope, a, b, fa, fb, search.tolerance);

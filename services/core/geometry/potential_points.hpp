@@ -12,9 +12,14 @@ namespace wrc {
 
 /// Settings of the potential-point search.
 struct PotentialPointSearch {
-  /// Sampling step along the wheel profile coordinate [m]. Root pairs closer than one step are
-  /// still found where d(distance)/ds has a local extremum between samples (tangency check).
-  double step = 2.5e-4;
+  /// Largest sampling step along the wheel profile coordinate [m]. With profile envelopes (loci
+  /// made by WheelsetGeometry) the step adapts: from a sample with slope g it advances by
+  /// |g| / max|d2 distance/ds2| (no root can lie closer), within [min_step, step]. Without
+  /// envelopes the sampling is uniform with this step. Root pairs closer than one step are still
+  /// found where d(distance)/ds has a local extremum between samples (tangency check).
+  double step = 1e-3;
+  /// Smallest adaptive step [m].
+  double min_step = 1e-4;
   /// Absolute tolerance of each root in s [m].
   double tolerance = 1e-12;
 };

@@ -143,6 +143,12 @@ RigidContact RigidWheelsetSolver::solve_from(double y, double yaw, double roll,
         p.wheel_point.z() += result.pose.z;
       }
       result.contact[w] = *select_common_point(result.potential[w]);
+      if (geometry_.beyond_flange_apex(result.contact[w])) {
+        std::ostringstream msg;
+        msg << "the " << side_name(sides[w]) << " wheel's flange has climbed onto the rail at y = " << y
+            << " m, yaw = " << yaw << " rad (contact at s = " << result.contact[w].s << " m, beyond the flange apex)";
+        throw std::runtime_error(msg.str());
+      }
     }
     return result;
   }

@@ -1,5 +1,6 @@
 #include "core/geometry/wheelset_geometry.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace wrc {
@@ -13,10 +14,27 @@ ProfilePtr WheelsetGeometry::checked_wheel(ProfilePtr wheel) {
 
 WheelsetGeometry::WheelsetGeometry(ProfilePtr wheel, ProfilePtr rail, const TrackParameters& track)
     : wheel_(checked_wheel(std::move(wheel))), rail_(rail), track_(track),
-      left_rail_(rail, track, WheelSide::kLeft), right_rail_(rail, track, WheelSide::kRight) {}
+      left_rail_(rail, track, WheelSide::kLeft), right_rail_(rail, track, WheelSide::kRight),
+      wheel_envelope_(wheel_->lower(), wheel_->upper(), 1e-3, 32, 1.25, [this](double s, double& d1, double& d2) {
+        const ProfileSample f = wheel_->evaluate(s);
+        d1 = f.slope;
+        d2 = f.curvature;
+      }) {
+  // Flange apex: the highest point of the profile on the flange side (s <= 0).
+  const double lo = wheel_->lower(), hi = std::min(0.0, wheel_->upper());
+  double best = -1e300;
+  for (int i = 0; i <= 20000; ++i) {
+    const double s = lo + (hi - lo) * i / 20000.0;
+    const double f = wheel_->evaluate(s).height;
+    if (f > best) {
+      best = f;
+      flange_apex_ = s;
+    }
+  }
+}
 
 ContactLocus WheelsetGeometry::locus(WheelSide side, const WheelsetPose& pose) const {
-  return ContactLocus(*wheel_, rail(side), track_, side, pose);
+  return ContactLocus(*wheel_, rail(side), track_, side, pose, &wheel_envelope_);
 }
 
 std::vector<ContactPoint> WheelsetGeometry::potential_points(WheelSide side, const WheelsetPose& pose,

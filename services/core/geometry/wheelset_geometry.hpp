@@ -10,6 +10,7 @@
 #include "core/geometry/contact_point.hpp"
 #include "core/geometry/placed_rail.hpp"
 #include "core/geometry/potential_points.hpp"
+#include "core/geometry/slope_envelope.hpp"
 #include "core/geometry/track.hpp"
 #include "core/profile/profile.hpp"
 
@@ -33,6 +34,13 @@ class WheelsetGeometry {
   std::optional<ContactPoint> common_point(WheelSide side, const WheelsetPose& pose,
                                            const PotentialPointSearch& search = {}) const;
 
+  /// Wheel profile coordinate of the flange apex (highest point of F on the flange side, s <= 0) [m].
+  double flange_apex() const { return flange_apex_; }
+
+  /// True when a contact point lies on or beyond the flange apex (towards the flange back): the
+  /// flange has climbed onto the rail, a derailed configuration no contact model represents.
+  bool beyond_flange_apex(const ContactPoint& point) const { return point.s <= flange_apex_ + 1e-6; }
+
   const PlacedRail& rail(WheelSide side) const { return side == WheelSide::kLeft ? left_rail_ : right_rail_; }
   const Profile& wheel_profile() const { return *wheel_; }
   const ProfilePtr& wheel_profile_ptr() const { return wheel_; }
@@ -46,6 +54,8 @@ class WheelsetGeometry {
   TrackParameters track_;
   PlacedRail left_rail_;
   PlacedRail right_rail_;
+  SlopeEnvelope wheel_envelope_;  // bounds of |F'|, |F''| for the scan's step control
+  double flange_apex_ = 0;
 };
 
 }  // namespace wrc

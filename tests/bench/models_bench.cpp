@@ -1,0 +1,121 @@
+// In-process benchmark of the contact models (services/core/models): evaluations per second of
+// onepoint, interp and multipoint (both wheels, FASTSIM 20x20, rigid and elastic), the time interp
+// spends building its table, and the split of one one-point evaluation into geometry (common point
+// of both wheels), Hertz (shape + loading, both wheels) and FASTSIM (both patches).
+// S1002 / UIC60, standard track; the configurations cycle through 25 lateral shifts in
+// [-6, 6] mm at their rigid-contact roll and height (tread, two-minima and flange-root cases; no yaw).
+// Run: bench_models [--benchmark_repetitions=5 --benchmark_report_aggregates_only=true]
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <vector>
+
+#include "core/contact/fastsim.hpp"
+#include "core/contact/hertz.hpp"
+#include "core/geometry/rigid_wheelset.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "core/models/interpolated_model.hpp"
+#include "core/models/patch_builder.hpp"
+#include "core/profile/profile_factory.hpp"
+
+namespace {
+
+std::shared_ptr<const wrc::WheelsetGeometry> geometry() {
+  static const auto g = std::make_shared<const wrc::WheelsetGeometry>(
+      wrc::make_profile("S1002", wrc::ProfileSide::kWheel), wrc::make_profile("UIC60", wrc::ProfileSide::kRail));
+  return g;
+}
+
+// 25 queries at the rigid-contact pose (roll and height solved: both wheels touch); elastic ones
+// lowered by 60 um so that both wheels overlap their rails.
+std::vector<wrc::ContactQuery> queries(wrc::ContactFormulation formulation) {
+  std::vector<wrc::ContactQuery> out;
+  const wrc::RigidWheelsetSolver solver(*geometry());
+  for (int i = 0; i < 25; ++i) {
+    wrc::ContactQuery q;
+    q.pose = solver.solve(-0.006 + 0.0005 * i, 0.0).pose;
+    q.speed = 30.0;
+    q.spin_rate = 30.0 / 0.46;
+    q.yaw_dot = 0.01;
+    q.normal_load = {80e3, 80e3};
+    q.formulation = formulation;
+    if (formulation == wrc::ContactFormulation::kElastic) q.pose.z -= 60e-6;
+    out.push_back(q);
+  }
+  return out;
+}
+
+const char* const kModels[] = {"onepoint", "interp", "multipoint"};
+
+// range(0): model index (onepoint, interp, multipoint); range(1): 0 rigid, 1 elastic.
+void BM_Evaluate(benchmark::State& state) {
+  const auto formulation = state.range(1) == 0 ? wrc::ContactFormulation::kRigid : wrc::ContactFormulation::kElastic;
+  const auto model = wrc::make_contact_model(kModels[state.range(0)], geometry());
+  const std::vector<wrc::ContactQuery> qs = queries(formulation);
+  size_t i = 0, patches = 0;
+  for (auto _ : state) {
+    const wrc::ContactResult r = model->evaluate(qs[i]);
+    patches += r.patches.size();
+    benchmark::DoNotOptimize(r.force);
+    i = (i + 1) % qs.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["patches/eval"] = static_cast<double>(patches) / static_cast<double>(state.iterations());
+  state.SetLabel(std::string(kModels[state.range(0)]) + (state.range(1) == 0 ? " rigid" : " elastic"));
+}
+BENCHMARK(BM_Evaluate)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMicrosecond);
+
+// Interp's table: 41 x 3 x 3 nodes, both wheels (the default grid), built in the constructor.
+void BM_InterpPrecompute(benchmark::State& state) {
+  for (auto _ : state) {
+    wrc::InterpolatedModel model(geometry());
+    benchmark::DoNotOptimize(model.precomputation_seconds());
+  }
+}
+BENCHMARK(BM_InterpPrecompute)->Unit(benchmark::kMillisecond)->Iterations(5);
+
+// Split of one one-point evaluation: the common point of both wheels (two potential-point scans).
+void BM_SplitGeometry(benchmark::State& state) {
+  const std::vector<wrc::ContactQuery> qs = queries(wrc::ContactFormulation::kRigid);
+  size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(geometry()->common_point(wrc::WheelSide::kLeft, qs[i].pose));
+    benchmark::DoNotOptimize(geometry()->common_point(wrc::WheelSide::kRight, qs[i].pose));
+    i = (i + 1) % qs.size();
+  }
+}
+BENCHMARK(BM_SplitGeometry)->Unit(benchmark::kMicrosecond);
+
+// Hertz for both wheels: shape from the curvatures (elliptic-integral inversion) and loading.
+void BM_SplitHertz(benchmark::State& state) {
+  const wrc::ContactPoint p = *geometry()->common_point(wrc::WheelSide::kLeft, wrc::WheelsetPose{0.001, 0.46, 0, 0, 0});
+  const double e_star = wrc::contact_modulus(8.2e10, 0.28);
+  double load = 80e3;
+  for (auto _ : state) {
+    for (int w = 0; w < 2; ++w) {
+      load += 1e-9;
+      const wrc::PatchShape shape = wrc::contact_shape(p, 0.01);
+      benchmark::DoNotOptimize(wrc::hertz_from_force(shape.shape, e_star, load));
+    }
+  }
+}
+BENCHMARK(BM_SplitHertz)->Unit(benchmark::kMicrosecond);
+
+// FASTSIM 20x20 for both patches of a free-rolling tread contact.
+void BM_SplitFastsim(benchmark::State& state) {
+  const wrc::Fastsim solver(20, 20);
+  wrc::CreepPatch patch{6.7e-3, 5.0e-3, 80e3, 8.2e10, 0.28, 0.3};
+  wrc::Creepages c{1e-4, 2e-4, 0.05};
+  for (auto _ : state) {
+    for (int w = 0; w < 2; ++w) {
+      c.longitudinal += 1e-15;
+      benchmark::DoNotOptimize(solver.solve(patch, c));
+    }
+  }
+}
+BENCHMARK(BM_SplitFastsim)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

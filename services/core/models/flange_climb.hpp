@@ -9,6 +9,7 @@
 /// point the contact angle falls as the flange climbs; at 20 deg Nadal's limit
 /// (tan(d) - mu) / (1 + mu tan(d)) is 0.06 for mu = 0.3, i.e. the wheel is derailing. Ordinary
 /// flange contact (S1002/UIC60 up to y = 10 mm: 46 deg and more) is not affected.
+/// The models also reject a contact on or beyond the flange apex (WheelsetGeometry::beyond_flange_apex()).
 
 #include "core/geometry/contact_point.hpp"
 #include "core/geometry/wheelset_pose.hpp"

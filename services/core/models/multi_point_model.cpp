@@ -41,6 +41,12 @@ ContactResult MultiPointModel::evaluate(const ContactQuery& query) const {
     size_t closest = 0;
     for (size_t k = 1; k < minima.size(); ++k)
       if (minima[k].distance < minima[closest].distance) closest = k;
+    if (geometry_->beyond_flange_apex(minima[closest])) {
+      throw ContactConfigurationError(std::string("the ") + side_name(side) +
+                                      " wheel's flange has climbed onto its rail: contact at s = " +
+                                      std::to_string(minima[closest].s) + " m on or beyond the flange apex, at " +
+                                      describe_pose(query.pose));
+    }
     check_flange_not_climbed(minima[closest], steepest_flange_, query.pose);
     if (query.formulation == ContactFormulation::kElastic) {
       for (const ContactPoint& p : minima) {

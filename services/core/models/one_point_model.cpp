@@ -27,6 +27,12 @@ ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide si
                                     "climbed over) at " +
                                     describe_pose(pose));
   }
+  if (geometry.beyond_flange_apex(*point)) {
+    throw ContactConfigurationError(std::string("the ") + side_name(side) +
+                                    " wheel's flange has climbed onto its rail: contact at s = " +
+                                    std::to_string(point->s) + " m on or beyond the flange apex, at " +
+                                    describe_pose(pose));
+  }
   check_flange_not_climbed(*point, steepest_flange, pose);
   return *point;
 }

@@ -33,9 +33,16 @@ void BM_PotentialPoints(benchmark::State& state) {
 }
 BENCHMARK(BM_PotentialPoints)->Arg(0)->Arg(5)->Arg(8)->Unit(benchmark::kMicrosecond);
 
-// Rigid wheelset, cold start, cycling through y in [-10, 10] mm.
+// Rigid wheelset, cold start, cycling through y in [-10, 10] mm. Arg 1: all potential points
+// reported (full scan of both wheels at the solution); arg 0: common points certified only.
+RigidSolverOptions options_for(const benchmark::State& state) {
+  RigidSolverOptions o;
+  o.all_potential_points = state.range(0) != 0;
+  return o;
+}
+
 void BM_RigidSolveCold(benchmark::State& state) {
-  const RigidWheelsetSolver solver(geometry());
+  const RigidWheelsetSolver solver(geometry(), options_for(state));
   int k = 0;
   double scans = 0, iterations = 0, solves = 0;
   for (auto _ : state) {
@@ -49,11 +56,11 @@ void BM_RigidSolveCold(benchmark::State& state) {
   state.counters["scans/solve"] = scans / solves;
   state.counters["roll_iter/solve"] = iterations / solves;
 }
-BENCHMARK(BM_RigidSolveCold)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RigidSolveCold)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 
 // Rigid wheelset, warm start from the neighbour 0.01 mm away.
 void BM_RigidSolveWarm(benchmark::State& state) {
-  const RigidWheelsetSolver solver(geometry());
+  const RigidWheelsetSolver solver(geometry(), options_for(state));
   RigidContact previous = solver.solve(-0.010, 0.0);
   int k = 1;
   double scans = 0, iterations = 0, solves = 0;
@@ -68,12 +75,12 @@ void BM_RigidSolveWarm(benchmark::State& state) {
   state.counters["scans/solve"] = scans / solves;
   state.counters["roll_iter/solve"] = iterations / solves;
 }
-BENCHMARK(BM_RigidSolveWarm)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RigidSolveWarm)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 
 // The table of issue 3: y from -10 to 10 mm in 0.01 mm steps (2001 values) at 11 yaw angles
 // from -10 to 10 mrad, warm-started along y.
 void BM_Table2001x11(benchmark::State& state) {
-  const RigidWheelsetSolver solver(geometry());
+  const RigidWheelsetSolver solver(geometry(), options_for(state));
   for (auto _ : state) {
     for (int j = 0; j <= 10; ++j) {
       const double yaw = -0.01 + 0.002 * j;
@@ -84,7 +91,7 @@ void BM_Table2001x11(benchmark::State& state) {
   }
   state.counters["solves"] = 2001 * 11;
 }
-BENCHMARK(BM_Table2001x11)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Table2001x11)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 

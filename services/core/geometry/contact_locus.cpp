@@ -21,6 +21,8 @@ ContactLocus::ContactLocus(const Profile& wheel, const PlacedRail& rail, const T
   rho_ = std::hypot(a11, a13);
   beta_ = std::atan2(a13, a11);
   cos_beta_ = std::cos(beta_);
+  abs_sin_roll_ = std::fabs(sphi);
+  abs_sin_yaw_ = std::fabs(spsi);
   sin_beta_ = std::sin(beta_);
 
   // Lateral track position of a body point at lateral coordinate yb is about y + yb*cos(roll):
@@ -69,11 +71,11 @@ double ContactLocus::distance_curvature_bound(double s0, double s1) const {
   // |W_z''| <= |F''| (1 + ...) , |W_y'| <= 1 + |F'| |sin phi|, |W_y''| <= |F''| |sin phi| + yaw terms;
   // theta' ~ sin(psi) F'' adds r0 theta'^2 and |F'| theta' to the curvature of C.
   const double rpp = wheel_envelope_->max_second(s0, s1), rp = wheel_envelope_->max_slope(s0, s1);
+  const double sr = abs_sin_roll_, sy = abs_sin_yaw_;
   const double y0 = pose_.y + sigma_ * (taping_ + s0), y1 = pose_.y + sigma_ * (taping_ + s1);
-  const double pad = 1e-3 + r0_ * (std::fabs(std::sin(pose_.roll)) + std::fabs(std::sin(pose_.yaw)));
+  const double pad = 1e-3 + r0_ * (sr + sy);
   const double ya = std::min(y0, y1) - pad, yb = std::max(y0, y1) + pad;
   const double zpp = rail_.envelope().max_second(ya, yb), zp = rail_.envelope().max_slope(ya, yb);
-  const double sr = std::fabs(std::sin(pose_.roll)), sy = std::fabs(std::sin(pose_.yaw));
   const double theta_rate = sy * rpp * 1.1;
   const double wy = 1 + rp * sr + r0_ * theta_rate * sy;
   return rpp * (1 + zp * sr) + zpp * wy * wy + 2 * (r0_ * theta_rate * theta_rate + rp * theta_rate) + 1.0;
@@ -103,6 +105,29 @@ double ContactLocus::s_at_lateral(double y) const {
     f1 = lateral_at(s1) - y;
   }
   return s1;
+}
+
+void ContactLocus::distance_and_slope(double s, double& distance, double& slope) const {
+  s = std::clamp(s, wheel_.lower(), wheel_.upper());
+  const ProfileSample f = wheel_.evaluate(s);
+  const double radius = r0_ + f.height;
+  const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
+  const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
+  const double st = q * cos_beta_ - cq * sin_beta_, ct = cq * cos_beta_ + q * sin_beta_;
+  const double dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
+  const double bx = -radius * st, by = sigma_ * (taping_ + s), bz = -radius * ct;
+  const double dx = -f.slope * st - radius * ct * dtheta, dy = sigma_, dz = -f.slope * ct + radius * st * dtheta;
+  const double wy = rotation_(1, 0) * bx + rotation_(1, 1) * by + rotation_(1, 2) * bz + pose_.y;
+  const double wz = rotation_(2, 0) * bx + rotation_(2, 1) * by + rotation_(2, 2) * bz + pose_.z;
+  const double ty = rotation_(1, 0) * dx + rotation_(1, 1) * dy + rotation_(1, 2) * dz;
+  const double tz = rotation_(2, 0) * dx + rotation_(2, 1) * dy + rotation_(2, 2) * dz;
+  double rail_z, rail_slope;
+  if (!rail_.height_and_slope_at(wy, rail_z, rail_slope)) {
+    distance = slope = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  distance = wz - rail_z;
+  slope = tz - rail_slope * ty;
 }
 
 double ContactLocus::distance_slope(double s) const {

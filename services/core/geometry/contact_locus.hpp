@@ -46,6 +46,9 @@ class ContactLocus {
   /// d(distance)/ds at s [-]; NaN when the point is not over the rail.
   double distance_slope(double s) const;
 
+  /// Distance [m] and d(distance)/ds [-] at s (lean path of at()); both NaN off the rail.
+  void distance_and_slope(double s, double& distance, double& slope) const;
+
   /// Track-frame lateral position of the locus point at s [m].
   double lateral_at(double s) const;
 
@@ -81,7 +84,7 @@ class ContactLocus {
   double taping_;
   double r0_;
   Eigen::Matrix3d rotation_;
-  double rho_, beta_, a12_, cos_beta_, sin_beta_;
+  double rho_, beta_, a12_, cos_beta_, sin_beta_, abs_sin_roll_, abs_sin_yaw_;
   double s_lower_, s_upper_;
 };
 

@@ -127,6 +127,19 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
   });
 }
 
+bool PlacedRail::height_and_slope_at(double y, double& z, double& slope) const {
+  const double ly = side_sign_ * y;
+  if (!(ly >= table_y_.front() && ly <= table_y_.back())) return false;
+  const double u = hermite_u(ly);
+  const ProfileSample p = rail_->evaluate(u);
+  const double du = -(local_y(u, p.height) - ly) / (cos_ - p.slope * sin_);
+  const double v1 = p.slope + p.curvature * du;
+  const double v = p.height + du * (p.slope + 0.5 * p.curvature * du);
+  z = local_z(u + du, v);
+  slope = side_sign_ * (sin_ + v1 * cos_) / (cos_ - v1 * sin_);
+  return true;
+}
+
 void PlacedRail::profile_to_track(double u, double& y, double& z) const {
   const double v = rail_->evaluate(u).height;
   y = side_sign_ * local_y(u, v);

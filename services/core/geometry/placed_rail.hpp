@@ -39,6 +39,8 @@ class PlacedRail {
   /// Only the surface slope dz/dy below y [m] (one profile evaluation; what the potential-point
   /// scan needs). Returns false outside the rail's lateral extent.
   bool slope_at(double y, double& slope) const;
+  /// Surface height [m] and slope below y [m], one profile evaluation; false off the rail.
+  bool height_and_slope_at(double y, double& z, double& slope) const;
 
   /// Track-frame lateral position and height of rail profile coordinate u [m].
   void profile_to_track(double u, double& y, double& z) const;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/numerics/brent.hpp"
 
@@ -12,8 +13,6 @@ struct Sample {
   double s;
   double slope;  // d(distance)/ds, NaN when not over the rail
 };
-
-bool valid(const Sample& x) { return !std::isnan(x.slope); }
 
 // Golden-section search for the extremum of sign * f in [a, b] (a minimum of sign * f).
 template <class F>
@@ -63,74 +62,120 @@ ContactPoint make_contact_point(const ContactLocus& locus, double s, bool is_min
   return c;
 }
 
-std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const PotentialPointSearch& search) {
-  std::vector<ContactPoint> points;
+namespace {
+
+struct ScanSample {
+  double s;
+  double slope;             // d(distance)/ds, NaN when not over the rail
+  double distance;          // distance (only when the scan certifies a level)
+  bool clear_after = false; // no distance below the level between this sample and the next
+};
+
+// Samples d(distance)/ds along C. Adaptive: no root lies within |g| / max|g'| of a sample with
+// value g. With a finite level, a step may also be as long as the distance provably stays above
+// the level (quadratic lower bound d - |g| h - M h^2 / 2), and such intervals are marked clear.
+std::vector<ScanSample> sample_locus(const ContactLocus& locus, const PotentialPointSearch& search, double level) {
+  std::vector<ScanSample> samples;
   const double lo = locus.s_lower(), hi = locus.s_upper();
-  if (!(hi > lo)) return points;
-  auto slope = [&](double s) { return locus.distance_slope(s); };
+  if (!(hi > lo)) return samples;
+  const bool certify = std::isfinite(level);
 
   // Breakpoints of both profiles: the distance's curvature may jump there, so a pair of roots can
-  // hide in a kink between two samples. They are always sampled.
+  // hide in a kink between two samples. They are always sampled, as are the edges of the rail
+  // surface (so that no stretch next to an edge goes unsampled).
   std::vector<double> breaks;
   for (double b : locus.wheel_profile().breakpoints())
     if (b > lo && b < hi) breaks.push_back(b);
+  std::vector<double> rail_y;
   for (double u : locus.rail().profile().breakpoints()) {
     double y_rail, z_rail;
     locus.rail().profile_to_track(u, y_rail, z_rail);
-    const double s = locus.s_at_lateral(y_rail);
-    if (s > lo && s < hi) breaks.push_back(s);
+    rail_y.push_back(y_rail);
   }
-  // The edges of the rail surface: the first and last sample over the rail lie on them, so that
-  // no stretch next to an edge goes unsampled.
-  for (double y_edge : {locus.rail().y_lower() + 1e-9, locus.rail().y_upper() - 1e-9}) {
-    const double s = locus.s_at_lateral(y_edge);
+  rail_y.push_back(locus.rail().y_lower() + 1e-9);
+  rail_y.push_back(locus.rail().y_upper() - 1e-9);
+  for (double y : rail_y) {
+    const double s = locus.s_at_lateral(y);
     if (s > lo && s < hi) breaks.push_back(s);
   }
   std::sort(breaks.begin(), breaks.end());
   breaks.push_back(hi);
 
-  // Sample d(distance)/ds. Adaptive: no root lies within |g| / max|g'| of a sample with value g.
-  std::vector<Sample> samples;
   samples.reserve(256);
   const bool adaptive = locus.distance_curvature_bound(lo, lo + search.step) > 0;
+  const double long_step = 10 * search.step;
+  // Bounds of |d2 distance/ds2| per block of two steps; a window's bound is the largest of its blocks.
+  const double block = 2 * search.step;
+  const int blocks = static_cast<int>(std::ceil((hi - lo) / block)) + 1;
+  std::vector<double> block_bounds(adaptive ? blocks : 0, -1.0);  // computed when first needed
+  auto window_bound = [&](double a, double b) {
+    const int i0 = std::clamp(static_cast<int>((a - lo) / block), 0, blocks - 1);
+    const int i1 = std::clamp(static_cast<int>((b - lo) / block), 0, blocks - 1);
+    double m = 0;
+    for (int i = i0; i <= i1; ++i) {
+      if (block_bounds[i] < 0)
+        block_bounds[i] = locus.distance_curvature_bound(lo + i * block, lo + (i + 1) * block);
+      m = std::max(m, block_bounds[i]);
+    }
+    return m;
+  };
   double s = lo;
   size_t next_break = 0;
-  int current_block = -1;
-  double block_bound = 0;
   while (true) {
-    const double g = slope(s);
-    samples.push_back({s, g});
-    if (s >= hi) break;
+    ScanSample x{s, 0.0, 0.0, false};
+    if (certify) {
+      locus.distance_and_slope(s, x.distance, x.slope);
+    } else {
+      x.slope = locus.distance_slope(s);
+    }
+    const double g = x.slope;
+    if (s >= hi) {
+      samples.push_back(x);
+      break;
+    }
     double h = search.step;
     if (adaptive && !std::isnan(g)) {
-      // The bound holds on fixed blocks of 2 steps; a step never crosses more than one block
-      // boundary, so the bound of the current and the next block covers it.
-      const int block = static_cast<int>((s - lo) / (2 * search.step));
-      if (block != current_block) {
-        current_block = block;
-        const double b0 = lo + 2 * search.step * block;
-        block_bound = locus.distance_curvature_bound(b0, b0 + 4 * search.step);
+      h = std::clamp(std::fabs(g) / window_bound(s, s + search.step), search.min_step, search.step);
+      const double excess = x.distance - level;
+      if (certify && excess > 0) {
+        // Longest step over which d - |g| t - M t^2 / 2 stays above the level.
+        const double m = window_bound(s, s + long_step);
+        const double t = std::min(long_step, (-std::fabs(g) + std::sqrt(g * g + 2 * m * excess)) / m);
+        if (t > h) {
+          h = t;
+          x.clear_after = true;
+        }
       }
-      h = std::clamp(std::fabs(g) / block_bound, search.min_step, search.step);
     }
     double next = s + h;
     while (next_break < breaks.size() && breaks[next_break] <= s) ++next_break;
     if (next_break < breaks.size() && breaks[next_break] < next + 0.25 * search.min_step) next = breaks[next_break];
     s = std::min(next, hi);
+    samples.push_back(x);
   }
+  return samples;
+}
 
+// Zeros of d(distance)/ds between samples (sign changes, and pairs found by the tangency check).
+// Intervals marked clear are skipped; with only_minima, maxima are not refined.
+std::vector<ContactPoint> roots_of(const ContactLocus& locus, const std::vector<ScanSample>& samples,
+                                   const PotentialPointSearch& search, bool only_minima) {
+  std::vector<ContactPoint> points;
+  auto slope = [&](double s) { return locus.distance_slope(s); };
+  auto valid = [](const ScanSample& x) { return !std::isnan(x.slope); };
   auto add_root = [&](double a, double b, double fa, double fb) {
-    const RootResult r = brent_root(slope, a, b, fa, fb, search.tolerance);
     // Distance decreasing before the root and increasing after it: a local minimum.
     const bool minimum = fa < fb;
+    if (only_minima && !minimum) return;
+    const RootResult r = brent_root(slope, a, b, fa, fb, search.tolerance);
     if (!points.empty() && std::fabs(points.back().s - r.x) < 10 * search.tolerance) return;
     points.push_back(make_contact_point(locus, r.x, minimum));
   };
 
   for (size_t k = 0; k + 1 < samples.size(); ++k) {
-    const Sample& a = samples[k];
-    const Sample& b = samples[k + 1];
-    if (!valid(a) || !valid(b)) continue;
+    const ScanSample& a = samples[k];
+    const ScanSample& b = samples[k + 1];
+    if (!valid(a) || !valid(b) || a.clear_after) continue;
     if (a.slope == 0) {
       const double h = 1e-9;
       const double left = slope(a.s - h), right = slope(a.s + h);
@@ -144,7 +189,7 @@ std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const
     // Tangency check: a local extremum of the slope between samples may reach zero and hide a
     // pair of roots. Fit a parabola through three samples and look closer where it comes near zero.
     if (k == 0 || !valid(samples[k - 1])) continue;
-    const Sample& p = samples[k - 1];
+    const ScanSample& p = samples[k - 1];
     const double sign = a.slope > 0 ? 1.0 : -1.0;
     if (sign * a.slope > sign * p.slope || sign * a.slope > sign * b.slope) continue;
     if ((p.slope < 0) != (a.slope < 0)) continue;
@@ -158,7 +203,7 @@ std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const
     }
     if (sign * vertex > 0.5 * sign * a.slope) continue;
     const Sample e = golden_extremum(slope, p.s, b.s, sign, 60);
-    if (!valid(e) || (e.slope < 0) == (a.slope < 0)) continue;
+    if (std::isnan(e.slope) || (e.slope < 0) == (a.slope < 0)) continue;
     // Two roots: [p, e] and [e, b] (the one in [p, a] may already have been added).
     if (points.empty() || points.back().s < p.s) add_root(p.s, e.s, p.slope, e.slope);
     add_root(e.s, b.s, e.slope, b.slope);
@@ -167,8 +212,38 @@ std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const
   return points;
 }
 
+}  // namespace
+
+std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const PotentialPointSearch& search) {
+  return roots_of(locus, sample_locus(locus, search, std::numeric_limits<double>::infinity()), search, false);
+}
+
+std::vector<ContactPoint> find_minima_below(const ContactLocus& locus, double level, const PotentialPointSearch& search) {
+  std::vector<ContactPoint> minima = roots_of(locus, sample_locus(locus, search, level), search, true);
+  minima.erase(std::remove_if(minima.begin(), minima.end(), [&](const ContactPoint& p) { return !(p.distance < level); }),
+               minima.end());
+  return minima;
+}
+
 std::optional<LocusPoint> track_minimum(const ContactLocus& locus, double s_guess, double max_shift, double tolerance) {
   auto slope = [&](double s) { return locus.distance_slope(s); };
+  // Newton with a forward-difference derivative: the minimum moves little between neighbouring
+  // configurations, so this converges in a few steps; anything unusual falls back to bracketing.
+  {
+    double s = s_guess, g = slope(s);
+    for (int it = 0; it < 8 && !std::isnan(g); ++it) {
+      const double h = 1e-7;
+      const double curvature = (slope(s + h) - g) / h;
+      if (!(curvature > 0)) break;  // not (or no longer) a minimum here
+      const double step = -g / curvature;
+      s += step;
+      if (std::fabs(s - s_guess) > max_shift) break;
+      // The difference quotient is exact to ~1e-5 relative, so after a step below 1e-8 m the
+      // remaining error is ~1e-13 m: below the root tolerance without another evaluation.
+      if (std::fabs(step) < std::max(tolerance, 1e-8)) return locus.at(s);
+      g = slope(s);
+    }
+  }
   // Grow a bracket [a, b] around s_guess with slope(a) < 0 < slope(b).
   double h = 2e-5;
   double a = s_guess, b = s_guess;

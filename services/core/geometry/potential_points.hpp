@@ -28,6 +28,13 @@ struct PotentialPointSearch {
 /// Local minima and maxima of the distance are both returned; is_minimum tells them apart.
 std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const PotentialPointSearch& search = {});
 
+/// The local minima of the distance along C whose distance is below level [m], and nothing else:
+/// a certificate that no point of C lies lower. Much cheaper than find_potential_points where the
+/// distance is well above the level, since a step may then span the whole stretch over which a
+/// quadratic lower bound of the distance stays above the level.
+std::vector<ContactPoint> find_minima_below(const ContactLocus& locus, double level,
+                                            const PotentialPointSearch& search = {});
+
 /// The potential point near s_guess [m], followed from a neighbouring configuration: a local
 /// minimum of the distance is searched in a bracket grown around s_guess up to max_shift [m].
 /// Returns the locus point there, or nothing when no minimum lies there any more.

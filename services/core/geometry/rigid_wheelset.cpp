@@ -56,8 +56,21 @@ RigidContact RigidWheelsetSolver::solve_from(double y, double yaw, double roll,
     ++result.scans;
     return geometry_.potential_points(sides[w], pose_at(phi), options_.search);
   };
+  // Seeds for a cold start: the minima below the lowest of a coarse sampling of the distance
+  // (the global minimum is among them).
+  auto seed = [&](int w, double phi) {
+    ++result.scans;
+    const ContactLocus locus = geometry_.locus(sides[w], pose_at(phi));
+    double lowest = std::numeric_limits<double>::infinity();
+    for (double s = locus.s_lower(); s <= locus.s_upper(); s += 1e-3) {
+      double d, g;
+      locus.distance_and_slope(s, d, g);
+      if (d < lowest) lowest = d;
+    }
+    return minima_of(find_minima_below(locus, lowest + 1e-12, options_.search));
+  };
   for (int w = 0; w < 2; ++w) {
-    if (seeds[w].empty()) seeds[w] = minima_of(scan(w, roll));
+    if (seeds[w].empty()) seeds[w] = options_.all_potential_points ? minima_of(scan(w, roll)) : seed(w, roll);
     if (seeds[w].empty()) no_contact(y, yaw, sides[w]);
   }
 
@@ -123,10 +136,15 @@ RigidContact RigidWheelsetSolver::solve_from(double y, double yaw, double roll,
     bool complete = true;
     double z_side[2];
     for (int w = 0; w < 2; ++w) {
-      result.potential[w] = scan(w, roll);
+      const double tracked = min_distance(w, roll);
+      if (options_.all_potential_points) {
+        result.potential[w] = scan(w, roll);
+      } else {
+        ++result.scans;
+        result.potential[w] = find_minima_below(geometry_.locus(sides[w], pose_at(roll)), tracked + 1e-9, options_.search);
+      }
       auto common = select_common_point(result.potential[w], 0.0);
       if (!common) no_contact(y, yaw, sides[w]);
-      const double tracked = min_distance(w, roll);
       if (common->distance < tracked - 1e-11) {
         complete = false;
         seeds[w] = minima_of(result.potential[w]);

@@ -14,7 +14,9 @@ namespace wrc {
 struct RigidContact {
   WheelsetPose pose;                              ///< y and yaw as asked; z [m] and roll [rad] solved
   std::array<ContactPoint, 2> contact;            ///< common point of the left [0] and right [1] wheel
-  std::array<std::vector<ContactPoint>, 2> potential;  ///< all potential points per wheel, distances at the solved pose [m]
+  /// Potential points per wheel at the solved pose (distances relative to it) [m]: all of them, or
+  /// with RigidSolverOptions::all_potential_points = false the lowest local minima only.
+  std::array<std::vector<ContactPoint>, 2> potential;
   int roll_iterations = 0;  ///< evaluations of the roll equation
   int scans = 0;            ///< full potential-point scans (2 per verification)
 
@@ -29,6 +31,10 @@ struct RigidSolverOptions {
   PotentialPointSearch search;      ///< scan step and root tolerance
   double height_tolerance = 1e-12;  ///< |min distance left - min distance right| at the solution [m]
   int max_iterations = 60;          ///< roll iterations per verification round
+  /// true: RigidContact::potential holds every potential point of each wheel (a full scan at the
+  /// solution). false: only the local minima at the level of the common point are looked for,
+  /// which certifies the common point as cheaply as possible (dynamics, tabulation).
+  bool all_potential_points = true;
 };
 
 /// Solves the two contact conditions of a rigid wheelset for roll and height. The common point

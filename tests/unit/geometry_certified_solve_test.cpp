@@ -1,0 +1,61 @@
+// The rigid-wheelset solver's fast mode (only the lowest local minima are looked for, with a
+// quadratic lower bound of the distance certifying everything else) gives the same solution as
+// the full potential-point scan, cold and warm, across contact-point jumps.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/geometry/rigid_wheelset.hpp"
+#include "core/profile/profile_factory.hpp"
+
+namespace wrc {
+namespace {
+
+// Same roll, height and common points: both modes converge the roll iteration to a height residual
+// of 1e-12 m, i.e. roll to 1e-12 m over the smallest d(residual)/d(roll) (about 0.3 m/rad in flange
+// contact): 5e-12 rad; height 1e-12 m; contact positions 1e-10 m.
+TEST(GeometryCertifiedSolve, FastModeMatchesFullScan) {
+  const WheelsetGeometry g(make_profile("S1002", ProfileSide::kWheel), make_profile("UIC60", ProfileSide::kRail));
+  RigidSolverOptions fast_options;
+  fast_options.all_potential_points = false;
+  const RigidWheelsetSolver full(g), fast(g, fast_options);
+  for (double yaw : {0.0, 0.006}) {
+    RigidContact warm_full, warm_fast;
+    int n = 0;
+    for (double y = -0.0095; y <= 0.0095; y += 0.00023, ++n) {
+      const RigidContact a = full.solve(y, yaw);
+      const RigidContact b = fast.solve(y, yaw);
+      const RigidContact c = n == 0 ? b : fast.solve(y, yaw, warm_fast);
+      warm_fast = c;
+      for (const RigidContact* r : {&b, &c}) {
+        EXPECT_NEAR(r->pose.roll, a.pose.roll, 5e-12) << "y=" << y << " yaw=" << yaw;
+        EXPECT_NEAR(r->pose.z, a.pose.z, 1e-12) << "y=" << y;
+        EXPECT_NEAR(r->left().s, a.left().s, 1e-10) << "y=" << y;
+        EXPECT_NEAR(r->right().s, a.right().s, 1e-10) << "y=" << y;
+        EXPECT_NEAR(r->delta_r(), a.delta_r(), 1e-11) << "y=" << y;
+      }
+    }
+  }
+}
+
+// In fast mode the reported potential points are local minima no higher than the common point
+// plus 1e-9 m, and the common point is among them.
+TEST(GeometryCertifiedSolve, FastModeReportsOnlyTheLowestMinima) {
+  const WheelsetGeometry g(make_profile("S1002", ProfileSide::kWheel), make_profile("UIC60", ProfileSide::kRail));
+  RigidSolverOptions fast_options;
+  fast_options.all_potential_points = false;
+  const RigidContact c = RigidWheelsetSolver(g, fast_options).solve(0.0, 0.0);
+  for (int w = 0; w < 2; ++w) {
+    ASSERT_FALSE(c.potential[w].empty());
+    for (const auto& p : c.potential[w]) {
+      EXPECT_TRUE(p.is_minimum);
+      EXPECT_LE(p.distance, 1e-9);
+    }
+  }
+  // Full scan at y = 0 has 3 potential points per wheel (two minima and a maximum).
+  EXPECT_EQ(RigidWheelsetSolver(g).solve(0.0, 0.0).potential[0].size(), 3u);
+}
+
+}  // namespace
+}  // namespace wrc

@@ -59,3 +59,33 @@ TEST(GeometryCertifiedSolve, FastModeReportsOnlyTheLowestMinima) {
 
 }  // namespace
 }  // namespace wrc
+
+namespace wrc {
+namespace {
+
+// WheelsetGeometry::common_point (minima at the level of a coarse sampling only) equals the
+// common point selected from the full list of potential points, for both wheels, with roll and
+// yaw, across the jumps (same root tolerance: 1e-12 m in s, distances to 1e-12 m).
+TEST(GeometryCertifiedSolve, CommonPointEqualsSelectionFromAllPotentialPoints) {
+  const WheelsetGeometry g(make_profile("S1002", ProfileSide::kWheel), make_profile("UIC60", ProfileSide::kRail));
+  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
+    for (double y = -0.011; y <= 0.011; y += 0.0004) {
+      for (double roll : {-0.006, 0.0, 0.003}) {
+        WheelsetPose pose;
+        pose.y = y;
+        pose.roll = roll;
+        pose.yaw = 0.004;
+        pose.z = 0.46;
+        const auto all = select_common_point(g.potential_points(side, pose));
+        const auto fast = g.common_point(side, pose);
+        ASSERT_EQ(all.has_value(), fast.has_value()) << "y=" << y;
+        if (!all) continue;
+        EXPECT_NEAR(fast->s, all->s, 1e-10) << side_name(side) << " y=" << y << " roll=" << roll;
+        EXPECT_NEAR(fast->distance, all->distance, 1e-12) << "y=" << y;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace wrc

@@ -79,7 +79,9 @@ TEST(ModelsAgreement, SinglePointOnePointEqualsMultiPoint) {
       ASSERT_EQ(g->potential_points(WheelSide::kLeft, q.pose).size(), 1u);
       ASSERT_EQ(g->potential_points(WheelSide::kRight, q.pose).size(), 1u);
       if (f == ContactFormulation::kElastic) lower_to_overlap(*g, q, 50e-6);
-      expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-12, "cone: onepoint vs multipoint");
+      // The two models locate the same root from different brackets (Brent stops within 1e-12 m),
+      // which moves the forces by about 1e-12 relative: 1e-11.
+      expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-11, "cone: onepoint vs multipoint");
     }
   }
 }
@@ -96,10 +98,10 @@ TEST(ModelsAgreement, S1002SingleMinimumOnePointEqualsMultiPoint) {
     for (const ContactPoint& p : g->potential_points(side, q.pose)) minima += p.is_minimum ? 1 : 0;
     ASSERT_EQ(minima, 1);
   }
-  expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-12, "S1002 rigid");
+  expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-11, "S1002 rigid");
   lower_to_overlap(*g, q, 40e-6);
   q.formulation = ContactFormulation::kElastic;
-  expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-12, "S1002 elastic");
+  expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-11, "S1002 elastic");
 }
 
 // Interp on cone/circle. At the interpolation nodes it reproduces the one-point model (1e-10:

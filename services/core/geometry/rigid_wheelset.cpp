@@ -60,14 +60,9 @@ RigidContact RigidWheelsetSolver::solve_from(double y, double yaw, double roll,
   // (the global minimum is among them).
   auto seed = [&](int w, double phi) {
     ++result.scans;
-    const ContactLocus locus = geometry_.locus(sides[w], pose_at(phi));
-    double lowest = std::numeric_limits<double>::infinity();
-    for (double s = locus.s_lower(); s <= locus.s_upper(); s += 1e-3) {
-      double d, g;
-      locus.distance_and_slope(s, d, g);
-      if (d < lowest) lowest = d;
-    }
-    return minima_of(find_minima_below(locus, lowest + 1e-12, options_.search));
+    std::vector<double> s;
+    if (auto c = geometry_.common_point(sides[w], pose_at(phi), options_.search)) s.push_back(c->s);
+    return s;
   };
   for (int w = 0; w < 2; ++w) {
     if (seeds[w].empty()) seeds[w] = options_.all_potential_points ? minima_of(scan(w, roll)) : seed(w, roll);

@@ -1,9 +1,15 @@
 #include "core/geometry/wheelset_geometry.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace wrc {
+namespace {
+// Sampling of the distance that gives the common-point search its level [m].
+constexpr double kCoarseStep = 2.5e-3;
+}  // namespace
 
 ProfilePtr WheelsetGeometry::checked_wheel(ProfilePtr wheel) {
   if (!wheel) throw std::invalid_argument("no wheel profile");
@@ -44,7 +50,17 @@ std::vector<ContactPoint> WheelsetGeometry::potential_points(WheelSide side, con
 
 std::optional<ContactPoint> WheelsetGeometry::common_point(WheelSide side, const WheelsetPose& pose,
                                                            const PotentialPointSearch& search) const {
-  return select_common_point(potential_points(side, pose, search));
+  // Only the minima at or below the lowest distance of a coarse sampling can be the common point:
+  // look for those alone (find_minima_below certifies that nothing else lies lower).
+  const ContactLocus c = locus(side, pose);
+  double lowest = std::numeric_limits<double>::infinity();
+  for (double s = c.s_lower(); s <= c.s_upper(); s += kCoarseStep) {
+    double d, g;
+    c.distance_and_slope(s, d, g);
+    if (d < lowest) lowest = d;
+  }
+  if (!std::isfinite(lowest)) return std::nullopt;
+  return select_common_point(find_minima_below(c, lowest + 1e-12, search));
 }
 
 }  // namespace wrc

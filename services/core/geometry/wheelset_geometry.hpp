@@ -30,7 +30,8 @@ class WheelsetGeometry {
   std::vector<ContactPoint> potential_points(WheelSide side, const WheelsetPose& pose,
                                              const PotentialPointSearch& search = {}) const;
 
-  /// The common point of one wheel at pose (nothing when the wheel is off the rail).
+  /// The common point of one wheel at pose (nothing when the wheel is off the rail). Same result
+  /// as select_common_point(potential_points(...)), found without listing the other points.
   std::optional<ContactPoint> common_point(WheelSide side, const WheelsetPose& pose,
                                            const PotentialPointSearch& search = {}) const;
 

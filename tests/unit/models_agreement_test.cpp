@@ -87,7 +87,10 @@ TEST(ModelsAgreement, SinglePointOnePointEqualsMultiPoint) {
 }
 
 // S1002/UIC60 at y = 2 mm (no roll): a single local minimum per wheel (checked), so multi-point
-// and one-point coincide (the paper's Figure 3 situation), to 1e-12.
+// and one-point coincide (the paper's Figure 3 situation). They locate the root from different
+// brackets (within 1e-12 m), and on this nearly conformal tread the lateral relative curvature is
+// a small difference of wheel and rail curvatures, which amplifies that into ~1e-11 relative in
+// the semi-axes: 1e-9.
 TEST(ModelsAgreement, S1002SingleMinimumOnePointEqualsMultiPoint) {
   auto g = s1002_uic60();
   OnePointModel one(g);
@@ -98,10 +101,10 @@ TEST(ModelsAgreement, S1002SingleMinimumOnePointEqualsMultiPoint) {
     for (const ContactPoint& p : g->potential_points(side, q.pose)) minima += p.is_minimum ? 1 : 0;
     ASSERT_EQ(minima, 1);
   }
-  expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-11, "S1002 rigid");
+  expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-9, "S1002 rigid");
   lower_to_overlap(*g, q, 40e-6);
   q.formulation = ContactFormulation::kElastic;
-  expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-11, "S1002 elastic");
+  expect_same_patches(one.evaluate(q), multi.evaluate(q), 1e-9, "S1002 elastic");
 }
 
 // Interp on cone/circle. At the interpolation nodes it reproduces the one-point model (1e-10:

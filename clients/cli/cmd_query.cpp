@@ -205,16 +205,23 @@ std::string number(double v) {
 }
 
 void print_patches(const wrc::contact_reply_t& reply, const std::string& format) {
+  // Full precision for csv (machine reading), six significant digits for the aligned table.
+  const char* number_format = format == "csv" ? "%.10g" : "%.6g";
+  auto cell = [&](double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, number_format, v);
+    return std::string(buf);
+  };
   const std::vector<std::string> header{"wheel", "s", "angle", "a", "b", "penetration", "normal_force", "fx", "fy",
                                         "mz", "xi_x", "xi_y", "spin", "rolling_radius", "s_rail", "x", "y", "z"};
   std::vector<std::vector<std::string>> rows;
   for (const auto& result : reply.results) {
     for (const auto& p : result.patches) {
-      rows.push_back({p.wheel == wrc::contact_patch_t::LEFT ? "left" : "right", number(p.s_wheel),
-                      number(p.contact_angle), number(p.a), number(p.b), number(p.penetration), number(p.normal_force),
-                      number(p.fx), number(p.fy), number(p.mz), number(p.creepage_x), number(p.creepage_y),
-                      number(p.spin_creepage), number(p.rolling_radius), number(p.s_rail), number(p.wheel_point[0]),
-                      number(p.wheel_point[1]), number(p.wheel_point[2])});
+      rows.push_back({p.wheel == wrc::contact_patch_t::LEFT ? "left" : "right", cell(p.s_wheel),
+                      cell(p.contact_angle), cell(p.a), cell(p.b), cell(p.penetration), cell(p.normal_force),
+                      cell(p.fx), cell(p.fy), cell(p.mz), cell(p.creepage_x), cell(p.creepage_y),
+                      cell(p.spin_creepage), cell(p.rolling_radius), cell(p.s_rail), cell(p.wheel_point[0]),
+                      cell(p.wheel_point[1]), cell(p.wheel_point[2])});
     }
   }
   std::ostringstream out;

@@ -46,8 +46,8 @@ done
 wrc status || true
 if [ "$ready" = 1 ]; then
   for model in onepoint interp multipoint; do
-    printf '\n%s, y = 5 mm, rigid formulation, 77357.5 N per wheel:\n' "$model"
-    wrc query --model "$model" --y 0.005 --format table || echo "query to $model failed"
+    printf '\n%s, y = 5.2 mm, rigid formulation, 77357.5 N per wheel:\n' "$model"
+    wrc query --model "$model" --y 0.0052 --format table || echo "query to $model failed"
   done
 else
   echo "the contact services did not report READY; launcher log:"; cat "$log"

@@ -81,16 +81,26 @@ double ContactLocus::distance_curvature_bound(double s0, double s1) const {
   return rpp * (1 + zp * sr) + zpp * wy * wy + 2 * (r0_ * theta_rate * theta_rate + rp * theta_rate) + 1.0;
 }
 
-double ContactLocus::lateral_at(double s) const {
+ContactLocus::LeanPoint ContactLocus::lean_at(double s) const {
+  // at() without the x components, the 3-D vectors and the rail lookup.
   s = std::clamp(s, wheel_.lower(), wheel_.upper());
   const ProfileSample f = wheel_.evaluate(s);
   const double radius = r0_ + f.height;
   const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
   const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
   const double st = q * cos_beta_ - cq * sin_beta_, ct = cq * cos_beta_ + q * sin_beta_;
-  return rotation_(1, 0) * (-radius * st) + rotation_(1, 1) * sigma_ * (taping_ + s) + rotation_(1, 2) * (-radius * ct) +
-         pose_.y;
+  const double dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
+  const double bx = -radius * st, by = sigma_ * (taping_ + s), bz = -radius * ct;
+  const double dx = -f.slope * st - radius * ct * dtheta, dy = sigma_, dz = -f.slope * ct + radius * st * dtheta;
+  LeanPoint p;
+  p.y = rotation_(1, 0) * bx + rotation_(1, 1) * by + rotation_(1, 2) * bz + pose_.y;
+  p.z = rotation_(2, 0) * bx + rotation_(2, 1) * by + rotation_(2, 2) * bz + pose_.z;
+  p.dy = rotation_(1, 0) * dx + rotation_(1, 1) * dy + rotation_(1, 2) * dz;
+  p.dz = rotation_(2, 0) * dx + rotation_(2, 1) * dy + rotation_(2, 2) * dz;
+  return p;
 }
+
+double ContactLocus::lateral_at(double s) const { return lean_at(s).y; }
 
 double ContactLocus::s_at_lateral(double y) const {
   // The locus point's lateral position is about y + sigma (taping + s): start there, then secant.
@@ -108,45 +118,20 @@ double ContactLocus::s_at_lateral(double y) const {
 }
 
 void ContactLocus::distance_and_slope(double s, double& distance, double& slope) const {
-  s = std::clamp(s, wheel_.lower(), wheel_.upper());
-  const ProfileSample f = wheel_.evaluate(s);
-  const double radius = r0_ + f.height;
-  const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
-  const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
-  const double st = q * cos_beta_ - cq * sin_beta_, ct = cq * cos_beta_ + q * sin_beta_;
-  const double dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
-  const double bx = -radius * st, by = sigma_ * (taping_ + s), bz = -radius * ct;
-  const double dx = -f.slope * st - radius * ct * dtheta, dy = sigma_, dz = -f.slope * ct + radius * st * dtheta;
-  const double wy = rotation_(1, 0) * bx + rotation_(1, 1) * by + rotation_(1, 2) * bz + pose_.y;
-  const double wz = rotation_(2, 0) * bx + rotation_(2, 1) * by + rotation_(2, 2) * bz + pose_.z;
-  const double ty = rotation_(1, 0) * dx + rotation_(1, 1) * dy + rotation_(1, 2) * dz;
-  const double tz = rotation_(2, 0) * dx + rotation_(2, 1) * dy + rotation_(2, 2) * dz;
+  const LeanPoint p = lean_at(s);
   double rail_z, rail_slope;
-  if (!rail_.height_and_slope_at(wy, rail_z, rail_slope)) {
+  if (!rail_.height_and_slope_at(p.y, rail_z, rail_slope)) {
     distance = slope = std::numeric_limits<double>::quiet_NaN();
     return;
   }
-  distance = wz - rail_z;
-  slope = tz - rail_slope * ty;
+  distance = p.z - rail_z;
+  slope = p.dz - rail_slope * p.dy;
 }
 
 double ContactLocus::distance_slope(double s) const {
-  // The lean path of at(): only the lateral position and the y, z components of the tangent.
-  s = std::clamp(s, wheel_.lower(), wheel_.upper());
-  const ProfileSample f = wheel_.evaluate(s);
-  const double radius = r0_ + f.height;
-  const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
-  const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
-  const double st = q * cos_beta_ - cq * sin_beta_, ct = cq * cos_beta_ + q * sin_beta_;
-  const double dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
-  const double bx = -radius * st, by = sigma_ * (taping_ + s), bz = -radius * ct;
-  const double dx = -f.slope * st - radius * ct * dtheta, dy = sigma_, dz = -f.slope * ct + radius * st * dtheta;
-  const double wy = rotation_(1, 0) * bx + rotation_(1, 1) * by + rotation_(1, 2) * bz + pose_.y;
-  const double ty = rotation_(1, 0) * dx + rotation_(1, 1) * dy + rotation_(1, 2) * dz;
-  const double tz = rotation_(2, 0) * dx + rotation_(2, 1) * dy + rotation_(2, 2) * dz;
-  double rail_slope;
-  if (!rail_.slope_at(wy, rail_slope)) return std::numeric_limits<double>::quiet_NaN();
-  return tz - rail_slope * ty;
+  double distance, slope;
+  distance_and_slope(s, distance, slope);
+  return slope;
 }
 
 Eigen::Vector3d ContactLocus::wheel_normal(const LocusPoint& p, double slope) const {

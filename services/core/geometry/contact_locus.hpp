@@ -75,6 +75,12 @@ class ContactLocus {
   double taping_y() const { return sigma_ * taping_; }
 
  private:
+  // Track-frame lateral position and height of a locus point and their derivatives along s.
+  struct LeanPoint {
+    double y, z, dy, dz;
+  };
+  LeanPoint lean_at(double s) const;
+
   const Profile& wheel_;
   const PlacedRail& rail_;
   const SlopeEnvelope* wheel_envelope_;

@@ -128,6 +128,8 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
 }
 
 bool PlacedRail::height_and_slope_at(double y, double& z, double& slope) const {
+  // One profile evaluation: the Newton correction du of solve_u moves height and slope by the
+  // first terms of their Taylor series; the neglected terms are O(v''' du^2) ~ 1e-15 relative.
   const double ly = side_sign_ * y;
   if (!(ly >= table_y_.front() && ly <= table_y_.back())) return false;
   const double u = hermite_u(ly);
@@ -165,16 +167,8 @@ double PlacedRail::solve_u(double ly) const {
 }
 
 bool PlacedRail::slope_at(double y, double& slope) const {
-  const double ly = side_sign_ * y;
-  if (!(ly >= table_y_.front() && ly <= table_y_.back())) return false;
-  // One profile evaluation: the Newton correction du of solve_u moves the slope by v'' du, to
-  // first order; the neglected term is O(v''' du^2) ~ 1e-15 relative.
-  const double u = hermite_u(ly);
-  const ProfileSample p = rail_->evaluate(u);
-  const double du = -(local_y(u, p.height) - ly) / (cos_ - p.slope * sin_);
-  const double v1 = p.slope + p.curvature * du;
-  slope = side_sign_ * (sin_ + v1 * cos_) / (cos_ - v1 * sin_);
-  return true;
+  double z;
+  return height_and_slope_at(y, z, slope);
 }
 
 RailSample PlacedRail::at(double y) const {

@@ -138,9 +138,16 @@ std::vector<ScanSample> sample_locus(const ContactLocus& locus, const PotentialP
       h = std::clamp(std::fabs(g) / window_bound(s, s + search.step), search.min_step, search.step);
       const double excess = x.distance - level;
       if (certify && excess > 0) {
-        // Longest step over which d - |g| t - M t^2 / 2 stays above the level.
-        const double m = window_bound(s, s + long_step);
-        const double t = std::min(long_step, (-std::fabs(g) + std::sqrt(g * g + 2 * m * excess)) / m);
+        // Longest step over which the lower bound d + g t - M t^2 / 2 stays above the level, with
+        // M bounding |d2 distance/ds2| over the step: first over two steps, then, if the step
+        // reaches beyond, over the longer window (the step never leaves the window it was bounded on).
+        auto reach = [&](double m) { return (g + std::sqrt(g * g + 2 * m * excess)) / m; };
+        double window = 2 * search.step;
+        double t = std::min(window, reach(window_bound(s, s + window)));
+        if (t >= window) {
+          window = long_step;
+          t = std::max(t, std::min(window, reach(window_bound(s, s + window))));
+        }
         if (t > h) {
           h = t;
           x.clear_after = true;

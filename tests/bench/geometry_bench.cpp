@@ -77,6 +77,18 @@ void BM_RigidSolveWarm(benchmark::State& state) {
 }
 BENCHMARK(BM_RigidSolveWarm)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 
+// The same with a yaw angle of 5 mrad (the curve C leaves the axle's vertical plane).
+void BM_RigidSolveWarmYawed(benchmark::State& state) {
+  const RigidWheelsetSolver solver(geometry(), options_for(state));
+  RigidContact previous = solver.solve(-0.010, 0.005);
+  int k = 1;
+  for (auto _ : state) {
+    const double y = -0.010 + 1e-5 * (k++ % 2001);
+    previous = solver.solve(y, 0.005, previous);
+  }
+}
+BENCHMARK(BM_RigidSolveWarmYawed)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
+
 // The table of issue 3: y from -10 to 10 mm in 0.01 mm steps (2001 values) at 11 yaw angles
 // from -10 to 10 mrad, warm-started along y.
 void BM_Table2001x11(benchmark::State& state) {

@@ -86,10 +86,14 @@ ContactLocus::LeanPoint ContactLocus::lean_at(double s) const {
   s = std::clamp(s, wheel_.lower(), wheel_.upper());
   const ProfileSample f = wheel_.evaluate(s);
   const double radius = r0_ + f.height;
-  const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
-  const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
-  const double st = q * cos_beta_ - cq * sin_beta_, ct = cq * cos_beta_ + q * sin_beta_;
-  const double dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
+  double st = -sin_beta_, ct = cos_beta_, dtheta = 0.0;  // without yaw (a12 = 0) theta is constant
+  if (a12_ != 0.0) {
+    const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
+    const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
+    st = q * cos_beta_ - cq * sin_beta_;
+    ct = cq * cos_beta_ + q * sin_beta_;
+    dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
+  }
   const double bx = -radius * st, by = sigma_ * (taping_ + s), bz = -radius * ct;
   const double dx = -f.slope * st - radius * ct * dtheta, dy = sigma_, dz = -f.slope * ct + radius * st * dtheta;
   LeanPoint p;

@@ -134,11 +134,14 @@ bool PlacedRail::height_and_slope_at(double y, double& z, double& slope) const {
   if (!(ly >= table_y_.front() && ly <= table_y_.back())) return false;
   const double u = hermite_u(ly);
   const ProfileSample p = rail_->evaluate(u);
-  const double du = -(local_y(u, p.height) - ly) / (cos_ - p.slope * sin_);
+  const double inverse_stretch = 1.0 / (cos_ - p.slope * sin_);
+  const double du = -(local_y(u, p.height) - ly) * inverse_stretch;
   const double v1 = p.slope + p.curvature * du;
   const double v = p.height + du * (p.slope + 0.5 * p.curvature * du);
   z = local_z(u + du, v);
-  slope = side_sign_ * (sin_ + v1 * cos_) / (cos_ - v1 * sin_);
+  // 1/(cos - v1 sin) to first order in du (v1 - p.slope is of order 1e-9): saves a division.
+  const double stretch_correction = 1.0 + p.curvature * du * sin_ * inverse_stretch;
+  slope = side_sign_ * (sin_ + v1 * cos_) * inverse_stretch * stretch_correction;
   return true;
 }
 

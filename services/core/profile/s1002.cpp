@@ -45,7 +45,8 @@ ProfileSample arc(double a, double r, double c, double sign, double s) {
   // Clamp: at the flange back (S = -70) the argument is exactly zero (vertical tangent).
   const double q = std::max(r * r - x * x, 1e-12 * r * r);
   const double root = std::sqrt(q);
-  return {a + sign * root, -sign * x / root, -sign * r * r / (q * root)};
+  const double inv = 1.0 / root;  // one division: slope -x/root, second derivative -r^2/root^3
+  return {a + sign * root, -sign * x * inv, -sign * r * r * inv * inv * inv};
 }
 
 }  // namespace

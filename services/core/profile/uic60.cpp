@@ -21,7 +21,8 @@ ProfileSample upper_arc(double cu, double cv, double r, double x) {
   const double dx = x - cu;
   const double q = std::max(r * r - dx * dx, 1e-12 * r * r);
   const double root = std::sqrt(q);
-  return {cv + root, -dx / root, -r * r / (q * root)};
+  const double inv = 1.0 / root;  // one division: slope -dx/root, second derivative -r^2/root^3
+  return {cv + root, -dx * inv, -r * r * inv * inv * inv};
 }
 
 }  // namespace

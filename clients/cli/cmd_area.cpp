@@ -64,13 +64,8 @@ int run_area(const std::vector<std::string>& args) {
     return 0;
   }
   const WheelsetGeometry geometry = geometry_from_options(opt);
-  WheelsetPose pose;
-  pose.y = opt.required_number("--y", -0.05, 0.05);
-  pose.roll = opt.number("--roll", 0.0, -0.1, 0.1);
-  pose.yaw = opt.number("--yaw", 0.0, -0.1, 0.1);
-  pose.z = geometry.track().nominal_radius;
-  const WheelSide side = opt.choice("--wheel-side", {"left", "right"}, "left") == "left" ? WheelSide::kLeft
-                                                                                         : WheelSide::kRight;
+  const WheelsetPose pose = pose_from_options(opt, geometry.track().nominal_radius);
+  const WheelSide side = side_from_options(opt);
   const double eps0 = opt.number("--eps0", 150e-6, 1e-9, 0.01);
   ContactAreaOptions options;
   options.n_xi = options.n_eta = opt.integer("--grid", 61, 2, 2001);

@@ -32,13 +32,8 @@ int run_points(const std::vector<std::string>& args) {
     return 0;
   }
   const WheelsetGeometry geometry = geometry_from_options(opt);
-  WheelsetPose pose;
-  pose.y = opt.required_number("--y", -0.05, 0.05);
-  pose.roll = opt.number("--roll", 0.0, -0.1, 0.1);
-  pose.yaw = opt.number("--yaw", 0.0, -0.1, 0.1);
-  pose.z = opt.number("--z", geometry.track().nominal_radius, 0.0, 2.0);
-  const WheelSide side = opt.choice("--wheel-side", {"left", "right"}, "left") == "left" ? WheelSide::kLeft
-                                                                                         : WheelSide::kRight;
+  const WheelsetPose pose = pose_from_options(opt, opt.number("--z", geometry.track().nominal_radius, 0.0, 2.0));
+  const WheelSide side = side_from_options(opt);
   const bool csv = opt.choice("--format", {"csv", "table"}, "table") == "csv";
   const auto points = geometry.potential_points(side, pose);
   const auto common = select_common_point(points);

@@ -15,4 +15,10 @@ std::vector<OptionSpec> profile_option_specs();
 /// Builds the wheelset geometry from parsed options (defaults: S1002 on UIC60, standard track).
 WheelsetGeometry geometry_from_options(const Options& options);
 
+/// The wheelset pose from --y (required) [m], --roll and --yaw (default 0) [rad], with height z [m].
+WheelsetPose pose_from_options(const Options& options, double z);
+
+/// The wheel named by --wheel-side: left (default) or right.
+WheelSide side_from_options(const Options& options);
+
 }  // namespace wrc::cli

@@ -67,18 +67,30 @@ LocusPoint ContactLocus::at(double s) const {
 
 double ContactLocus::distance_curvature_bound(double s0, double s1) const {
   if (!wheel_envelope_ || wheel_envelope_->empty()) return 0.0;
-  // distance'' = W_z'' - z_r''(W_y')^2 - z_r' W_y'' along C. With roll phi and yaw psi:
-  // |W_z''| <= |F''| (1 + ...) , |W_y'| <= 1 + |F'| |sin phi|, |W_y''| <= |F''| |sin phi| + yaw terms;
-  // theta' ~ sin(psi) F'' adds r0 theta'^2 and |F'| theta' to the curvature of C.
-  const double rpp = wheel_envelope_->max_second(s0, s1), rp = wheel_envelope_->max_slope(s0, s1);
-  const double sr = abs_sin_roll_, sy = abs_sin_yaw_;
+  // distance'' = W_z'' - z_r'' (W_y')^2 - z_r' W_y'' along C. Without yaw, W_z'' = -F'' cos(roll),
+  // W_y' = sigma cos(roll) + F' sin(roll), W_y'' = F'' sin(roll): the wheel and rail curvature terms
+  // are bounded together by interval arithmetic (on a conformal tread they nearly cancel), the
+  // roll coupling and the yaw terms (theta' ~ sin(yaw) F'': r0 theta'^2 and |F'| theta') by magnitudes.
+  const double sr = abs_sin_roll_, sy = abs_sin_yaw_, cr = std::sqrt(std::max(0.0, 1 - sr * sr));
+  double w2lo, w2hi;
+  wheel_envelope_->second_range(s0, s1, w2lo, w2hi);
+  const double rp = wheel_envelope_->max_slope(s0, s1);
+  const double rpp = std::max(std::fabs(w2lo), std::fabs(w2hi));
   const double y0 = pose_.y + sigma_ * (taping_ + s0), y1 = pose_.y + sigma_ * (taping_ + s1);
   const double pad = 1e-3 + r0_ * (sr + sy);
   const double ya = std::min(y0, y1) - pad, yb = std::max(y0, y1) + pad;
-  const double zpp = rail_.envelope().max_second(ya, yb), zp = rail_.envelope().max_slope(ya, yb);
+  double z2lo, z2hi;
+  rail_.envelope().second_range(ya, yb, z2lo, z2hi);
+  const double zp = rail_.envelope().max_slope(ya, yb);
   const double theta_rate = sy * rpp * 1.1;
-  const double wy = 1 + rp * sr + r0_ * theta_rate * sy;
-  return rpp * (1 + zp * sr) + zpp * wy * wy + 2 * (r0_ * theta_rate * theta_rate + rp * theta_rate) + 1.0;
+  const double wy_lo = std::max(0.0, cr - rp * sr - r0_ * theta_rate * sy), wy_hi = cr + rp * sr + r0_ * theta_rate * sy;
+  const double w_lo = wy_lo * wy_lo, w_hi = wy_hi * wy_hi;
+  // -F'' cos(roll) - z_r'' w with F'' in [w2lo, w2hi], z_r'' in [z2lo, z2hi], w in [w_lo, w_hi].
+  const double products[4] = {z2lo * w_lo, z2lo * w_hi, z2hi * w_lo, z2hi * w_hi};
+  const double rail_lo = *std::min_element(products, products + 4), rail_hi = *std::max_element(products, products + 4);
+  const double lo = -w2hi * cr - rail_hi, hi = -w2lo * cr - rail_lo;
+  const double coupled = std::max(std::fabs(lo), std::fabs(hi));
+  return coupled + zp * rpp * sr + 2 * (r0_ * theta_rate * theta_rate + rp * theta_rate) + 1.0;
 }
 
 ContactLocus::LeanPoint ContactLocus::lean_at(double s) const {

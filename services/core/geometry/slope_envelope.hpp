@@ -24,11 +24,20 @@ class SlopeEnvelope {
   double max_slope(double a, double b) const;
   /// Largest |f''| on [a, b] (clamped to the domain) [1/m].
   double max_second(double a, double b) const;
+  /// Signed range [low, high] of f'' on [a, b] (clamped to the domain) [1/m].
+  void second_range(double a, double b, double& low, double& high) const;
 
  private:
   int bin_of(double x) const;
   double lower_ = 0, bin_ = 1, inverse_bin_ = 1;
   std::vector<double> slope_, second_;
+  std::vector<double> second_low_, second_high_;
+  // runs_[w][i]: the same over bins i .. i + w.
+  static constexpr int kRun = 8;
+  struct Run {
+    std::vector<double> slope, second, low, high;
+  };
+  Run runs_[kRun];
 };
 
 }  // namespace wrc

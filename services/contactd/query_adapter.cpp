@@ -32,7 +32,6 @@ std::string check_positive(const std::string& name, double value, double hi, con
 }
 
 std::string validate_configuration(const wrc::wheelset_configuration_t& c, int i, bool rigid) {
-  const std::string p = "configurations[" + std::to_string(i) + "].";
   struct Field {
     const char* name;
     double value;
@@ -55,7 +54,9 @@ std::string validate_configuration(const wrc::wheelset_configuration_t& c, int i
       {"normal_load_right", c.normal_load_right, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
   };
   for (const Field& f : fields) {
-    if (std::string why = check_range(p + f.name, f.value, f.lo, f.hi, f.unit); !why.empty()) return why;
+    // The field's full name is built only for the message of a bad value (hot path otherwise).
+    if (std::isfinite(f.value) && f.value >= f.lo && f.value <= f.hi) continue;
+    return check_range("configurations[" + std::to_string(i) + "]." + f.name, f.value, f.lo, f.hi, f.unit);
   }
   return {};
 }

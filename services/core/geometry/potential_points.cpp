@@ -175,6 +175,10 @@ std::vector<ContactPoint> roots_of(const ContactLocus& locus, const std::vector<
     const bool minimum = fa < fb;
     if (only_minima && !minimum) return;
     const RootResult r = brent_root(slope, a, b, fa, fb, search.tolerance);
+    // With yaw, d(distance)/ds jumps at wheel curvature breakpoints (theta' follows F''); a sign
+    // change across such a jump is no zero. A true root located to the tolerance leaves
+    // |slope| <= tolerance * max|d2 distance/ds2|, far below 1e-6.
+    if (!(std::fabs(r.fx) < 1e-6)) return;
     if (!points.empty() && std::fabs(points.back().s - r.x) < 10 * search.tolerance) return;
     points.push_back(make_contact_point(locus, r.x, minimum));
   };

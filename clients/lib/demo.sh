@@ -36,7 +36,9 @@ done
 
 section "Contact services on the bus (wrc launch, wrc status, wrc query)"
 log=$(mktemp)
-wrc launch contact-onepoint contact-interp contact-multipoint pingd >"$log" 2>&1 &
+# The launcher itself (not a shell function around it) runs in the background, so that $! is its
+# pid and SIGTERM reaches it: it then stops every service it started.
+"$WRC_BUILD_DIR/clients/wrc-cli" launch contact-onepoint contact-interp contact-multipoint pingd >"$log" 2>&1 &
 launcher=$!
 trap 'kill -TERM $launcher 2>/dev/null || true; wait $launcher 2>/dev/null || true; rm -f "$log"' EXIT
 ready=0

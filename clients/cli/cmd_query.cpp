@@ -5,9 +5,7 @@
 // is addressed. When none is heard within 1.5 s, the query starts one (wrc-contactd from the build
 // tree) in the background, waits for READY, asks it and stops it afterwards.
 
-#include <fcntl.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -30,6 +28,7 @@
 #include "bus/heartbeat_monitor.hpp"
 #include "bus/request_client.hpp"
 #include "bus/service_loop.hpp"
+#include "bus/spawn_child.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
@@ -110,24 +109,8 @@ class StartedService {
       : log_(std::move(log)) {
     std::vector<std::string> words{path};
     words.insert(words.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& w : words) argv.push_back(w.data());
-    argv.push_back(nullptr);
-    const pid_t parent = ::getpid();
-    pid_ = ::fork();
+    pid_ = bus::spawn_tied_child(words, SIGTERM, log_);  // the service drains when the query dies
     if (pid_ < 0) throw std::runtime_error("fork failed");
-    if (pid_ == 0) {
-      ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // the service drains when the query dies
-      if (::getppid() != parent) ::_exit(1);
-      const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      if (fd >= 0) {
-        ::dup2(fd, 1);
-        ::dup2(fd, 2);
-        ::close(fd);
-      }
-      ::execv(argv[0], argv.data());
-      ::_exit(127);
-    }
   }
   ~StartedService() { stop(); }
   StartedService(const StartedService&) = delete;

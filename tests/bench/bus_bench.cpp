@@ -9,7 +9,6 @@
 #include <benchmark/benchmark.h>
 #include <lcm/lcm-cpp.hpp>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "bus/spawn_child.hpp"
 #include "bus/build_paths.hpp"
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
@@ -81,21 +81,7 @@ class BareClient {
 };
 
 // ---- set-up shared by the benchmarks ------------------------------------------------------------
-pid_t spawn(const std::vector<std::string>& words) {
-  std::vector<std::string> w = words;
-  std::vector<char*> argv;
-  for (auto& s : w) argv.push_back(s.data());
-  argv.push_back(nullptr);
-  const pid_t parent = ::getpid();
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent) ::_exit(1);
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
+pid_t spawn(const std::vector<std::string>& words) { return wrc::bus::spawn_tied_child(words, SIGKILL); }
 
 struct Bench {
   using Client = wrc::bus::RequestClient<wrc::ping_request_t, wrc::ping_reply_t>;

@@ -1,8 +1,6 @@
 #include "child_process.hpp"
 
-#include <fcntl.h>
 #include <signal.h>
-#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,6 +11,7 @@
 #include <thread>
 
 #include "bus/clock.hpp"
+#include "bus/spawn_child.hpp"
 
 namespace wrc::bus::test {
 
@@ -20,26 +19,8 @@ ChildProcess::ChildProcess(const std::string& path, const std::vector<std::strin
                            const std::string& log_path) {
   std::vector<std::string> words{path};
   words.insert(words.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  const pid_t parent = ::getpid();
-  pid_ = ::fork();
+  pid_ = spawn_tied_child(words, SIGKILL, log_path);
   if (pid_ < 0) throw std::runtime_error("fork failed");
-  if (pid_ == 0) {
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent) ::_exit(1);
-    if (!log_path.empty()) {
-      const int fd = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      if (fd >= 0) {
-        ::dup2(fd, 1);
-        ::dup2(fd, 2);
-        ::close(fd);
-      }
-    }
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
 }
 
 ChildProcess::~ChildProcess() {

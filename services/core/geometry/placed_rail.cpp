@@ -112,13 +112,13 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
   table_du_.resize(kTableNodes);
   for (int i = 0; i < kTableNodes; ++i)
     table_du_[i] = table_dy_ / (cos_ - rail_->evaluate(table_u_[i]).slope * sin_);  // du/dy * dy
-  table_y_ = {y_first, y_last};
+  table_y_last_ = y_last;
   if (side_sign_ > 0) {
-    y_lower_ = table_y_.front();
-    y_upper_ = table_y_.back();
+    y_lower_ = table_y0_;
+    y_upper_ = table_y_last_;
   } else {
-    y_lower_ = -table_y_.back();
-    y_upper_ = -table_y_.front();
+    y_lower_ = -table_y_last_;
+    y_upper_ = -table_y0_;
   }
   envelope_ = SlopeEnvelope(y_lower_, y_upper_, 1e-3, 32, 1.25, [this](double y, double& d1, double& d2) {
     const RailSample r = at(y);
@@ -131,7 +131,7 @@ bool PlacedRail::height_and_slope_at(double y, double& z, double& slope) const {
   // One profile evaluation: the Newton correction du of solve_u moves height and slope by the
   // first terms of their Taylor series; the neglected terms are O(v''' du^2) ~ 1e-15 relative.
   const double ly = side_sign_ * y;
-  if (!(ly >= table_y_.front() && ly <= table_y_.back())) return false;
+  if (!(ly >= table_y0_ && ly <= table_y_last_)) return false;
   const double u = hermite_u(ly);
   const ProfileSample p = rail_->evaluate(u);
   const double inverse_stretch = 1.0 / (cos_ - p.slope * sin_);
@@ -177,7 +177,7 @@ bool PlacedRail::slope_at(double y, double& slope) const {
 RailSample PlacedRail::at(double y) const {
   RailSample r;
   const double ly = side_sign_ * y;
-  if (!(ly >= table_y_.front() && ly <= table_y_.back())) return r;
+  if (!(ly >= table_y0_ && ly <= table_y_last_)) return r;
   r.u = solve_u(ly);
   const ProfileSample p = rail_->evaluate(r.u);
   const double stretch = cos_ - p.slope * sin_;

@@ -80,10 +80,9 @@ class PlacedRail {
   double y_lower_ = 0, y_upper_ = 0;
   double gauge_point_y_ = 0;
   SlopeEnvelope envelope_;
-  std::vector<double> table_y_;  // side-local y of the first and last table node
   std::vector<double> table_u_;  // u at uniformly spaced side-local y
   std::vector<double> table_du_; // du/dy at the nodes times the node spacing
-  double table_y0_ = 0, table_dy_ = 1;
+  double table_y0_ = 0, table_y_last_ = 0, table_dy_ = 1;  // side-local y of the first and last node, spacing
 };
 
 }  // namespace wrc

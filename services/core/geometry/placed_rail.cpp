@@ -125,6 +125,13 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
     d1 = r.slope;
     d2 = r.d2;
   });
+  for (double u : rail_->breakpoints()) {
+    double y, z;
+    profile_to_track(u, y, z);
+    surface_breaks_.push_back(y);
+  }
+  surface_breaks_.push_back(y_lower_ + 1e-9);
+  surface_breaks_.push_back(y_upper_ - 1e-9);
 }
 
 bool PlacedRail::height_and_slope_at(double y, double& z, double& slope) const {

@@ -62,6 +62,9 @@ class PlacedRail {
   double curvature_at(double u) const;
   /// Bounds of |dz/dy| and |d2z/dy2| of the rail surface over track-y bins (step-size control).
   const SlopeEnvelope& envelope() const { return envelope_; }
+  /// Track-frame lateral positions [m] where the surface's curvature may jump: the profile's
+  /// breakpoints and the two edges of the surface (1e-9 m inside), in no particular order.
+  const std::vector<double>& surface_breaks() const { return surface_breaks_; }
 
  private:
   double local_y(double u, double v) const { return axis_ + u * cos_ - v * sin_; }  // side-local |y|
@@ -80,6 +83,7 @@ class PlacedRail {
   double y_lower_ = 0, y_upper_ = 0;
   double gauge_point_y_ = 0;
   SlopeEnvelope envelope_;
+  std::vector<double> surface_breaks_;
   std::vector<double> table_u_;  // u at uniformly spaced side-local y
   std::vector<double> table_du_; // du/dy at the nodes times the node spacing
   double table_y0_ = 0, table_y_last_ = 0, table_dy_ = 1;  // side-local y of the first and last node, spacing

@@ -71,43 +71,51 @@ struct ScanSample {
   bool clear_after = false; // no distance below the level between this sample and the next
 };
 
-// Samples d(distance)/ds along C. Adaptive: no root lies within |g| / max|g'| of a sample with
-// value g. With a finite level, a step may also be as long as the distance provably stays above
-// the level (quadratic lower bound d - |g| h - M h^2 / 2), and such intervals are marked clear.
-std::vector<ScanSample> sample_locus(const ContactLocus& locus, const PotentialPointSearch& search, double level) {
+// Buffers of one scan, kept per thread so that a scan allocates nothing once they have grown.
+struct ScanScratch {
   std::vector<ScanSample> samples;
+  std::vector<double> breaks;
+  std::vector<double> block_bounds;
+};
+
+ScanScratch& scan_scratch() {
+  thread_local ScanScratch scratch;
+  return scratch;
+}
+
+// Samples d(distance)/ds along C into `samples`. Adaptive: no root lies within |g| / max|g'| of a
+// sample with value g. With a finite level, a step may also be as long as the distance provably
+// stays above the level (quadratic lower bound d - |g| h - M h^2 / 2), and such intervals are
+// marked clear.
+void sample_locus(const ContactLocus& locus, const PotentialPointSearch& search, double level,
+                  ScanScratch& scratch) {
+  std::vector<ScanSample>& samples = scratch.samples;
+  samples.clear();
   const double lo = locus.s_lower(), hi = locus.s_upper();
-  if (!(hi > lo)) return samples;
+  if (!(hi > lo)) return;
   const bool certify = std::isfinite(level);
 
   // Breakpoints of both profiles: the distance's curvature may jump there, so a pair of roots can
   // hide in a kink between two samples. They are always sampled, as are the edges of the rail
   // surface (so that no stretch next to an edge goes unsampled).
-  std::vector<double> breaks;
+  std::vector<double>& breaks = scratch.breaks;
+  breaks.clear();
   for (double b : locus.wheel_profile().breakpoints())
     if (b > lo && b < hi) breaks.push_back(b);
-  std::vector<double> rail_y;
-  for (double u : locus.rail().profile().breakpoints()) {
-    double y_rail, z_rail;
-    locus.rail().profile_to_track(u, y_rail, z_rail);
-    rail_y.push_back(y_rail);
-  }
-  rail_y.push_back(locus.rail().y_lower() + 1e-9);
-  rail_y.push_back(locus.rail().y_upper() - 1e-9);
-  for (double y : rail_y) {
+  for (double y : locus.rail().surface_breaks()) {
     const double s = locus.s_at_lateral(y);
     if (s > lo && s < hi) breaks.push_back(s);
   }
   std::sort(breaks.begin(), breaks.end());
   breaks.push_back(hi);
 
-  samples.reserve(256);
   const bool adaptive = locus.distance_curvature_bound(lo, lo + search.step) > 0;
   const double long_step = 10 * search.step;
   // Bounds of |d2 distance/ds2| per block of two steps; a window's bound is the largest of its blocks.
   const double block = 2 * search.step;
   const int blocks = static_cast<int>(std::ceil((hi - lo) / block)) + 1;
-  std::vector<double> block_bounds(adaptive ? blocks : 0, -1.0);  // computed when first needed
+  std::vector<double>& block_bounds = scratch.block_bounds;  // computed when first needed
+  block_bounds.assign(adaptive ? blocks : 0, -1.0);
   auto window_bound = [&](double a, double b) {
     const int i0 = std::clamp(static_cast<int>((a - lo) / block), 0, blocks - 1);
     const int i1 = std::clamp(static_cast<int>((b - lo) / block), 0, blocks - 1);
@@ -156,11 +164,12 @@ std::vector<ScanSample> sample_locus(const ContactLocus& locus, const PotentialP
     }
     double next = s + h;
     while (next_break < breaks.size() && breaks[next_break] <= s) ++next_break;
+    // Off the rail (no slope) the locus stays off it up to the next rail edge, which is a break.
+    if (std::isnan(g) && next_break < breaks.size()) next = breaks[next_break];
     if (next_break < breaks.size() && breaks[next_break] < next + 0.25 * search.min_step) next = breaks[next_break];
     s = std::min(next, hi);
     samples.push_back(x);
   }
-  return samples;
 }
 
 // Zeros of d(distance)/ds between samples (sign changes, and pairs found by the tangency check).
@@ -226,11 +235,15 @@ std::vector<ContactPoint> roots_of(const ContactLocus& locus, const std::vector<
 }  // namespace
 
 std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const PotentialPointSearch& search) {
-  return roots_of(locus, sample_locus(locus, search, std::numeric_limits<double>::infinity()), search, false);
+  ScanScratch& scratch = scan_scratch();
+  sample_locus(locus, search, std::numeric_limits<double>::infinity(), scratch);
+  return roots_of(locus, scratch.samples, search, false);
 }
 
 std::vector<ContactPoint> find_minima_below(const ContactLocus& locus, double level, const PotentialPointSearch& search) {
-  std::vector<ContactPoint> minima = roots_of(locus, sample_locus(locus, search, level), search, true);
+  ScanScratch& scratch = scan_scratch();
+  sample_locus(locus, search, level, scratch);
+  std::vector<ContactPoint> minima = roots_of(locus, scratch.samples, search, true);
   minima.erase(std::remove_if(minima.begin(), minima.end(), [&](const ContactPoint& p) { return !(p.distance < level); }),
                minima.end());
   return minima;

@@ -8,7 +8,7 @@
 namespace wrc {
 namespace {
 // Sampling of the distance that gives the common-point search its level [m].
-constexpr double kCoarseStep = 2.5e-3;
+constexpr double kCoarseStep = 5.0e-3;
 }  // namespace
 
 ProfilePtr WheelsetGeometry::checked_wheel(ProfilePtr wheel) {

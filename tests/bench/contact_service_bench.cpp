@@ -15,7 +15,8 @@
 // time; service_spin shows the round trip without that wake-up.
 // Goal (issue 4): median(service) <= median(bare) + median(in_process) + 0.1 median(bare), checked
 // against both bare floors (goal_ping, goal_contact, and goal_spin_* for service_spin; 1 = met).
-// Run on a private bus:
+// Run on a private bus (WRC_BENCH_SERVICES=1 starts the one-point service alone; every process
+// on an LCM bus receives every message, so fewer listeners mean less noise):
 //   clients/lib/netns.sh build/tests/bench_contact_service
 // (`bench_contact_service --bare-echo` is the echo process it starts itself.)
 
@@ -27,6 +28,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -215,7 +217,10 @@ struct Bench {
     if (!contactd) throw std::runtime_error("wrc-contactd is not built");
     children.push_back(spawn({"/proc/self/exe", "--bare-echo"}));
     const wrc::bus::ChannelNames names;
+    const char* limit = std::getenv("WRC_BENCH_SERVICES");
+    const std::size_t count = limit ? std::strtoul(limit, nullptr, 10) : 3;
     for (const char* model : kModels) {
+      if (services.size() == count) break;
       children.push_back(spawn({*contactd, "--model", model, "--instance", "bench"}));
       ModelService m;
       m.name = model;

@@ -7,9 +7,7 @@
 /// reply types `int64_t request_id`.
 
 #include <lcm/lcm-cpp.hpp>
-#include <sched.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -29,10 +27,6 @@ namespace wrc::bus {
 struct CallPolicy {
   double timeout = 0.2;  ///< [s] wait for a reply per attempt, > 0
   int retries = 3;       ///< [-] re-sends after the first attempt, >= 0
-  /// [s] poll for the reply without sleeping for up to this long before blocking, >= 0. A
-  /// sleeping CPU takes microseconds to wake (more in a virtual machine); polling saves that
-  /// when the reply comes soon and a spare core runs the service. 0: block at once.
-  double spin = 0.0;
 };
 
 /// Counters of one client, for logs, heartbeats and run summaries.
@@ -95,9 +89,6 @@ class RequestClient {
     if (policy.retries < 0) {
       throw std::invalid_argument("call retries " + std::to_string(policy.retries) + " is negative");
     }
-    if (!(policy.spin >= 0.0) || !std::isfinite(policy.spin)) {
-      throw std::invalid_argument("call spin " + std::to_string(policy.spin) + " s is not a number >= 0");
-    }
     ++counters_.calls;
     pending_id_ = ++last_id_;
     request.request_id = pending_id_;
@@ -113,7 +104,7 @@ class RequestClient {
       }
       ++counters_.sent;
       ++result.attempts;
-      wait_for_answer(monotonic_seconds() + policy.timeout, policy.spin);
+      wait_for_answer(monotonic_seconds() + policy.timeout);
     }
     pending_id_ = 0;
     if (answer_) {
@@ -138,15 +129,7 @@ class RequestClient {
   const ClientCounters& counters() const { return counters_; }
 
  private:
-  void wait_for_answer(double deadline, double spin) {
-    const double spin_until = std::min(deadline, monotonic_seconds() + spin);
-    while (!answer_ && spin > 0.0 && monotonic_seconds() < spin_until) {
-      const int rc = lcm_.handleTimeout(0);
-      if (rc < 0 && errno != EINTR) throw std::runtime_error("LCM handle failed while waiting for a reply");
-      if (rc < 0) return;
-      // LCM's receive thread, which queues the reply, may wait for this CPU: let it run.
-      if (rc == 0) sched_yield();
-    }
+  void wait_for_answer(double deadline) {
     while (!answer_) {
       const double remaining = deadline - monotonic_seconds();
       if (remaining <= 0.0) return;

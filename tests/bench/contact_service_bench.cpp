@@ -6,17 +6,19 @@
 //   bare_compute  : the bare echo that also evaluates the query with the model (no bus layer, no
 //                   adapter): the floor of a service round trip that waits for the computation
 //   service       : wrc::bus::RequestClient -> wrc-contactd --model onepoint, one configuration,
-//                   both wheels, FASTSIM 20x20; the client blocks while it waits, as the bare ones do
-//   service_spin  : the same call with CallPolicy::spin = 1 ms: the client polls instead of sleeping
+//                   both wheels, FASTSIM 20x20
 //   in_process    : ContactModel::evaluate of the same query in this process
 //   *_eval        : the evaluation time measured inside the echo and the service (same code)
-// On a virtual machine a CPU that sleeps longer wakes up more slowly: bare_compute exceeds
-// bare_contact + in_process by a few microseconds although all three evaluations take the same
-// time; service_spin shows the round trip without that wake-up.
+// Every iteration runs the measurements in a new random order (fixed seed): a process that has
+// just answered is warmer (caches, scheduler) than one that has waited, and no round trip may
+// profit from always coming right after its own process's last answer.
 // Goal (issue 4): median(service) <= median(bare) + median(in_process) + 0.1 median(bare), checked
-// against both bare floors (goal_ping, goal_contact, and goal_spin_* for service_spin; 1 = met).
-// Run on a private bus (WRC_BENCH_SERVICES=1 starts the one-point service alone; every process
-// on an LCM bus receives every message, so fewer listeners mean less noise):
+// against both bare floors (goal_ping, goal_contact; 1 = met). PerModel/<i> measures each of the
+// three services against bare_contact the same way.
+// Run on a private bus (WRC_BENCH_SERVICES=1 starts the one-point service alone: every process
+// on an LCM bus receives every message, so fewer listeners mean less noise; WRC_BENCH_PIN=1 puts
+// this process on CPU 0 and the echo and services on CPU 1, so that the echo and the service run
+// under the same conditions in every run):
 //   clients/lib/netns.sh build/tests/bench_contact_service
 // (`bench_contact_service --bare-echo` is the echo process it starts itself.)
 
@@ -32,6 +34,8 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <numeric>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -159,17 +163,12 @@ class BareClient {
   }
   /// Compute time reported in the last reply [s] (0 for pings).
   double compute_time() const { return compute_time_; }
-  /// One round trip, polling for the reply for up to `spin` [s] before blocking (as
-  /// CallPolicy::spin does); false on a 1 s timeout.
-  bool round_trip(double spin = 0.0) {
+  /// One round trip; false on a 1 s timeout.
+  bool round_trip() {
     request_.request_id = ++id_;
     got_ = false;
     lcm_.publish(out_, &request_);
     const double deadline = wrc::bus::monotonic_seconds() + 1.0;
-    const double spin_until = wrc::bus::monotonic_seconds() + spin;
-    while (!got_ && wrc::bus::monotonic_seconds() < spin_until) {
-      if (lcm_.handleTimeout(0) == 0) sched_yield();
-    }
     while (!got_ && wrc::bus::monotonic_seconds() < deadline) lcm_.handleTimeout(1000);
     return got_;
   }
@@ -189,7 +188,25 @@ class BareClient {
   double compute_time_ = 0.0;
 };
 
-pid_t spawn(const std::vector<std::string>& words) { return wrc::bus::spawn_tied_child(words, SIGKILL); }
+// With WRC_BENCH_PIN=1 this process runs on CPU 0 and every child on CPU 1: no run depends on
+// where the scheduler happened to put the processes (needs two CPUs).
+bool pinned() {
+  const char* pin = std::getenv("WRC_BENCH_PIN");
+  return pin != nullptr && std::string(pin) == "1";
+}
+
+void pin_to(pid_t pid, int cpu) {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(cpu, &set);
+  if (sched_setaffinity(pid, sizeof set, &set) != 0) throw std::runtime_error("cannot pin a process to CPU " + std::to_string(cpu));
+}
+
+pid_t spawn(const std::vector<std::string>& words) {
+  const pid_t pid = wrc::bus::spawn_tied_child(words, SIGKILL);
+  if (pinned()) pin_to(pid, 1);
+  return pid;
+}
 
 // One contact service process with its client, the same model in this process and its query.
 struct ModelService {
@@ -211,6 +228,7 @@ struct Bench {
   std::vector<pid_t> children;
 
   Bench() {
+    if (pinned()) pin_to(0, 0);
     lcm = std::make_unique<lcm::LCM>("");
     if (!lcm->good()) throw std::runtime_error("LCM not usable (run through clients/lib/netns.sh)");
     const auto contactd = wrc::bus::find_service_executable("wrc-contactd", wrc::bus::build_dir());
@@ -276,13 +294,9 @@ double percentile(std::vector<double> v, double p) {
   return v[i];
 }
 
-// CallPolicy::spin of the spinning service calls [s]: longer than any evaluation, so the client
-// never sleeps while the service computes.
-constexpr double kSpin = 1e-3;
-
 // One call to a service; its evaluation time as the service reports it [s] goes to `evaluation`.
-bool service_round_trip(ModelService& service, double spin, double& evaluation) {
-  auto r = service.client->call(service.query, {1.0, 0, spin});
+bool service_round_trip(ModelService& service, double& evaluation) {
+  auto r = service.client->call(service.query, {1.0, 0});
   if (!r) return false;
   evaluation = r.reply->compute_time;
   return r.reply->status == wrc::contact_reply_t::OK && r.reply->results[0].num_patches >= 2;
@@ -303,88 +317,89 @@ void InProcess(benchmark::State& state) {
 }
 
 // The one-point service against every floor (issue 4's goal).
+// Runs every measurement once per iteration, in a new random order each time.
+void run_shuffled(benchmark::State& state, const std::vector<std::function<void()>>& measurements,
+                  const std::function<void()>& after_iteration = {}) {
+  std::vector<std::size_t> order(measurements.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::mt19937 random(20261122);
+  for (auto _ : state) {
+    std::shuffle(order.begin(), order.end(), random);
+    for (std::size_t i : order) measurements[i]();
+    if (after_iteration) after_iteration();
+  }
+}
+
+// The one-point service against every floor (issue 4's goal).
 void Interleaved(benchmark::State& state) {
   ModelService& onepoint = bench().services[0];
-  std::vector<double> ping_us, contact_us, compute_us, contact_spin_us, compute_spin_us;
-  std::vector<double> service_us, spin_us, local_us;
+  std::vector<double> ping_us, contact_us, compute_us, service_us, local_us;
   std::vector<double> echo_eval_us, service_eval_us;  // evaluation time inside the other processes
   const wrc::ContactQuery q = library_query(onepoint.query);
-  double evaluation = 0.0;
-  for (auto _ : state) {
-    time_into(ping_us, [] { return bench().bare_ping->round_trip(); }, state, "bare ping timed out");
-    time_into(contact_us, [] { return bench().bare_contact->round_trip(); }, state, "bare contact timed out");
-    time_into(compute_us, [] { return bench().bare_compute->round_trip(); }, state, "bare compute timed out");
-    echo_eval_us.push_back(bench().bare_compute->compute_time() * 1e6);
-    time_into(contact_spin_us, [] { return bench().bare_contact->round_trip(kSpin); }, state,
-              "spinning bare contact timed out");
-    time_into(compute_spin_us, [] { return bench().bare_compute->round_trip(kSpin); }, state,
-              "spinning bare compute timed out");
-    time_into(service_us, [&] { return service_round_trip(onepoint, 0.0, evaluation); }, state,
-              "service round trip failed");
-    service_eval_us.push_back(evaluation * 1e6);
-    time_into(spin_us, [&] { return service_round_trip(onepoint, kSpin, evaluation); }, state,
-              "spinning service round trip failed");
-    time_into(local_us, [&] {
-      benchmark::DoNotOptimize(onepoint.model->evaluate(q));
-      return true;
-    }, state, "");
-  }
+  double service_evaluation = 0.0;
+  run_shuffled(
+      state,
+      {[&] { time_into(ping_us, [] { return bench().bare_ping->round_trip(); }, state, "bare ping timed out"); },
+       [&] { time_into(contact_us, [] { return bench().bare_contact->round_trip(); }, state, "bare contact timed out"); },
+       [&] { time_into(compute_us, [] { return bench().bare_compute->round_trip(); }, state, "bare compute timed out"); },
+       [&] {
+         time_into(service_us, [&] { return service_round_trip(onepoint, service_evaluation); }, state,
+                   "service round trip failed");
+       },
+       [&] {
+         time_into(local_us, [&] {
+           benchmark::DoNotOptimize(onepoint.model->evaluate(q));
+           return true;
+         }, state, "");
+       }},
+      [&] {
+        echo_eval_us.push_back(bench().bare_compute->compute_time() * 1e6);
+        service_eval_us.push_back(service_evaluation * 1e6);
+      });
   const double ping = percentile(ping_us, 0.5), contact = percentile(contact_us, 0.5);
-  const double contact_spin = percentile(contact_spin_us, 0.5);
-  const double service = percentile(service_us, 0.5), spin = percentile(spin_us, 0.5);
-  const double local = percentile(local_us, 0.5);
+  const double service = percentile(service_us, 0.5), local = percentile(local_us, 0.5);
   state.counters["bare_ping_median_us"] = ping;
   state.counters["bare_contact_median_us"] = contact;
   state.counters["bare_compute_median_us"] = percentile(compute_us, 0.5);
-  state.counters["bare_contact_spin_median_us"] = contact_spin;
-  state.counters["bare_compute_spin_median_us"] = percentile(compute_spin_us, 0.5);
   state.counters["service_median_us"] = service;
-  state.counters["service_spin_median_us"] = spin;
   state.counters["in_process_median_us"] = local;
   state.counters["echo_eval_median_us"] = percentile(echo_eval_us, 0.5);
   state.counters["service_eval_median_us"] = percentile(service_eval_us, 0.5);
   state.counters["service_p99_us"] = percentile(service_us, 0.99);
   state.counters["bare_contact_p99_us"] = percentile(contact_us, 0.99);
   const double budget_ping = 1.1 * ping + local, budget_contact = 1.1 * contact + local;
-  const double budget_spin = 1.1 * contact_spin + local;
   state.counters["budget_ping_us"] = budget_ping;
   state.counters["budget_contact_us"] = budget_contact;
-  state.counters["budget_spin_us"] = budget_spin;
   state.counters["goal_ping"] = service <= budget_ping ? 1 : 0;
   state.counters["goal_contact"] = service <= budget_contact ? 1 : 0;
-  // Both sides polling: the spinning service against the spinning bare echo.
-  state.counters["goal_spin"] = spin <= budget_spin ? 1 : 0;
 }
 
-// Each service (argument: index into kModels) against the bare contact echo, blocking and
-// polling, with its in-process evaluation.
+// Each service (argument: index into kModels) against the bare contact echo, with its in-process
+// evaluation.
 void PerModel(benchmark::State& state) {
   ModelService& m = bench().services[static_cast<std::size_t>(state.range(0))];
-  std::vector<double> contact_us, contact_spin_us, service_us, spin_us, local_us;
+  std::vector<double> contact_us, service_us, local_us;
   const wrc::ContactQuery q = library_query(m.query);
   double evaluation = 0.0;
-  for (auto _ : state) {
-    time_into(contact_us, [] { return bench().bare_contact->round_trip(); }, state, "bare contact timed out");
-    time_into(contact_spin_us, [] { return bench().bare_contact->round_trip(kSpin); }, state,
-              "spinning bare contact timed out");
-    time_into(service_us, [&] { return service_round_trip(m, 0.0, evaluation); }, state, "service round trip failed");
-    time_into(spin_us, [&] { return service_round_trip(m, kSpin, evaluation); }, state,
-              "spinning service round trip failed");
-    time_into(local_us, [&] {
-      benchmark::DoNotOptimize(m.model->evaluate(q));
-      return true;
-    }, state, "");
-  }
-  const double contact = percentile(contact_us, 0.5), contact_spin = percentile(contact_spin_us, 0.5);
-  const double service = percentile(service_us, 0.5), spin = percentile(spin_us, 0.5);
+  run_shuffled(
+      state,
+      {[&] { time_into(contact_us, [] { return bench().bare_contact->round_trip(); }, state, "bare contact timed out"); },
+       [&] {
+         time_into(service_us, [&] { return service_round_trip(m, evaluation); }, state, "service round trip failed");
+       },
+       [&] {
+         time_into(local_us, [&] {
+           benchmark::DoNotOptimize(m.model->evaluate(q));
+           return true;
+         }, state, "");
+       }});
+  const double contact = percentile(contact_us, 0.5), service = percentile(service_us, 0.5);
   const double local = percentile(local_us, 0.5);
   state.counters["bare_contact_median_us"] = contact;
-  state.counters["bare_contact_spin_median_us"] = contact_spin;
   state.counters["service_median_us"] = service;
-  state.counters["service_spin_median_us"] = spin;
   state.counters["in_process_median_us"] = local;
+  state.counters["budget_contact_us"] = 1.1 * contact + local;
   state.counters["goal_contact"] = service <= 1.1 * contact + local ? 1 : 0;
-  state.counters["goal_spin"] = spin <= 1.1 * contact_spin + local ? 1 : 0;
   state.SetLabel(m.name);
 }
 

@@ -33,20 +33,6 @@ TEST_F(BusTest, PingRoundTrips) {
   }
 }
 
-// A client that polls for its replies instead of sleeping (CallPolicy::spin) gets every reply over
-// a real bus in its first attempt.
-TEST_F(BusTest, SpinningClientGetsEveryReply) {
-  auto pingd = start_pingd("a", 0.1);
-  ASSERT_TRUE(wait_ready("pingd", "a", 5.0)) << "wrc-pingd sent no READY heartbeat";
-  for (int i = 0; i < 200; ++i) {
-    auto req = ping(i % 64);
-    auto result = client_->call(req, {0.5, 2, 0.5});
-    ASSERT_TRUE(result) << "ping " << i << " unanswered";
-    EXPECT_EQ(result.reply->request_id, req.request_id);
-    EXPECT_EQ(result.attempts, 1);
-  }
-}
-
 // With 20 % of all UDP packets on the bus port dropped by nftables (requests, replies and
 // heartbeats alike), every call still succeeds through retries, and retries did happen.
 TEST_F(BusTest, RequestReplySurvivesPacketLoss) {

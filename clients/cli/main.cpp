@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bus/line_atomic_stderr.hpp"
 #include "cli/command.hpp"
 
 namespace wrc::cli {
@@ -28,6 +29,7 @@ void print_usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  wrc::bus::make_stderr_line_atomic();  // one log shared with other processes: whole lines only
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     print_usage(std::cout);

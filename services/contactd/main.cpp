@@ -23,6 +23,7 @@
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
 #include "bus/heartbeat_publisher.hpp"
+#include "bus/line_atomic_stderr.hpp"
 #include "bus/request_server.hpp"
 #include "bus/service_loop.hpp"
 #include "bus/service_options.hpp"
@@ -181,6 +182,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
 }  // namespace
 
 int main(int argc, char** argv) {
+  wrc::bus::make_stderr_line_atomic();  // one log shared with other processes: whole lines only
   try {
     const auto service = wrc::bus::ServiceOptions::parse(argc, argv);
     if (service.help) {

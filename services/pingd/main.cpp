@@ -10,6 +10,7 @@
 
 #include "bus/channels.hpp"
 #include "bus/heartbeat_publisher.hpp"
+#include "bus/line_atomic_stderr.hpp"
 #include "bus/request_server.hpp"
 #include "bus/service_loop.hpp"
 #include "bus/service_options.hpp"
@@ -73,6 +74,7 @@ int run(const wrc::bus::ServiceOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  wrc::bus::make_stderr_line_atomic();  // one log shared with other processes: whole lines only
   try {
     const auto options = wrc::bus::ServiceOptions::parse(argc, argv);
     if (options.help) {

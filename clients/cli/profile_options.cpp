@@ -51,7 +51,7 @@ WheelsetPose pose_from_options(const Options& options, double z) {
   WheelsetPose pose;
   pose.y = options.required_number("--y", -0.05, 0.05);
   pose.roll = options.number("--roll", 0.0, -0.1, 0.1);
-  pose.yaw = options.number("--yaw", 0.0, -0.1, 0.1);
+  pose.yaw = options.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
   pose.z = z;
   return pose;
 }

@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <iostream>
 #include <streambuf>
-#include <string>
 
 namespace wrc::bus {
 namespace {
@@ -17,7 +16,7 @@ void write_all(const char* data, std::size_t size) {
   while (size > 0) {
     const ssize_t n = ::write(STDERR_FILENO, data, size);
     if (n < 0) {
-      if (errno == EINTR) continue;
+      if (errno == EINTR || errno == EAGAIN) continue;  // EAGAIN: a non-blocking stderr that is full
       return;  // nowhere left to report a failing stderr
     }
     data += n;
@@ -25,12 +24,37 @@ void write_all(const char* data, std::size_t size) {
   }
 }
 
+// Each thread's unfinished line. Trivially destructible, so that it stays usable while the
+// process exits (atexit handlers and static destructors run after the thread's objects with
+// destructors are gone).
+struct PendingLine {
+  char text[kMaxLine];
+  std::size_t size;
+};
+thread_local PendingLine pending_line{};
+
+void emit() {
+  write_all(pending_line.text, pending_line.size);
+  pending_line.size = 0;
+}
+
+// Writes what a thread leaves unfinished when it ends (the main thread's rest is written at exit).
+struct FlushAtThreadEnd {
+  ~FlushAtThreadEnd() { emit(); }
+};
+
+void append(const char* s, std::size_t n) {
+  thread_local FlushAtThreadEnd flush_at_thread_end;
+  (void)flush_at_thread_end;
+  for (std::size_t i = 0; i < n; ++i) {
+    pending_line.text[pending_line.size++] = s[i];
+    if (s[i] == '\n' || pending_line.size == kMaxLine) emit();
+  }
+}
+
 // Each thread collects its own line (so that threads writing at once do not mix their pieces)
 // and hands it to the kernel in one write(2).
 class LineAtomicBuffer : public std::streambuf {
- public:
-  static void flush_partial() { emit(); }
-
  protected:
   int_type overflow(int_type ch) override {
     if (traits_type::eq_int_type(ch, traits_type::eof())) return traits_type::not_eof(ch);
@@ -44,25 +68,8 @@ class LineAtomicBuffer : public std::streambuf {
     return n;
   }
 
-  int sync() override { return 0; }  // complete lines are out already; a partial one waits for '\n'
-
- private:
-  static std::string& line() {
-    thread_local std::string pending;
-    return pending;
-  }
-  static void append(const char* s, std::size_t n) {
-    std::string& pending = line();
-    for (std::size_t i = 0; i < n; ++i) {
-      pending.push_back(s[i]);
-      if (s[i] == '\n' || pending.size() >= kMaxLine) emit();
-    }
-  }
-  static void emit() {
-    std::string& pending = line();
-    write_all(pending.data(), pending.size());
-    pending.clear();
-  }
+  // Complete lines are out already; an unfinished one waits for its '\n' (or the thread's end).
+  int sync() override { return 0; }
 };
 
 LineAtomicBuffer* installed = nullptr;
@@ -73,7 +80,7 @@ void make_stderr_line_atomic() {
   if (installed != nullptr) return;
   installed = new LineAtomicBuffer;  // never destroyed: std::cerr may be used until the very end
   std::cerr.rdbuf(installed);
-  std::atexit([] { LineAtomicBuffer::flush_partial(); });
+  std::atexit([] { emit(); });
 }
 
 }  // namespace wrc::bus

@@ -11,8 +11,10 @@ namespace wrc::bus {
 /// Routes std::cerr through a line buffer from now on: each thread's text is collected until '\n'
 /// and the line is written with one write(2) to file descriptor 2; a line longer than 4096 bytes
 /// is written as soon as it reaches that size. Call it from main before other threads start; a
-/// second call changes nothing. The buffer is never destroyed, so that output during static
-/// destruction still arrives; the main thread's unfinished last line is written at exit.
+/// second call changes nothing. The buffers stay usable until the process ends, so that output
+/// from atexit handlers and static destructors still arrives; an unfinished line is written when
+/// its thread ends or, for the main thread, at exit. std::cerr.flush() does not write an
+/// unfinished line, and nothing pending survives std::_Exit or a crash: end messages with '\n'.
 void make_stderr_line_atomic();
 
 }  // namespace wrc::bus

@@ -5,6 +5,8 @@
 #include <exception>
 #include <stdexcept>
 
+#include "core/geometry/wheelset_geometry.hpp"
+
 namespace wrc::contactd {
 
 namespace {
@@ -44,7 +46,7 @@ std::string validate_configuration(const wrc::wheelset_configuration_t& c, int i
       {"y", c.y, -0.5, 0.5, "m"},
       {"z", c.z, -10.0, 10.0, "m"},
       {"roll", c.roll, -0.5, 0.5, "rad"},
-      {"yaw", c.yaw, -0.5, 0.5, "rad"},
+      {"yaw", c.yaw, -wrc::kMaxValidatedYaw, wrc::kMaxValidatedYaw, "rad"},  // validated geometry
       {"y_dot", c.y_dot, -100.0, 100.0, "m/s"},
       {"z_dot", c.z_dot, -100.0, 100.0, "m/s"},
       {"roll_dot", c.roll_dot, -100.0, 100.0, "rad/s"},

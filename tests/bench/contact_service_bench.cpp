@@ -8,7 +8,8 @@
 //   service       : wrc::bus::RequestClient -> wrc-contactd --model onepoint, one configuration,
 //                   both wheels, FASTSIM 20x20
 //   in_process    : ContactModel::evaluate of the same query in this process
-//   *_eval        : the evaluation time measured inside the echo and the service (same code)
+//   *_eval        : the evaluation time measured inside the echo (the model) and the service (the
+//                   model and its message adapter)
 // Every iteration runs the measurements in a new random order (fixed seed): a process that has
 // just answered is warmer (caches, scheduler) than one that has waited, and no round trip may
 // profit from always coming right after its own process's last answer.
@@ -294,6 +295,17 @@ double percentile(std::vector<double> v, double p) {
   return v[i];
 }
 
+// The service of model kModels[index], or nothing (the benchmark skipped) when WRC_BENCH_SERVICES
+// left it out.
+ModelService* started_service(benchmark::State& state, std::int64_t index) {
+  auto& services = bench().services;
+  if (index < 0 || static_cast<std::size_t>(index) >= services.size()) {
+    state.SkipWithError("this service was not started (WRC_BENCH_SERVICES)");
+    return nullptr;
+  }
+  return &services[static_cast<std::size_t>(index)];
+}
+
 // One call to a service; its evaluation time as the service reports it [s] goes to `evaluation`.
 bool service_round_trip(ModelService& service, double& evaluation) {
   auto r = service.client->call(service.query, {1.0, 0});
@@ -310,13 +322,14 @@ void time_into(std::vector<double>& into, const std::function<bool()>& f, benchm
 }
 
 void InProcess(benchmark::State& state) {
-  const ModelService& m = bench().services[static_cast<std::size_t>(state.range(0))];
+  const ModelService* service = started_service(state, state.range(0));
+  if (service == nullptr) return;
+  const ModelService& m = *service;
   const wrc::ContactQuery q = library_query(m.query);
   for (auto _ : state) benchmark::DoNotOptimize(m.model->evaluate(q));
   state.SetLabel(m.name);
 }
 
-// The one-point service against every floor (issue 4's goal).
 // Runs every measurement once per iteration, in a new random order each time.
 void run_shuffled(benchmark::State& state, const std::vector<std::function<void()>>& measurements,
                   const std::function<void()>& after_iteration = {}) {
@@ -332,7 +345,9 @@ void run_shuffled(benchmark::State& state, const std::vector<std::function<void(
 
 // The one-point service against every floor (issue 4's goal).
 void Interleaved(benchmark::State& state) {
-  ModelService& onepoint = bench().services[0];
+  ModelService* started = started_service(state, 0);
+  if (started == nullptr) return;
+  ModelService& onepoint = *started;
   std::vector<double> ping_us, contact_us, compute_us, service_us, local_us;
   std::vector<double> echo_eval_us, service_eval_us;  // evaluation time inside the other processes
   const wrc::ContactQuery q = library_query(onepoint.query);
@@ -377,7 +392,9 @@ void Interleaved(benchmark::State& state) {
 // Each service (argument: index into kModels) against the bare contact echo, with its in-process
 // evaluation.
 void PerModel(benchmark::State& state) {
-  ModelService& m = bench().services[static_cast<std::size_t>(state.range(0))];
+  ModelService* started = started_service(state, state.range(0));
+  if (started == nullptr) return;
+  ModelService& m = *started;
   std::vector<double> contact_us, service_us, local_us;
   const wrc::ContactQuery q = library_query(m.query);
   double evaluation = 0.0;

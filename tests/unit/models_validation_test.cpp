@@ -66,6 +66,7 @@ TEST(ModelsValidation, BadQueriesThrowNamingTheField) {
     const Case cases[] = {
         {[&](ContactQuery& q) { q.pose.y = nan; }, "pose.y", "nan"},
         {[&](ContactQuery& q) { q.pose.roll = nan; }, "pose.roll", "nan"},
+        {[&](ContactQuery& q) { q.pose.yaw = 0.07; }, "pose.yaw", "0.07"},  // beyond the validated 0.06
         {[&](ContactQuery& q) { q.pose.z = std::numeric_limits<double>::infinity(); }, "pose.z", "inf"},
         {[&](ContactQuery& q) { q.yaw_dot = nan; }, "yaw_dot", "nan"},
         {[&](ContactQuery& q) { q.spin_rate = nan; }, "spin_rate", "nan"},

@@ -164,8 +164,6 @@ void sample_locus(const ContactLocus& locus, const PotentialPointSearch& search,
     }
     double next = s + h;
     while (next_break < breaks.size() && breaks[next_break] <= s) ++next_break;
-    // Off the rail (no slope) the locus stays off it up to the next rail edge, which is a break.
-    if (std::isnan(g) && next_break < breaks.size()) next = breaks[next_break];
     if (next_break < breaks.size() && breaks[next_break] < next + 0.25 * search.min_step) next = breaks[next_break];
     s = std::min(next, hi);
     samples.push_back(x);

@@ -16,6 +16,12 @@
 
 namespace wrc {
 
+/// Largest |yaw| [rad] for which the common-point search is validated: against a 5 um sampling
+/// of the distance over y +-12 mm and roll +-20 mrad it finds the lowest point up to 60 mrad; from
+/// 70 mrad on (a wheelset yawed by 4 degrees) the wheel point's lateral position varies so much
+/// along the flange that the rail edges can be misplaced. Contact models reject larger yaw.
+constexpr double kMaxValidatedYaw = 0.06;
+
 /// Wheelset on track: the same wheel profile on both wheels (mirrored for the right wheel) and the
 /// same rail profile on both rails (mirrored for the right rail).
 class WheelsetGeometry {

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/geometry/wheelset_geometry.hpp"
+
 namespace wrc {
 namespace {
 
@@ -24,6 +26,8 @@ void validate_contact_query(const ContactQuery& q) {
   require_finite(q.pose.z, "pose.z [m]");
   require_finite(q.pose.roll, "pose.roll [rad]");
   require_finite(q.pose.yaw, "pose.yaw [rad]");
+  if (std::fabs(q.pose.yaw) > kMaxValidatedYaw)
+    reject("pose.yaw [rad]", q.pose.yaw, "is beyond the validated range +-0.06 rad of the contact geometry");
   require_finite(q.pose.x, "pose.x [m]");
   require_finite(q.y_dot, "y_dot [m/s]");
   require_finite(q.z_dot, "z_dot [m/s]");

@@ -1,5 +1,6 @@
 // std::cerr made line-atomic: lines written in many pieces by several threads at once reach
-// standard error whole, one line per write, none cut by another.
+// standard error whole, one line per write, none cut by another; a line longer than the atomic
+// size arrives complete, and what a thread leaves without '\n' is written when it ends.
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -16,6 +17,52 @@
 #include "bus/line_atomic_stderr.hpp"
 
 namespace {
+
+// Points file descriptor 2 at a new file for the lifetime of the object; contents() reads it.
+class CapturedStderr {
+ public:
+  CapturedStderr() {
+    char path[] = "/tmp/wrc_line_atomic_XXXXXX";
+    const int fd = ::mkstemp(path);
+    path_ = path;
+    ::close(fd);
+    log_ = ::open(path, O_WRONLY | O_APPEND);
+    saved_ = ::dup(STDERR_FILENO);
+    ::dup2(log_, STDERR_FILENO);
+  }
+  ~CapturedStderr() {
+    restore();
+    std::remove(path_.c_str());
+  }
+  void restore() {
+    if (saved_ < 0) return;
+    ::dup2(saved_, STDERR_FILENO);
+    ::close(saved_);
+    ::close(log_);
+    saved_ = -1;
+  }
+  bool ok() const { return log_ >= 0 && saved_ >= 0; }
+  std::string contents() const {
+    std::ifstream in(path_);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+ private:
+  std::string path_;
+  int log_ = -1, saved_ = -1;
+};
+
+TEST(LineAtomicStderr, LongLinesAndUnfinishedLinesArrive) {
+  wrc::bus::make_stderr_line_atomic();
+  CapturedStderr captured;
+  ASSERT_TRUE(captured.ok());
+  const std::string long_line(5000, 'x');  // longer than one atomic write (4096 bytes)
+  std::thread([&] { std::cerr << long_line << "\n" << "unfinished"; }).join();
+  captured.restore();
+  EXPECT_EQ(captured.contents(), long_line + "\nunfinished");
+}
 
 TEST(LineAtomicStderr, PiecewiseLinesFromThreadsArriveWhole) {
   char path[] = "/tmp/wrc_line_atomic_XXXXXX";

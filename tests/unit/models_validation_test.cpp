@@ -147,6 +147,14 @@ TEST(ModelsValidation, FactoryNames) {
   bad = ContactModelOptions{};
   bad.lateral_curvature_floor = -1;
   EXPECT_THROW(make_contact_model("onepoint", geometry, bad), std::invalid_argument);
+  bad = ContactModelOptions{};
+  bad.interp.yaw_max = 0.08;  // beyond kMaxValidatedYaw
+  try {
+    make_contact_model("interp", geometry, bad);
+    ADD_FAILURE() << "interp built with yaw_max = 0.08 rad";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("yaw_max = 0.08"), std::string::npos) << e.what();
+  }
 }
 
 // Conformal contact (concave wheel profile flatter than the rail: B <= 0) has no Hertz ellipse.

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/geometry/wheelset_geometry.hpp"
+
 namespace wrc {
 namespace {
 
@@ -30,6 +32,12 @@ void InterpolationGrid::validate() const {
   require_positive(y_max, "interpolation grid", "y_max", "m");
   require_positive(roll_max, "interpolation grid", "roll_max", "rad");
   require_positive(yaw_max, "interpolation grid", "yaw_max", "rad");
+  if (yaw_max > kMaxValidatedYaw) {
+    std::ostringstream msg;
+    msg << "interpolation grid: yaw_max = " << yaw_max << " rad is beyond the validated range "
+        << kMaxValidatedYaw << " rad of the contact geometry";
+    throw std::invalid_argument(msg.str());
+  }
 }
 
 void ContactModelOptions::validate() const {

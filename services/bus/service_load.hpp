@@ -29,6 +29,8 @@ class LatencyWindow {
   void summarise(ServiceLoad& load) const;
   /// Number of samples held.
   std::size_t size() const { return samples_.size(); }
+  /// The samples held [s], in no particular order.
+  const std::vector<double>& samples() const { return samples_; }
 
  private:
   std::size_t capacity_;

@@ -18,13 +18,17 @@
 #include <future>
 #include <iostream>
 #include <memory>
+#include <numeric>
+#include <string>
 #include <vector>
 
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
 #include "bus/heartbeat_publisher.hpp"
 #include "bus/line_atomic_stderr.hpp"
+#include "bus/percentile.hpp"
 #include "bus/request_server.hpp"
+#include "bus/service_load.hpp"
 #include "bus/service_loop.hpp"
 #include "bus/service_options.hpp"
 #include "bus/shutdown_signal.hpp"
@@ -60,35 +64,16 @@ Built build(const wrc::contactd::ContactdOptions& options) {
   return out;
 }
 
-/// Compute times of the recent queries, for the log (the heartbeat has mean, p95 and max).
-class ComputeTimes {
- public:
-  void add(double seconds) {
-    if (samples_.size() < kWindow) {
-      samples_.push_back(seconds);
-    } else {
-      samples_[next_] = seconds;
-    }
-    next_ = (next_ + 1) % kWindow;
-  }
-  std::string summary() const {
-    if (samples_.empty()) return "no queries";
-    std::vector<double> s = samples_;
-    std::sort(s.begin(), s.end());
-    double sum = 0.0;
-    for (double v : s) sum += v;
-    auto at = [&](double p) { return s[std::min(s.size() - 1, static_cast<std::size_t>(p * (s.size() - 1) + 0.5))]; };
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "compute time over the last %zu queries: mean %.1f us, p50 %.1f us, p99 %.1f us",
-                  s.size(), 1e6 * sum / s.size(), 1e6 * at(0.5), 1e6 * at(0.99));
-    return buf;
-  }
-
- private:
-  static constexpr std::size_t kWindow = 1000;
-  std::vector<double> samples_;
-  std::size_t next_ = 0;
-};
+/// The log line on the compute times of the recent queries (the heartbeat has mean, p95 and max).
+std::string compute_time_summary(const wrc::bus::LatencyWindow& times) {
+  const std::vector<double>& s = times.samples();
+  if (s.empty()) return "no queries";
+  const double mean = std::accumulate(s.begin(), s.end(), 0.0) / s.size();
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "compute time over the last %zu queries: mean %.1f us, p50 %.1f us, p99 %.1f us",
+                s.size(), 1e6 * mean, 1e6 * wrc::bus::percentile(s, 0.5), 1e6 * wrc::bus::percentile(s, 0.99));
+  return buf;
+}
 
 int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOptions& options) {
   using namespace wrc::bus;
@@ -135,7 +120,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
             << built.geometry_seconds << " s)\n";
 
   const wrc::ContactModel& model = *built.model;
-  ComputeTimes compute_times;
+  LatencyWindow compute_times;  // recent evaluation times [s], for the log
   wrc::contactd::InstanceFilter filter(*lcm, names.name(channel::kHeartbeat), model_name, instance);
   RequestServer<contact_query_t, contact_reply_t> server(
       *lcm, request_channel, sender, [&](const contact_query_t& query, contact_reply_t& reply) {
@@ -175,7 +160,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   const auto& c = server.counters();
   std::cerr << sender << ": stopped (signal " << ShutdownSignal::signal_number() << "), answered " << c.answered
             << ", rejected " << c.rejected << ", for other instances " << c.not_addressed << "; "
-            << compute_times.summary() << "\n";
+            << compute_time_summary(compute_times) << "\n";
   return rc;
 }
 

@@ -21,10 +21,12 @@
 #include <string>
 #include <vector>
 
+#include "bare_client.hpp"
 #include "bus/spawn_child.hpp"
 #include "bus/build_paths.hpp"
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
+#include "bus/percentile.hpp"
 #include "bus/request_client.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "wrc/ping_reply_t.hpp"
@@ -55,38 +57,13 @@ int run_bare_echo() {
   return 0;
 }
 
-// ---- the bare client: plain LCM request/reply with an id check ---------------------------------
-class BareClient {
- public:
-  explicit BareClient(lcm::LCM& lcm) : lcm_(lcm) { lcm_.subscribe(kBarePong, &BareClient::on_pong, this); }
-  /// One round trip; false on a 1 s timeout.
-  bool round_trip() {
-    wrc::ping_request_t req{};
-    req.request_id = ++id_;
-    req.reply_channel = kBarePong;
-    got_ = false;
-    lcm_.publish(kBarePing, &req);
-    const double deadline = wrc::bus::monotonic_seconds() + 1.0;
-    while (!got_ && wrc::bus::monotonic_seconds() < deadline) lcm_.handleTimeout(1000);
-    return got_;
-  }
-
- private:
-  void on_pong(const lcm::ReceiveBuffer*, const std::string&, const wrc::ping_reply_t* reply) {
-    if (reply->request_id == id_) got_ = true;
-  }
-  lcm::LCM& lcm_;
-  std::int64_t id_ = 0;
-  bool got_ = false;
-};
-
 // ---- set-up shared by the benchmarks ------------------------------------------------------------
 pid_t spawn(const std::vector<std::string>& words) { return wrc::bus::spawn_tied_child(words, SIGKILL); }
 
 struct Bench {
   using Client = wrc::bus::RequestClient<wrc::ping_request_t, wrc::ping_reply_t>;
   std::unique_ptr<lcm::LCM> lcm;
-  std::unique_ptr<BareClient> bare;
+  std::unique_ptr<wrc::bench::BareClient<wrc::ping_request_t, wrc::ping_reply_t>> bare;
   std::unique_ptr<Client> layer;
   std::vector<pid_t> children;
 
@@ -97,7 +74,10 @@ struct Bench {
     if (!pingd) throw std::runtime_error("wrc-pingd is not built");
     children.push_back(spawn({"/proc/self/exe", "--bare-echo"}));
     children.push_back(spawn({*pingd, "--instance", "bench"}));
-    bare = std::make_unique<BareClient>(*lcm);
+    wrc::ping_request_t ping{};
+    ping.reply_channel = kBarePong;
+    bare = std::make_unique<wrc::bench::BareClient<wrc::ping_request_t, wrc::ping_reply_t>>(*lcm, kBarePing,
+                                                                                          kBarePong, ping);
     const wrc::bus::ChannelNames names;
     const std::string id = wrc::bus::make_client_id("bench");
     layer = std::make_unique<Client>(*lcm, names.name(wrc::bus::channel::kPing),
@@ -112,12 +92,7 @@ struct Bench {
     }
     if (!bare_ok || !layer_ok) throw std::runtime_error("echo processes do not answer");
   }
-  ~Bench() {
-    for (pid_t pid : children) {
-      ::kill(pid, SIGTERM);
-      ::waitpid(pid, nullptr, 0);
-    }
-  }
+  ~Bench() { wrc::bench::stop_children(children); }
 };
 
 Bench& bench() {
@@ -125,11 +100,7 @@ Bench& bench() {
   return instance;
 }
 
-double percentile(std::vector<double> v, double p) {
-  std::sort(v.begin(), v.end());
-  const std::size_t i = std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5));
-  return v[i];
-}
+using wrc::bus::percentile;
 
 void report(benchmark::State& state, const std::string& prefix, const std::vector<double>& us) {
   state.counters[prefix + "median_us"] = percentile(us, 0.5);

@@ -41,10 +41,12 @@
 #include <string>
 #include <vector>
 
+#include "bare_client.hpp"
 #include "bus/spawn_child.hpp"
 #include "bus/build_paths.hpp"
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
+#include "bus/percentile.hpp"
 #include "bus/request_client.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "core/models/contact_model_factory.hpp"
@@ -151,43 +153,7 @@ int run_bare_echo() {
   return 0;
 }
 
-// ---- bare clients: plain LCM request/reply with an id check ---------------------------------------
-double compute_time_of(const wrc::contact_reply_t& reply) { return reply.compute_time; }
-double compute_time_of(const wrc::ping_reply_t&) { return 0.0; }
-
-template <class Request, class Reply>
-class BareClient {
- public:
-  BareClient(lcm::LCM& lcm, const char* out, const char* in, Request request)
-      : lcm_(lcm), out_(out), request_(std::move(request)) {
-    lcm_.subscribe(in, &BareClient::on_reply, this);
-  }
-  /// Compute time reported in the last reply [s] (0 for pings).
-  double compute_time() const { return compute_time_; }
-  /// One round trip; false on a 1 s timeout.
-  bool round_trip() {
-    request_.request_id = ++id_;
-    got_ = false;
-    lcm_.publish(out_, &request_);
-    const double deadline = wrc::bus::monotonic_seconds() + 1.0;
-    while (!got_ && wrc::bus::monotonic_seconds() < deadline) lcm_.handleTimeout(1000);
-    return got_;
-  }
-
- private:
-  void on_reply(const lcm::ReceiveBuffer*, const std::string&, const Reply* reply) {
-    if (reply->request_id == id_) {
-      got_ = true;
-      compute_time_ = compute_time_of(*reply);
-    }
-  }
-  lcm::LCM& lcm_;
-  const char* out_;
-  Request request_;
-  std::int64_t id_ = 0;
-  bool got_ = false;
-  double compute_time_ = 0.0;
-};
+using wrc::bench::BareClient;
 
 // With WRC_BENCH_PIN=1 this process runs on CPU 0 and every child on CPU 1: no run depends on
 // where the scheduler happened to put the processes (needs two CPUs).
@@ -276,12 +242,7 @@ struct Bench {
     }
     if (!all_ok()) throw std::runtime_error("the echo or a contact service does not answer");
   }
-  ~Bench() {
-    for (pid_t pid : children) {
-      ::kill(pid, SIGTERM);
-      ::waitpid(pid, nullptr, 0);
-    }
-  }
+  ~Bench() { wrc::bench::stop_children(children); }
 };
 
 Bench& bench() {
@@ -289,11 +250,7 @@ Bench& bench() {
   return instance;
 }
 
-double percentile(std::vector<double> v, double p) {
-  std::sort(v.begin(), v.end());
-  const std::size_t i = std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5));
-  return v[i];
-}
+using wrc::bus::percentile;
 
 // The service of model kModels[index], or nothing (the benchmark skipped) when WRC_BENCH_SERVICES
 // left it out.

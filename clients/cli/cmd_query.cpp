@@ -1,7 +1,7 @@
 // wrc query: one contact query to a running contact service (wrc-contactd --model M) and its
 // patches, one row per patch. The service is found by its heartbeat: a READY instance of model M
-// that computes with the asked geometry (its heartbeat's table_hash equals the key of the
-// profile and track options, contactd/geometry_key.hpp); with several, the smallest instance name
+// that computes with the asked geometry (its heartbeat's geometry_key equals the key of the
+// profile and track options, core/identity/geometry_key.hpp); with several, the smallest instance name
 // is addressed. When none is heard within 1.5 s, the query starts one (wrc-contactd from the build
 // tree) in the background, waits for READY, asks it and stops it afterwards.
 
@@ -32,10 +32,10 @@
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
-#include "contactd/geometry_key.hpp"
+#include "core/geometry/geometry_spec.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
-#include "core/profile/profile_factory.hpp"
+#include "core/identity/geometry_key.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
 
@@ -59,26 +59,6 @@ void parse_grid(const std::string& text, int* elements_per_strip, int* strips) {
   }
   *elements_per_strip = m;
   *strips = n;
-}
-
-contactd::GeometrySpec geometry_spec(const Options& o) {
-  contactd::GeometrySpec spec;
-  spec.wheel = o.text("--wheel", spec.wheel);
-  spec.rail = o.text("--rail", spec.rail);
-  TrackParameters& track = spec.track;
-  track.gauge = o.number("--gauge", track.gauge, 0.5, 2.5);
-  track.gauge_depth = o.number("--gauge-depth", track.gauge_depth, 0.0, 0.05);
-  track.flange_back_spacing = o.number("--flange-back", track.flange_back_spacing, 0.4, 2.4);
-  track.nominal_radius = o.number("--r0", track.nominal_radius, 0.1, 1.5);
-  if (o.has("--inclination")) {
-    try {
-      track.inclination = parse_inclination(o.text("--inclination"));
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--inclination: ") + e.what());
-    }
-  }
-  track.validate();
-  return spec;
 }
 
 // Height of the wheelset centre at which the closer wheel just touches its rail at (y, roll, yaw):
@@ -163,7 +143,7 @@ std::string tail_of(const std::string& path) {
 std::optional<bus::ServiceStatus> pick(const bus::HeartbeatMonitor& monitor, const std::string& model,
                                        const std::string& key, const std::string& instance, bool ready) {
   for (const auto& s : monitor.services(bus::monotonic_seconds())) {  // sorted by model, instance
-    if (s.last.model != model || !s.alive || s.last.table_hash != key) continue;
+    if (s.last.model != model || !s.alive || s.last.geometry_key != key) continue;
     if (!instance.empty() && s.last.instance != instance) continue;
     if (ready ? s.available() : s.last.state == wrc::heartbeat_t::STARTING) return s;
   }
@@ -290,8 +270,8 @@ int run_query(const std::vector<std::string>& args) {
   policy.retries = o.integer("--retries", 3, 0, 100);
   const double start_timeout = o.number("--start-timeout", 300.0, 0.1, 3600.0);
   const std::string format = o.choice("--format", {"csv", "table"}, "csv");
-  const contactd::GeometrySpec spec = geometry_spec(o);
-  const std::string key = contactd::geometry_key(spec);
+  const GeometrySpec spec = geometry_spec_from_options(o);
+  const std::string key = geometry_key(spec);
 
   // The configuration; the client's own geometry only serves z (and the rigid roll when elastic).
   wrc::wheelset_configuration_t c{};
@@ -304,8 +284,7 @@ int run_query(const std::vector<std::string>& args) {
   if (o.has("--z")) {
     c.z = o.number("--z", 0.0, -10.0, 10.0);
   } else {
-    const WheelsetGeometry geometry(make_profile(spec.wheel, ProfileSide::kWheel),
-                                    make_profile(spec.rail, ProfileSide::kRail), spec.track);
+    const WheelsetGeometry geometry = make_geometry(spec);
     if (formulation == "elastic" && !o.has("--roll")) {
       const RigidContact rigid = RigidWheelsetSolver(geometry).solve(y, yaw);
       c.roll = rigid.pose.roll;
@@ -317,7 +296,7 @@ int run_query(const std::vector<std::string>& args) {
   }
   wrc::contact_query_t query{};
   query.model = model;
-  query.table_hash = key;
+  query.geometry_key = key;
   query.formulation = formulation == "elastic" ? wrc::contact_query_t::ELASTIC : wrc::contact_query_t::RIGID;
   query.shear_modulus = o.number("--shear-modulus", 8.2e10, 1.0, 1e13);
   query.poisson_ratio = o.number("--poisson", 0.28, 0.0, 0.5);
@@ -338,7 +317,7 @@ int run_query(const std::vector<std::string>& args) {
                [&] { return (service = pick(monitor, model, key, wanted, true)).has_value(); });
   std::unique_ptr<StartedService> started;
   if (!service && !wanted.empty()) {
-    throw std::runtime_error("no READY instance '" + wanted + "' of model " + model + " with geometry " + key +
+    throw std::runtime_error("no READY instance '" + wanted + "' of model " + model + " with geometry_key " + key +
                              " heard within 1.5 s");
   }
   if (!service && pick(monitor, model, key, "", false)) {
@@ -352,7 +331,7 @@ int run_query(const std::vector<std::string>& args) {
     if (!path) throw std::runtime_error("no " + model + " service runs and wrc-contactd is not built in " + build);
     const std::string instance = "q" + std::to_string(::getpid());
     std::vector<std::string> service_args{"--model", model, "--instance", instance, "--heartbeat-period", "0.2"};
-    for (auto& a : contactd::geometry_arguments(spec)) service_args.push_back(a);
+    for (auto& a : geometry_arguments(spec)) service_args.push_back(a);
     if (o.has("--channel-prefix")) service_args.insert(service_args.end(), {"--channel-prefix", o.text("--channel-prefix")});
     if (o.has("--lcm-url")) service_args.insert(service_args.end(), {"--lcm-url", o.text("--lcm-url")});
     const std::string log =

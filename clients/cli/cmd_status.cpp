@@ -1,4 +1,5 @@
-// wrc status: lists the services on the bus from their heartbeats.
+// wrc status: lists the services on the bus from their heartbeats, with the first 12 hex digits
+// of the geometry key and of the model hash each computes with ("-" when none).
 
 #include <cmath>
 #include <iomanip>
@@ -14,6 +15,11 @@
 
 namespace wrc::cli {
 namespace {
+
+constexpr std::size_t kHashPrefix = 12;  // hex digits shown of a geometry key or model hash
+
+// The first kHashPrefix hex digits of a SHA-256, "-" when there is none.
+std::string short_hash(const std::string& hash) { return hash.empty() ? "-" : hash.substr(0, kHashPrefix); }
 
 const char* state_name(std::int8_t state) {
   switch (state) {
@@ -33,8 +39,9 @@ int run_status(const std::vector<std::string>& args) {
                    {"--format", true, "table or csv", "table"}},
                   args);
   if (options.help_requested()) {
-    std::cout << options.help() << "\nOne line per live service: model, instance, pid, state, "
-                                   "load and request channel.\n";
+    std::cout << options.help() << "\nOne line per live service: model, instance, pid, state, load, the\n"
+                                   "first 12 hex digits of its geometry key and model hash (- when none)\n"
+                                   "and its request channel.\n";
     return 0;
   }
   const double duration = options.number("--duration", 1.5, 0.05, 3600.0);
@@ -49,11 +56,13 @@ int run_status(const std::vector<std::string>& args) {
   const double now = bus::monotonic_seconds();
   std::ostringstream out;
   if (format == "csv") {
-    out << "model,instance,pid,state,alive,version,uptime,handled,rejected,latency_p95,request_channel\n";
+    out << "model,instance,pid,state,alive,version,uptime,handled,rejected,latency_p95,geometry_key,model_hash,"
+           "request_channel\n";
   } else {
     out << std::left << std::setw(12) << "MODEL" << std::setw(10) << "INSTANCE" << std::setw(8) << "PID"
         << std::setw(10) << "STATE" << std::setw(10) << "UPTIME[s]" << std::setw(10) << "HANDLED"
-        << std::setw(9) << "REJECTED" << std::setw(14) << "P95[s]" << "CHANNEL\n";
+        << std::setw(9) << "REJECTED" << std::setw(14) << "P95[s]" << std::setw(14) << "GEOMETRY" << std::setw(14)
+        << "MODEL-HASH" << "CHANNEL\n";
   }
   int shown = 0;
   for (const auto& s : monitor.services(now)) {
@@ -66,14 +75,15 @@ int run_status(const std::vector<std::string>& args) {
     if (format == "csv") {
       out << hb.model << "," << hb.instance << "," << hb.pid << "," << state << "," << (s.alive ? 1 : 0)
           << "," << hb.interface_version << "," << hb.uptime << "," << hb.requests_handled << ","
-          << hb.requests_rejected << "," << hb.latency_p95 << "," << hb.request_channel << "\n";
+          << hb.requests_rejected << "," << hb.latency_p95 << "," << short_hash(hb.geometry_key) << ","
+          << short_hash(hb.model_hash) << "," << hb.request_channel << "\n";
     } else {
       std::ostringstream uptime;
       uptime << std::fixed << std::setprecision(1) << hb.uptime;
       out << std::left << std::setw(12) << hb.model << std::setw(10) << hb.instance << std::setw(8) << hb.pid
           << std::setw(10) << state << std::setw(10) << uptime.str() << std::setw(10) << hb.requests_handled
-          << std::setw(9) << hb.requests_rejected << std::setw(14) << hb.latency_p95 << hb.request_channel
-          << "\n";
+          << std::setw(9) << hb.requests_rejected << std::setw(14) << hb.latency_p95 << std::setw(14)
+          << short_hash(hb.geometry_key) << std::setw(14) << short_hash(hb.model_hash) << hb.request_channel << "\n";
     }
   }
   std::cout << out.str();

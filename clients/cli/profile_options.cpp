@@ -2,8 +2,6 @@
 
 #include <stdexcept>
 
-#include "core/profile/profile_factory.hpp"
-
 namespace wrc::cli {
 
 std::vector<OptionSpec> profile_option_specs() {
@@ -15,16 +13,21 @@ std::vector<OptionSpec> profile_option_specs() {
       {"--gauge", true, "track gauge, measured --gauge-depth below the top of rail [m]", "1.435"},
       {"--gauge-depth", true, "depth below the top of rail where the gauge is measured [m]", "0.014"},
       {"--flange-back", true, "flange-back spacing [m]", "1.360"},
+      {"--taping-line-offset", true, "distance of the taping line from the wheel's inner face [m]", "0.070"},
       {"--inclination", true, "rail inclination: 1:40, 1:20, none, or an angle [rad]", "1:40"},
       {"--r0", true, "nominal rolling radius [m]", "0.46"},
   };
 }
 
-WheelsetGeometry geometry_from_options(const Options& options) {
-  TrackParameters track;
+GeometrySpec geometry_spec_from_options(const Options& options) {
+  GeometrySpec spec;
+  spec.wheel = options.text("--wheel", spec.wheel);
+  spec.rail = options.text("--rail", spec.rail);
+  TrackParameters& track = spec.track;
   track.gauge = options.number("--gauge", track.gauge, 0.5, 2.5);
   track.gauge_depth = options.number("--gauge-depth", track.gauge_depth, 0.0, 0.05);
   track.flange_back_spacing = options.number("--flange-back", track.flange_back_spacing, 0.4, 2.4);
+  track.taping_line_offset = options.number("--taping-line-offset", track.taping_line_offset, 0.0, 0.2);
   track.nominal_radius = options.number("--r0", track.nominal_radius, 0.1, 1.5);
   if (options.has("--inclination")) {
     try {
@@ -34,17 +37,18 @@ WheelsetGeometry geometry_from_options(const Options& options) {
     }
   }
   track.validate();
-  auto wheel = make_profile(options.text("--wheel", "S1002"), ProfileSide::kWheel);
-  ProfileFileOptions rail_options;
   if (options.has("--rail-cant")) {
     try {
-      rail_options.built_in_cant = parse_inclination(options.text("--rail-cant"));
+      spec.rail_cant = parse_inclination(options.text("--rail-cant"));
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--rail-cant: ") + e.what());
     }
   }
-  auto rail = make_profile(options.text("--rail", "UIC60"), ProfileSide::kRail, rail_options);
-  return WheelsetGeometry(wheel, rail, track);
+  return spec;
+}
+
+WheelsetGeometry geometry_from_options(const Options& options) {
+  return make_geometry(geometry_spec_from_options(options));
 }
 
 WheelsetPose pose_from_options(const Options& options, double z) {

@@ -8,6 +8,8 @@ WRC_PACKAGES=(
   libeigen3-dev               # linear algebra (spline fits, wheelset equations)
   libsundials-dev             # CVODE integrator for the wheelset dynamics
   liblcm-dev liblcm-bin       # LCM message bus and lcm-gen
+  libssl-dev                  # OpenSSL's SHA-256 for geometry keys and model hashes (not a home-made hash)
+  nlohmann-json3-dev          # JSON reports (wrc fit) and run summaries, written by a well-kept library
   liblcm-java libjchart2d-java default-jdk-headless   # lcm-spy, its charts, javac/jar for the types jar
   libgtest-dev libbenchmark-dev   # unit tests and benchmarks
   iproute2 nftables util-linux    # private network namespaces and packet-loss injection in bus tests

@@ -59,7 +59,8 @@ void HeartbeatPublisher::publish_now() {
   hb.latency_mean = load_.latency_mean;
   hb.latency_p95 = load_.latency_p95;
   hb.latency_max = load_.latency_max;
-  hb.table_hash = table_hash_;
+  hb.geometry_key = geometry_key_;
+  hb.model_hash = model_hash_;
   if (lcm_.publish(channel_, &hb) != 0) {
     std::cerr << stamper_.sender() << ": publishing the heartbeat on " << channel_ << " failed\n";
   }

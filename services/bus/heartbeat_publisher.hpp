@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Periodic heartbeat of a service process: who it is (model, instance, pid, request channel),
-/// its state (STARTING, READY, DRAINING), its load and the interface version it was built with.
+/// its state (STARTING, READY, DRAINING), its load, the geometry key and model hash it computes
+/// with, and the interface version it was built with.
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -33,8 +34,12 @@ class HeartbeatPublisher {
   void set_state(std::int8_t state);
   /// Load figures for the next heartbeats.
   void set_load(const ServiceLoad& load) { load_ = load; }
-  /// Geometry/spline table the service computes with (empty = none).
-  void set_table_hash(std::string hash) { table_hash_ = std::move(hash); }
+  /// Geometry key (core/identity/geometry_key.hpp) of the geometry the service computes with
+  /// (empty = none).
+  void set_geometry_key(std::string key) { geometry_key_ = std::move(key); }
+  /// SHA-256 of the model data the service computes with: table or spline coefficients (empty =
+  /// a model with no precomputed data).
+  void set_model_hash(std::string hash) { model_hash_ = std::move(hash); }
 
   /// Publishes if a period has passed since the last heartbeat; returns true when it did.
   bool tick();
@@ -59,7 +64,8 @@ class HeartbeatPublisher {
   double last_sent_;    // [s] monotonic time of the last heartbeat
   std::int8_t state_ = wrc::heartbeat_t::STARTING;
   ServiceLoad load_;
-  std::string table_hash_;
+  std::string geometry_key_;
+  std::string model_hash_;
   HeaderStamper stamper_;
   std::int64_t published_ = 0;
 };

@@ -45,12 +45,20 @@ ContactdOptions ContactdOptions::parse(const std::vector<std::string>& args) {
       options.geometry.wheel = value;
     } else if (option == "--rail") {
       options.geometry.rail = value;
+    } else if (option == "--rail-cant") {
+      try {
+        options.geometry.rail_cant = parse_inclination(value);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--rail-cant: ") + e.what());
+      }
     } else if (option == "--gauge") {
       track.gauge = parse_number(option, value, 0.5, 2.5);
     } else if (option == "--gauge-depth") {
       track.gauge_depth = parse_number(option, value, 0.0, 0.05);
     } else if (option == "--flange-back") {
       track.flange_back_spacing = parse_number(option, value, 0.4, 2.4);
+    } else if (option == "--taping-line-offset") {
+      track.taping_line_offset = parse_number(option, value, 0.0, 0.2);
     } else if (option == "--r0") {
       track.nominal_radius = parse_number(option, value, 0.1, 1.5);
     } else if (option == "--inclination") {
@@ -72,9 +80,11 @@ std::string ContactdOptions::help_text() {
   return "  --model M               contact model: onepoint, interp or multipoint (required)\n"
          "  --wheel W               wheel profile: S1002, conic:<slope>, or a profile file (default S1002)\n"
          "  --rail R                rail profile: UIC60, UIC60-MB, circle:<radius [m]>, or a file (default UIC60)\n"
+         "  --rail-cant C           inclination already in the rail profile: 1:N, none or [rad] (default: the file's)\n"
          "  --gauge G               track gauge [m], measured --gauge-depth below the top of rail (default 1.435)\n"
          "  --gauge-depth D         depth of the gauge measurement [m] (default 0.014)\n"
          "  --flange-back F         flange-back spacing [m] (default 1.360)\n"
+         "  --taping-line-offset T  taping line from the wheel's inner face [m] (default 0.070)\n"
          "  --inclination I         rail inclination: 1:40, 1:20, none, or an angle [rad] (default 1:40)\n"
          "  --r0 R0                 nominal rolling radius [m] (default 0.46)\n";
 }

@@ -3,11 +3,13 @@
 // time in its log), then answers every contact_query_t on CONTACT_QUERY.<model> addressed to its
 // instance (or to any instance while it is the model's leader: contactd/instance_filter.hpp) with
 // a contact_reply_t on the query's reply channel, request id echoed. Heartbeats: model, instance,
-// state (STARTING, READY, DRAINING on SIGTERM/SIGINT), geometry key as table_hash, and the load
-// (queries handled and rejected, handling time mean/p95/max). The service adds nothing to the
-// model: contactd/query_adapter.hpp only translates.
+// state (STARTING, READY, DRAINING on SIGTERM/SIGINT), geometry key (core/identity/geometry_key.hpp),
+// model hash (contactd/model_hash.hpp, once built), and the load (queries handled and rejected,
+// handling time mean/p95/max). Replies carry the same key and hash; a query whose non-empty
+// geometry_key differs is rejected. The service adds nothing to the model:
+// contactd/query_adapter.hpp only translates.
 //
-//   wrc-contactd --model onepoint|interp|multipoint [--wheel W --rail R --gauge G ...]
+//   wrc-contactd --model onepoint|interp|multipoint [--wheel W --rail R --rail-cant C --gauge G ...]
 //                [--instance NAME] [--channel-prefix P] [--lcm-url URL] [--heartbeat-period S]
 
 #include <algorithm>
@@ -34,9 +36,11 @@
 #include "bus/shutdown_signal.hpp"
 #include "contactd/contactd_options.hpp"
 #include "contactd/instance_filter.hpp"
+#include "contactd/model_hash.hpp"
 #include "contactd/query_adapter.hpp"
+#include "core/geometry/geometry_spec.hpp"
+#include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
-#include "core/profile/profile_factory.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
 
@@ -46,6 +50,7 @@ namespace {
 struct Built {
   std::shared_ptr<const wrc::WheelsetGeometry> geometry;
   std::unique_ptr<const wrc::ContactModel> model;
+  std::string model_hash;  // SHA-256 of the model's precomputed data; empty if it has none
   double geometry_seconds = 0.0;
   double model_seconds = 0.0;
 };
@@ -53,12 +58,10 @@ struct Built {
 Built build(const wrc::contactd::ContactdOptions& options) {
   Built out;
   const double t0 = wrc::bus::monotonic_seconds();
-  const auto& spec = options.geometry;
-  out.geometry = std::make_shared<const wrc::WheelsetGeometry>(
-      wrc::make_profile(spec.wheel, wrc::ProfileSide::kWheel), wrc::make_profile(spec.rail, wrc::ProfileSide::kRail),
-      spec.track);
+  out.geometry = std::make_shared<const wrc::WheelsetGeometry>(wrc::make_geometry(options.geometry));
   const double t1 = wrc::bus::monotonic_seconds();
   out.model = wrc::make_contact_model(options.model, out.geometry, wrc::ContactModelOptions{});
+  out.model_hash = wrc::contactd::model_hash(*out.model);
   out.geometry_seconds = t1 - t0;
   out.model_seconds = wrc::bus::monotonic_seconds() - t1;
   return out;
@@ -86,11 +89,11 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   const std::string sender = sender_name("wrc-contactd", service.instance);
   const std::string model_name = options.model;
   const std::string instance = service.instance;
-  const std::string key = wrc::contactd::geometry_key(options.geometry);
+  const std::string key = wrc::geometry_key(options.geometry);
 
   HeartbeatPublisher heartbeat(*lcm, names.name(channel::kHeartbeat),
                                {"wrc-contactd", model_name, instance, request_channel}, service.heartbeat_period);
-  heartbeat.set_table_hash(key);
+  heartbeat.set_geometry_key(key);
   heartbeat.publish_now();  // STARTING
 
   // Build in a worker thread so that STARTING heartbeats keep coming while the model is built
@@ -117,7 +120,10 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     return 1;
   }
   std::cerr << sender << ": built the " << model_name << " model in " << built.model_seconds << " s (geometry "
-            << built.geometry_seconds << " s)\n";
+            << built.geometry_seconds << " s)"
+            << (built.model_hash.empty() ? std::string() : ", model hash " + built.model_hash) << "\n";
+  const std::string model_hash = built.model_hash;
+  heartbeat.set_model_hash(model_hash);
 
   const wrc::ContactModel& model = *built.model;
   LatencyWindow compute_times;  // recent evaluation times [s], for the log
@@ -127,7 +133,8 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
         const double t0 = monotonic_seconds();
         reply.model = model_name;
         reply.instance = instance;
-        reply.table_hash = key;
+        reply.geometry_key = key;
+        reply.model_hash = model_hash;
         wrc::contactd::evaluate_query(model, query, reply);
         reply.compute_time = monotonic_seconds() - t0;
         compute_times.add(reply.compute_time);
@@ -137,8 +144,8 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     if (!query.model.empty() && query.model != model_name) {
       return "model = '" + query.model + "' but this service runs '" + model_name + "'";
     }
-    if (!query.table_hash.empty() && query.table_hash != key) {
-      return "table_hash = '" + query.table_hash + "' but this service computes with geometry " + key;
+    if (!query.geometry_key.empty() && query.geometry_key != key) {
+      return "geometry_key = '" + query.geometry_key + "' but this service computes with geometry_key " + key;
     }
     return wrc::contactd::validate_query(query);
   });
@@ -146,7 +153,8 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
                               contact_reply_t& reply) {
     reply.model = model_name;
     reply.instance = instance;
-    reply.table_hash = key;
+    reply.geometry_key = key;
+    reply.model_hash = model_hash;
     reply.status = error == RequestError::kBadRequest ? contact_reply_t::BAD_REQUEST : contact_reply_t::INTERNAL_ERROR;
     reply.message = why;
     reply.num_configurations = 0;

@@ -14,14 +14,12 @@
 #include "core/models/contact_model_factory.hpp"
 #include "core/models/patch_builder.hpp"
 #include "core/profile/profile_factory.hpp"
+#include "spline_test_model.hpp"
 
 namespace wrc {
 namespace {
 
-std::shared_ptr<const WheelsetGeometry> s1002_uic60() {
-  return std::make_shared<const WheelsetGeometry>(make_profile("S1002", ProfileSide::kWheel),
-                                                  make_profile("UIC60", ProfileSide::kRail));
-}
+std::shared_ptr<const WheelsetGeometry> s1002_uic60() { return test::s1002_uic60_geometry(); }
 
 ContactModelOptions small_table() {
   ContactModelOptions o;
@@ -57,7 +55,7 @@ void expect_invalid(const ContactModel& model, const ContactQuery& q, const std:
 TEST(ModelsValidation, BadQueriesThrowNamingTheField) {
   auto geometry = s1002_uic60();
   for (const std::string& name : contact_model_names()) {
-    const auto model = make_contact_model(name, geometry, small_table());
+    const auto model = make_contact_model(name, geometry, small_table(), test::quick_spline_data());
     const double nan = std::numeric_limits<double>::quiet_NaN();
     struct Case {
       std::function<void(ContactQuery&)> spoil;
@@ -96,11 +94,12 @@ TEST(ModelsValidation, BadQueriesThrowNamingTheField) {
 }
 
 // A wheelset shifted 50 mm sideways has a wheel off its rail: ContactConfigurationError naming the
-// wheel and y (interp: the configuration lies outside its table, also named), never a result.
+// wheel and y (interp and spline: the configuration lies outside the table or box, an
+// OutsideModelError, also naming it), never a result.
 TEST(ModelsValidation, WheelOffTheRailIsAConfigurationError) {
   auto geometry = s1002_uic60();
   for (const std::string& name : contact_model_names()) {
-    const auto model = make_contact_model(name, geometry, small_table());
+    const auto model = make_contact_model(name, geometry, small_table(), test::quick_spline_data());
     for (ContactFormulation formulation : {ContactFormulation::kRigid, ContactFormulation::kElastic}) {
       ContactQuery q = good_query();
       q.pose.y = 0.05;
@@ -114,23 +113,27 @@ TEST(ModelsValidation, WheelOffTheRailIsAConfigurationError) {
         if (name != "interp") {
           EXPECT_NE(what.find("left wheel"), std::string::npos) << what;
         }
+        const bool outside = dynamic_cast<const OutsideModelError*>(&e) != nullptr;
+        EXPECT_EQ(outside, name == "interp" || name == "spline") << name << ": " << what;
       }
     }
   }
 }
 
-// The factory builds the three models under their names, says that "spline" is not available yet
-// and lists the known names for anything else.
+// The registry builds the four models under their names, says that "spline" needs its fitted
+// splines and lists the known names for anything else.
 TEST(ModelsValidation, FactoryNames) {
   auto geometry = s1002_uic60();
-  for (const char* name : {"onepoint", "interp", "multipoint"}) {
-    EXPECT_EQ(make_contact_model(name, geometry, small_table())->name(), name);
+  EXPECT_EQ(contact_model_names(), (std::vector<std::string>{"onepoint", "interp", "multipoint", "spline"}));
+  for (const std::string& name : contact_model_names()) {
+    EXPECT_EQ(make_contact_model(name, geometry, small_table(), test::quick_spline_data())->name(), name);
+    EXPECT_EQ(contact_model_entry(name).needs_data, name == "spline");
   }
   try {
     make_contact_model("spline", geometry);
     ADD_FAILURE() << "spline built";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("not available yet"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("needs a fitted spline model"), std::string::npos) << e.what();
   }
   try {
     make_contact_model("twopoint", geometry);
@@ -138,7 +141,7 @@ TEST(ModelsValidation, FactoryNames) {
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("twopoint"), std::string::npos) << what;
-    EXPECT_NE(what.find("onepoint, interp, multipoint"), std::string::npos) << what;
+    EXPECT_NE(what.find("onepoint, interp, multipoint, spline"), std::string::npos) << what;
   }
   EXPECT_THROW(make_contact_model("onepoint", nullptr), std::invalid_argument);
   ContactModelOptions bad;
@@ -191,12 +194,21 @@ TEST(ModelsValidation, ConformalCurvatureFloorAndError) {
 }
 
 // The floor acts inside the models: a floor of 100 A lies above every S1002/UIC60 tread B, so
-// every patch is flagged and its ellipse is the Hertz ellipse of (A, 100 A).
+// every patch is flagged and its ellipse is the Hertz ellipse of (A, 100 A). The spline model's
+// Hertz shapes are fitted with the floor of its fit, so it refuses another floor, naming both.
 TEST(ModelsValidation, FloorIsAppliedInTheModels) {
   ContactModelOptions options = small_table();
   options.lateral_curvature_floor = 100.0;
   auto geometry = s1002_uic60();
+  try {
+    make_contact_model("spline", geometry, options, test::quick_spline_data());
+    ADD_FAILURE() << "spline built with another floor";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("lateral_curvature_floor = 100"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("0.01"), std::string::npos) << e.what();
+  }
   for (const std::string& name : contact_model_names()) {
+    if (name == "spline") continue;
     const ContactResult res = make_contact_model(name, geometry, options)->evaluate(good_query());
     ASSERT_FALSE(res.patches.empty());
     for (const ContactPatch& p : res.patches) {

@@ -76,6 +76,13 @@ struct ContactConfigurationError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The configuration lies outside the range a model was built for (an interpolation table's or a
+/// spline model's box): not a derailment, the model cannot answer there. The message names the
+/// coordinate and the range.
+struct OutsideModelError : ContactConfigurationError {
+  using ContactConfigurationError::ContactConfigurationError;
+};
+
 /// A contact model. evaluate() is const and thread-compatible.
 class ContactModel {
  public:

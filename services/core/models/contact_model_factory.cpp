@@ -5,24 +5,55 @@
 #include "core/models/interpolated_model.hpp"
 #include "core/models/multi_point_model.hpp"
 #include "core/models/one_point_model.hpp"
+#include "core/models/spline_model.hpp"
 
 namespace wrc {
+namespace {
 
-std::vector<std::string> contact_model_names() { return {"onepoint", "interp", "multipoint"}; }
+template <typename Model>
+ContactModelEntry plain(std::string name, std::string description) {
+  return {std::move(name), std::move(description), false,
+          [](std::shared_ptr<const WheelsetGeometry> g, const ContactModelOptions& o, const ContactModelData&) {
+            return std::unique_ptr<ContactModel>(std::make_unique<Model>(std::move(g), o));
+          }};
+}
 
-std::unique_ptr<ContactModel> make_contact_model(const std::string& name,
-                                                 std::shared_ptr<const WheelsetGeometry> geometry,
-                                                 const ContactModelOptions& options) {
-  if (name == "onepoint") return std::make_unique<OnePointModel>(std::move(geometry), options);
-  if (name == "interp") return std::make_unique<InterpolatedModel>(std::move(geometry), options);
-  if (name == "multipoint") return std::make_unique<MultiPointModel>(std::move(geometry), options);
-  if (name == "spline")
-    throw std::invalid_argument(
-        "contact model 'spline' (Arnold's spline approximation) is not available yet; known models: onepoint, "
-        "interp, multipoint");
+}  // namespace
+
+const std::vector<ContactModelEntry>& contact_model_registry() {
+  static const std::vector<ContactModelEntry> registry{
+      plain<OnePointModel>("onepoint", "Hertzian one-point contact at the exact common point"),
+      plain<InterpolatedModel>("interp", "interpolated Hertzian contact (MEDYNA): a table of common points"),
+      plain<MultiPointModel>("multipoint", "Hertzian multi-point contact: an ellipse at every local minimum"),
+      {"spline", "Arnold's unified approach: weighted least-squares tensor-product splines", true,
+       [](std::shared_ptr<const WheelsetGeometry> g, const ContactModelOptions& o, const ContactModelData& d) {
+         if (!d.splines)
+           throw std::invalid_argument(
+               "contact model 'spline' needs a fitted spline model (precomputed by wrc-geometryd or `wrc fit`)");
+         return std::unique_ptr<ContactModel>(std::make_unique<SplineModel>(std::move(g), d.splines, o));
+       }},
+  };
+  return registry;
+}
+
+std::vector<std::string> contact_model_names() {
+  std::vector<std::string> names;
+  for (const ContactModelEntry& e : contact_model_registry()) names.push_back(e.name);
+  return names;
+}
+
+const ContactModelEntry& contact_model_entry(const std::string& name) {
+  for (const ContactModelEntry& e : contact_model_registry())
+    if (e.name == name) return e;
   std::string known;
   for (const std::string& n : contact_model_names()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown contact model '" + name + "'; known models: " + known);
+}
+
+std::unique_ptr<ContactModel> make_contact_model(const std::string& name,
+                                                 std::shared_ptr<const WheelsetGeometry> geometry,
+                                                 const ContactModelOptions& options, const ContactModelData& data) {
+  return contact_model_entry(name).build(std::move(geometry), options, data);
 }
 
 }  // namespace wrc

@@ -41,7 +41,7 @@ void locate(double value, int count, double half, const char* name, const char* 
     std::ostringstream msg;
     msg << "interp: " << name << " = " << value << " " << unit << " is outside the interpolation table [" << -half
         << ", " << half << "] " << unit;
-    throw ContactConfigurationError(msg.str());
+    throw OutsideModelError(msg.str());
   }
   cell = std::clamp(static_cast<int>(std::floor(u)), 0, count - 2);
   t = std::clamp(u - cell, 0.0, 1.0);

@@ -5,10 +5,8 @@
 
 #include <memory>
 
-#include "core/models/contact_model.hpp"
-#include "core/models/contact_model_options.hpp"
 #include "core/models/contact_point_table.hpp"
-#include "core/models/fastsim_cache.hpp"
+#include "core/models/hertzian_model.hpp"
 
 namespace wrc {
 
@@ -19,7 +17,7 @@ namespace wrc {
 /// interpolation is continuous in the configuration, so the jumps of the common point are
 /// smoothed over one grid cell; at the nodes the model reproduces OnePointModel.
 /// A configuration outside the table throws ContactConfigurationError naming the coordinate.
-class InterpolatedModel final : public ContactModel {
+class InterpolatedModel final : public HertzianContactModel {
  public:
   /// Builds the table (2 y_points roll_points yaw_points potential-point scans; ~40 ms for the
   /// default 41 x 3 x 3 grid).
@@ -28,21 +26,15 @@ class InterpolatedModel final : public ContactModel {
   explicit InterpolatedModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options = {});
 
   std::string name() const override { return "interp"; }
-  ContactResult evaluate(const ContactQuery& query) const override;
-  const WheelsetGeometry& geometry() const override { return *geometry_; }
-  const ContactModelOptions& options() const { return options_; }
   /// The interpolation table.
   const ContactPointTable& table() const { return table_; }
   /// Wall time the constructor spent building the table [s].
   double precomputation_seconds() const { return precomputation_seconds_; }
 
  private:
-  static std::shared_ptr<const WheelsetGeometry> checked(std::shared_ptr<const WheelsetGeometry> geometry);
-  std::shared_ptr<const WheelsetGeometry> geometry_;
-  ContactModelOptions options_;
+  void add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const override;
   double precomputation_seconds_ = 0;
   ContactPointTable table_;
-  FastsimCache fastsim_;
 };
 
 }  // namespace wrc

@@ -14,74 +14,49 @@
 namespace wrc {
 
 MultiPointModel::MultiPointModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options)
-    : geometry_(std::move(geometry)), options_(options) {
-  if (!geometry_) throw std::invalid_argument("MultiPointModel: no geometry");
-  options_.validate();
-  steepest_flange_ = steepest_flange_point(geometry_->wheel_profile());
-}
+    : HertzianContactModel(std::move(geometry), options, "MultiPointModel") {}
 
-ContactResult MultiPointModel::evaluate(const ContactQuery& query) const {
-  validate_contact_query(query);
-  const WheelsetMotion motion = WheelsetMotion::from_query(query);
-  const PatchContext context{query, motion, fastsim_.get(query.fastsim_elements, query.fastsim_strips),
-                             contact_modulus(query.material.shear_modulus, query.material.poisson_ratio)};
+void MultiPointModel::add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const {
   const double floor = options_.lateral_curvature_floor;
-  ContactResult result;
+  const ContactQuery& query = context.query;
   std::vector<ContactPoint> minima;
-  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
-    minima.clear();
-    for (ContactPoint& p : geometry_->potential_points(side, query.pose, options_.search))
-      if (p.is_minimum) minima.push_back(std::move(p));
-    if (minima.empty()) {
-      throw ContactConfigurationError(std::string("the ") + side_name(side) +
-                                      " wheel has no contact point on its rail (shifted off the rail or flange "
-                                      "climbed over) at " +
-                                      describe_pose(query.pose));
+  for (ContactPoint& p : geometry_->potential_points(side, query.pose, options_.search))
+    if (p.is_minimum) minima.push_back(std::move(p));
+  size_t closest = 0;
+  for (size_t k = 1; k < minima.size(); ++k)
+    if (minima[k].distance < minima[closest].distance) closest = k;
+  check_common_point(*geometry_, side, minima.empty() ? nullptr : &minima[closest], query.pose, steepest_flange_);
+  if (query.formulation == ContactFormulation::kElastic) {
+    for (const ContactPoint& p : minima) {
+      const double delta = normal_penetration(p);
+      if (delta > 0.0) result.patches.push_back(patch_from_penetration(p, contact_shape(p, floor), delta, context));
     }
-    size_t closest = 0;
-    for (size_t k = 1; k < minima.size(); ++k)
-      if (minima[k].distance < minima[closest].distance) closest = k;
-    if (geometry_->beyond_flange_apex(minima[closest])) {
-      throw ContactConfigurationError(std::string("the ") + side_name(side) +
-                                      " wheel's flange has climbed onto its rail: contact at s = " +
-                                      std::to_string(minima[closest].s) + " m on or beyond the flange apex, at " +
-                                      describe_pose(query.pose));
-    }
-    check_flange_not_climbed(minima[closest], steepest_flange_, query.pose);
-    if (query.formulation == ContactFormulation::kElastic) {
-      for (const ContactPoint& p : minima) {
-        const double delta = normal_penetration(p);
-        if (delta > 0.0) result.patches.push_back(patch_from_penetration(p, contact_shape(p, floor), delta, context));
-      }
-      continue;
-    }
-    const double load = query.normal_load[static_cast<int>(side)];
-    if (!(load > 0.0)) continue;
-    // The closest minimum alone carrying the load bounds the approach: minima farther away than
-    // that cannot be reached and need no Hertz shape (their curvatures may not even be Hertzian).
-    const PatchShape closest_shape = contact_shape(minima[closest], floor);
-    const double closest_cos = std::cos(minima[closest].contact_angle);
-    const double reach = std::pow(load / hertz_stiffness(closest_shape.shape, context.contact_modulus), 2.0 / 3.0) /
-                         closest_cos;
-    std::vector<PatchShape> shapes;
-    std::vector<DivisionPoint> division;
-    std::vector<size_t> index;
-    for (size_t k = 0; k < minima.size(); ++k) {
-      const double gap = minima[k].distance - minima[closest].distance;
-      if (k != closest && !(gap < reach)) continue;
-      shapes.push_back(k == closest ? closest_shape : contact_shape(minima[k], floor));
-      division.push_back({hertz_stiffness(shapes.back().shape, context.contact_modulus), gap,
-                          std::cos(minima[k].contact_angle)});
-      index.push_back(k);
-    }
-    const LoadDivision split = divide_load(load, division);
-    for (size_t j = 0; j < index.size(); ++j) {
-      if (split.normal_force[j] > 0.0)
-        result.patches.push_back(patch_from_force(minima[index[j]], shapes[j], split.normal_force[j], context));
-    }
+    return;
   }
-  for (const ContactPatch& patch : result.patches) add_to_resultant(patch, motion.centre, result);
-  return result;
+  const double load = query.normal_load[static_cast<int>(side)];
+  if (!(load > 0.0)) return;
+  // The closest minimum alone carrying the load bounds the approach: minima farther away than
+  // that cannot be reached and need no Hertz shape (their curvatures may not even be Hertzian).
+  const PatchShape closest_shape = contact_shape(minima[closest], floor);
+  const double closest_cos = std::cos(minima[closest].contact_angle);
+  const double reach = std::pow(load / hertz_stiffness(closest_shape.shape, context.contact_modulus), 2.0 / 3.0) /
+                       closest_cos;
+  std::vector<PatchShape> shapes;
+  std::vector<DivisionPoint> division;
+  std::vector<size_t> index;
+  for (size_t k = 0; k < minima.size(); ++k) {
+    const double gap = minima[k].distance - minima[closest].distance;
+    if (k != closest && !(gap < reach)) continue;
+    shapes.push_back(k == closest ? closest_shape : contact_shape(minima[k], floor));
+    division.push_back({hertz_stiffness(shapes.back().shape, context.contact_modulus), gap,
+                        std::cos(minima[k].contact_angle)});
+    index.push_back(k);
+  }
+  const LoadDivision split = divide_load(load, division);
+  for (size_t j = 0; j < index.size(); ++j) {
+    if (split.normal_force[j] > 0.0)
+      result.patches.push_back(patch_from_force(minima[index[j]], shapes[j], split.normal_force[j], context));
+  }
 }
 
 }  // namespace wrc

@@ -5,9 +5,7 @@
 
 #include <memory>
 
-#include "core/models/contact_model.hpp"
-#include "core/models/contact_model_options.hpp"
-#include "core/models/fastsim_cache.hpp"
+#include "core/models/hertzian_model.hpp"
 
 namespace wrc {
 
@@ -22,21 +20,15 @@ namespace wrc {
 /// A wheel without a minimum, or whose smallest minimum shows a climbed flange (flange_climb.hpp), throws ContactConfigurationError as in OnePointModel.
 /// With a single minimum, or a single reached minimum, the result is identical to OnePointModel's.
 /// Patches of one wheel are ordered by s (flange first), left wheel first.
-class MultiPointModel final : public ContactModel {
+class MultiPointModel final : public HertzianContactModel {
  public:
   /// @throws std::invalid_argument for a null geometry or invalid options.
   explicit MultiPointModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options = {});
 
   std::string name() const override { return "multipoint"; }
-  ContactResult evaluate(const ContactQuery& query) const override;
-  const WheelsetGeometry& geometry() const override { return *geometry_; }
-  const ContactModelOptions& options() const { return options_; }
 
  private:
-  std::shared_ptr<const WheelsetGeometry> geometry_;
-  ContactModelOptions options_;
-  double steepest_flange_;  // [m]
-  FastsimCache fastsim_;
+  void add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const override;
 };
 
 }  // namespace wrc

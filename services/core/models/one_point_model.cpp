@@ -6,8 +6,6 @@
 #include "core/contact/hertz.hpp"
 #include "core/models/flange_climb.hpp"
 #include "core/models/patch_builder.hpp"
-#include "core/models/query_validation.hpp"
-#include "core/models/wheelset_motion.hpp"
 
 namespace wrc {
 
@@ -18,9 +16,8 @@ std::string describe_pose(const WheelsetPose& pose) {
   return msg.str();
 }
 
-ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose,
-                                  const PotentialPointSearch& search, double steepest_flange) {
-  std::optional<ContactPoint> point = geometry.common_point(side, pose, search);
+void check_common_point(const WheelsetGeometry& geometry, WheelSide side, const ContactPoint* point,
+                        const WheelsetPose& pose, double steepest_flange) {
   if (!point) {
     throw ContactConfigurationError(std::string("the ") + side_name(side) +
                                     " wheel has no contact point on its rail (shifted off the rail or flange "
@@ -34,29 +31,22 @@ ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide si
                                     describe_pose(pose));
   }
   check_flange_not_climbed(*point, steepest_flange, pose);
+}
+
+ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose,
+                                  const PotentialPointSearch& search, double steepest_flange) {
+  std::optional<ContactPoint> point = geometry.common_point(side, pose, search);
+  check_common_point(geometry, side, point ? &*point : nullptr, pose, steepest_flange);
   return *point;
 }
 
 OnePointModel::OnePointModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options)
-    : geometry_(std::move(geometry)), options_(options) {
-  if (!geometry_) throw std::invalid_argument("OnePointModel: no geometry");
-  options_.validate();
-  steepest_flange_ = steepest_flange_point(geometry_->wheel_profile());
-}
+    : HertzianContactModel(std::move(geometry), options, "OnePointModel") {}
 
-ContactResult OnePointModel::evaluate(const ContactQuery& query) const {
-  validate_contact_query(query);
-  const WheelsetMotion motion = WheelsetMotion::from_query(query);
-  const PatchContext context{query, motion, fastsim_.get(query.fastsim_elements, query.fastsim_strips),
-                             contact_modulus(query.material.shear_modulus, query.material.poisson_ratio)};
-  ContactResult result;
-  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
-    const ContactPoint point = require_common_point(*geometry_, side, query.pose, options_.search, steepest_flange_);
-    std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
-    if (patch) result.patches.push_back(std::move(*patch));
-  }
-  for (const ContactPatch& patch : result.patches) add_to_resultant(patch, motion.centre, result);
-  return result;
+void OnePointModel::add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const {
+  const ContactPoint point = exact_common_point(side, context.query.pose);
+  std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
+  if (patch) result.patches.push_back(std::move(*patch));
 }
 
 }  // namespace wrc

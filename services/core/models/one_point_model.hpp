@@ -5,9 +5,7 @@
 
 #include <memory>
 
-#include "core/models/contact_model.hpp"
-#include "core/models/contact_model_options.hpp"
-#include "core/models/fastsim_cache.hpp"
+#include "core/models/hertzian_model.hpp"
 
 namespace wrc {
 
@@ -21,21 +19,15 @@ namespace wrc {
 /// A wheel without any local minimum of the distance over its rail (shifted off the rail), or whose
 /// flange has climbed onto the rail (flange_climb.hpp), throws
 /// ContactConfigurationError.
-class OnePointModel final : public ContactModel {
+class OnePointModel final : public HertzianContactModel {
  public:
   /// @throws std::invalid_argument for a null geometry or invalid options.
   explicit OnePointModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options = {});
 
   std::string name() const override { return "onepoint"; }
-  ContactResult evaluate(const ContactQuery& query) const override;
-  const WheelsetGeometry& geometry() const override { return *geometry_; }
-  const ContactModelOptions& options() const { return options_; }
 
  private:
-  std::shared_ptr<const WheelsetGeometry> geometry_;
-  ContactModelOptions options_;
-  double steepest_flange_;  // [m]
-  FastsimCache fastsim_;
+  void add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const override;
 };
 
 /// The common point of one wheel at pose, or ContactConfigurationError naming the wheel and the
@@ -43,6 +35,11 @@ class OnePointModel final : public ContactModel {
 /// onto the rail (check_flange_not_climbed() with the steepest flange point steepest_flange [m]).
 ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose,
                                   const PotentialPointSearch& search, double steepest_flange);
+
+/// The checks of require_common_point() on a common point found otherwise (null: none found).
+/// @throws ContactConfigurationError as require_common_point() does.
+void check_common_point(const WheelsetGeometry& geometry, WheelSide side, const ContactPoint* point,
+                        const WheelsetPose& pose, double steepest_flange);
 
 /// "y = ... m, roll = ... rad, yaw = ... rad" for error messages.
 std::string describe_pose(const WheelsetPose& pose);

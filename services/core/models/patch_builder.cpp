@@ -82,14 +82,25 @@ ContactPatch patch_from_penetration(const ContactPoint& point, const PatchShape&
 
 std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const PatchContext& context,
                                             double lateral_curvature_floor) {
+  // The shape only where a patch is built (the elliptic inversion is the expensive part).
+  if (context.query.formulation == ContactFormulation::kRigid) {
+    if (!(context.query.normal_load[static_cast<int>(point.side)] > 0.0)) return std::nullopt;
+  } else if (!(normal_penetration(point) > 0.0)) {
+    return std::nullopt;
+  }
+  return one_point_patch(point, contact_shape(point, lateral_curvature_floor), context);
+}
+
+std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const PatchShape& shape,
+                                            const PatchContext& context) {
   if (context.query.formulation == ContactFormulation::kRigid) {
     const double load = context.query.normal_load[static_cast<int>(point.side)];
     if (!(load > 0.0)) return std::nullopt;
-    return patch_from_force(point, contact_shape(point, lateral_curvature_floor), load, context);
+    return patch_from_force(point, shape, load, context);
   }
   const double delta = normal_penetration(point);
   if (!(delta > 0.0)) return std::nullopt;
-  return patch_from_penetration(point, contact_shape(point, lateral_curvature_floor), delta, context);
+  return patch_from_penetration(point, shape, delta, context);
 }
 
 double normal_penetration(const ContactPoint& point) { return -point.distance * std::cos(point.contact_angle); }

@@ -55,6 +55,11 @@ ContactPatch patch_from_penetration(const ContactPoint& point, const PatchShape&
 std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const PatchContext& context,
                                             double lateral_curvature_floor);
 
+/// The same with the Hertz shape given (the spline model's fitted shape instead of the elliptic
+/// inversion at the point's curvatures).
+std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const PatchShape& shape,
+                                            const PatchContext& context);
+
 /// The approach of the surfaces along the normal implied by the point's vertical overlap:
 /// delta = -distance cos(contact_angle) [m] (< 0: a gap). A vertical rigid approach d of the wheel
 /// moves its surface by d cos(angle) along the contact normal, so this is the elastic approach to

@@ -14,7 +14,7 @@
 
 #include "bus/clock.hpp"
 #include "bus_fixture.hpp"
-#include "contactd/geometry_key.hpp"
+#include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/profile/profile_factory.hpp"
 #include "wrc/contact_query_t.hpp"
@@ -143,8 +143,10 @@ TEST_P(EveryModel, AnswersLikeTheInProcessModel) {
                                                            make_profile("UIC60", ProfileSide::kRail));
   auto local = make_contact_model(model, geometry, ContactModelOptions{});
   ASSERT_TRUE(wait_ready_while(model, "t", *service)) << read_text(log);
-  EXPECT_EQ(monitor_->find(model, "t", monotonic_seconds())->last.table_hash,
-            contactd::geometry_key(contactd::GeometrySpec{}));
+  const wrc::heartbeat_t heartbeat = monitor_->find(model, "t", monotonic_seconds())->last;
+  EXPECT_EQ(heartbeat.geometry_key, geometry_key(GeometrySpec{}));
+  // Only the interpolated model has precomputed data (its table); the others publish no hash.
+  EXPECT_EQ(heartbeat.model_hash.size(), model == "interp" ? 64u : 0u) << heartbeat.model_hash;
 
   // A rigid batch (centred, shifted both ways, yawed, rolled), then an elastic one.
   auto rigid = make_query(model, {configuration(0.0, 0.0, 0.0, 0.46), configuration(0.003, 0.0, 0.001, 0.46),
@@ -162,6 +164,8 @@ TEST_P(EveryModel, AnswersLikeTheInProcessModel) {
     const wrc::contact_reply_t reply = ask(model, *query);
     EXPECT_EQ(reply.model, model);
     EXPECT_EQ(reply.instance, "t");
+    EXPECT_EQ(reply.geometry_key, heartbeat.geometry_key);
+    EXPECT_EQ(reply.model_hash, heartbeat.model_hash);
     ASSERT_EQ(reply.num_configurations, query->num_configurations) << reply.message;
     ASSERT_EQ(reply.results.size(), static_cast<std::size_t>(query->num_configurations));
     for (int i = 0; i < query->num_configurations; ++i) {
@@ -273,7 +277,7 @@ TEST_F(ContactServiceTest, InvalidQueriesGetBadRequestNamingTheField) {
       {[&](auto& q) { q.num_configurations = 33; q.configurations.resize(33, q.configurations[0]); },
        "num_configurations = 33 is outside [1, 32]"},
       {[&](auto& q) { q.model = "interp"; }, "model = 'interp' but this service runs 'onepoint'"},
-      {[&](auto& q) { q.table_hash = "0123456789abcdef"; }, "table_hash = '0123456789abcdef'"},
+      {[&](auto& q) { q.geometry_key = "0123456789abcdef"; }, "geometry_key = '0123456789abcdef'"},
   };
   for (const auto& c : cases) {
     auto q = make_query("onepoint", {configuration(0.0, 0.0, 0.0, 0.46), configuration(0.001, 0.0, 0.0, 0.46)});
@@ -384,6 +388,7 @@ TEST_F(ContactServiceTest, LaunchStartsTheContactServicesAndStatusListsThem) {
     EXPECT_NE(out.find(std::string(model) + ",a,"), std::string::npos) << out;
     EXPECT_NE(out.find(",READY,1,"), std::string::npos) << out;
     EXPECT_NE(out.find(std::string(",CONTACT_QUERY.") + model + "\n"), std::string::npos) << out;
+    EXPECT_NE(out.find("," + geometry_key(GeometrySpec{}).substr(0, 12) + ","), std::string::npos) << out;
   }
   launcher.signal(SIGINT);
   ASSERT_TRUE(launcher.wait(10.0, &status)) << read_text(log);

@@ -1,4 +1,5 @@
-// Heartbeats over memq://: identity, state changes, load, and dead detection after 3 periods.
+// Heartbeats over memq://: identity, state changes, load, geometry key and model hash, and dead
+// detection after 3 periods.
 #include <gtest/gtest.h>
 
 #include <thread>
@@ -19,6 +20,8 @@ TEST(Heartbeat, MonitorSeesPublisher) {
   load.requests_handled = 42;
   load.latency_p95 = 1e-4;
   publisher.set_load(load);
+  publisher.set_geometry_key("k");
+  publisher.set_model_hash("m");
   publisher.set_state(wrc::heartbeat_t::READY);
   test::drain(lcm);
   auto status = monitor.find("pingd", "a", monotonic_seconds());
@@ -28,6 +31,8 @@ TEST(Heartbeat, MonitorSeesPublisher) {
   EXPECT_EQ(status->last.requests_handled, 42);
   EXPECT_DOUBLE_EQ(status->last.latency_p95, 1e-4);
   EXPECT_EQ(status->last.request_channel, "PING");
+  EXPECT_EQ(status->last.geometry_key, "k");
+  EXPECT_EQ(status->last.model_hash, "m");
   EXPECT_EQ(status->last.interface_version, wrc::heartbeat_t::INTERFACE_VERSION);
   EXPECT_EQ(status->last.pid, ::getpid());
   EXPECT_EQ(status->last.header.sender, sender_name("wrc-test", "a"));

@@ -1,0 +1,20 @@
+#pragma once
+/// @file
+/// The spline-fit options of the command line (wrc fit; the same names as SplineFitOptions).
+
+#include <vector>
+
+#include "cli/options.hpp"
+#include "core/spline/spline_fit_options.hpp"
+
+namespace wrc::cli {
+
+/// --knots, --degree, --box, --knot-placement, --samples, --sample-step, --jump-weight,
+/// --jump-band, --flange-angle, --paper-variant, --threads.
+std::vector<OptionSpec> fit_option_specs();
+
+/// SplineFitOptions from parsed options (defaults of SplineFitOptions; --paper-variant starts from
+/// SplineFitOptions::paper_benchmark()). Throws UsageError naming the option.
+SplineFitOptions fit_options_from(const Options& options);
+
+}  // namespace wrc::cli

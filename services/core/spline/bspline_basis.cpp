@@ -1,0 +1,150 @@
+/// @file
+/// B-spline basis on clamped knots: the degree + 1 non-zero functions and their first two
+/// derivatives by the Cox-de Boor triangle (Piegl & Tiller, The NURBS Book, algorithm A2.3),
+/// unrolled per degree, with fixed-size local arrays (no allocation on the evaluation path).
+
+#include "core/spline/bspline_basis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace wrc {
+namespace {
+
+[[noreturn]] void fail(const std::string& message) { throw std::invalid_argument("BSplineBasis: " + message); }
+
+// Basis functions N_{i..i+P} of degree P on interval i of breakpoints b (m + 1 values) at x, and
+// derivatives up to order `orders` (0..2) into d1 / d2. The knot t_j of the clamped sequence is
+// b[clamp(j - P, 0, m)], so the knot vector is never materialised.
+template <int P>
+void evaluate_degree(const double* b, int m, int i, double x, int orders, double* value, double* d1, double* d2) {
+  auto knot = [b, m](int j) { return b[std::clamp(j - P, 0, m)]; };
+  const int span = i + P;  // index of the knot interval in the full knot sequence
+  // ndu[j][r], r >= j: basis functions of degree j (column), r < j: knot differences (row).
+  double ndu[P + 1][P + 1];
+  double left[P + 1], right[P + 1];
+  ndu[0][0] = 1.0;
+  for (int j = 1; j <= P; ++j) {
+    left[j] = x - knot(span + 1 - j);
+    right[j] = knot(span + j) - x;
+    double saved = 0.0;
+    for (int r = 0; r < j; ++r) {
+      ndu[j][r] = right[r + 1] + left[j - r];  // a knot difference, > 0 for distinct breakpoints
+      const double temp = ndu[r][j - 1] / ndu[j][r];
+      ndu[r][j] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    ndu[j][j] = saved;
+  }
+  for (int r = 0; r <= P; ++r) value[r] = ndu[r][P];
+  if (orders == 0) return;
+
+  // Derivatives of order k <= min(orders, P); those of order > P vanish.
+  double* ders[3] = {value, d1, d2};
+  const int top = std::min(orders, P);
+  for (int k = top + 1; k <= orders; ++k)
+    for (int r = 0; r <= P; ++r) ders[k][r] = 0.0;
+  double a[2][P + 1];
+  for (int r = 0; r <= P; ++r) {
+    int s1 = 0, s2 = 1;
+    a[0][0] = 1.0;
+    for (int k = 1; k <= top; ++k) {
+      double d = 0.0;
+      const int rk = r - k, pk = P - k;
+      if (r >= k) {
+        a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+        d = a[s2][0] * ndu[rk][pk];
+      }
+      const int j1 = rk >= -1 ? 1 : -rk;
+      const int j2 = r - 1 <= pk ? k - 1 : P - r;
+      for (int j = j1; j <= j2; ++j) {
+        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
+        d += a[s2][j] * ndu[rk + j][pk];
+      }
+      if (r <= pk) {
+        a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+        d += a[s2][k] * ndu[r][pk];
+      }
+      ders[k][r] = d;
+      std::swap(s1, s2);
+    }
+  }
+  double factor = P;  // P! / (P - k)!
+  for (int k = 1; k <= top; ++k) {
+    for (int r = 0; r <= P; ++r) ders[k][r] *= factor;
+    factor *= P - k;
+  }
+}
+
+}  // namespace
+
+BSplineBasis::BSplineBasis(int degree, std::vector<double> breakpoints)
+    : degree_(degree), breakpoints_(std::move(breakpoints)) {
+  if (degree < 0 || degree > kMaxSplineDegree) {
+    fail("degree " + std::to_string(degree) + " must be in 0.." + std::to_string(kMaxSplineDegree));
+  }
+  if (breakpoints_.size() < 2) fail("needs at least 2 breakpoints, got " + std::to_string(breakpoints_.size()));
+  for (size_t i = 0; i < breakpoints_.size(); ++i) {
+    std::ostringstream msg;
+    if (!std::isfinite(breakpoints_[i])) {
+      msg << "breakpoint " << i << " = " << breakpoints_[i] << " is not finite";
+      fail(msg.str());
+    }
+    if (i > 0 && !(breakpoints_[i] > breakpoints_[i - 1])) {
+      msg << "breakpoint " << i << " = " << breakpoints_[i] << " is not greater than breakpoint " << i - 1
+          << " = " << breakpoints_[i - 1];
+      fail(msg.str());
+    }
+  }
+}
+
+BSplineBasis BSplineBasis::uniform(int degree, double lower, double upper, int intervals) {
+  if (intervals < 1) fail("uniform: intervals = " + std::to_string(intervals) + " must be >= 1");
+  if (!(lower < upper) || !std::isfinite(lower) || !std::isfinite(upper)) {
+    std::ostringstream msg;
+    msg << "uniform: need finite lower < upper, got [" << lower << ", " << upper << "]";
+    fail(msg.str());
+  }
+  std::vector<double> b(static_cast<size_t>(intervals) + 1);
+  for (int i = 0; i < intervals; ++i) b[static_cast<size_t>(i)] = lower + (upper - lower) * i / intervals;
+  b.back() = upper;  // exact end, free of rounding
+  return BSplineBasis(degree, std::move(b));
+}
+
+std::vector<double> BSplineBasis::knots() const {
+  std::vector<double> t;
+  t.reserve(static_cast<size_t>(size() + degree_ + 1));
+  t.insert(t.end(), static_cast<size_t>(degree_), breakpoints_.front());
+  t.insert(t.end(), breakpoints_.begin(), breakpoints_.end());
+  t.insert(t.end(), static_cast<size_t>(degree_), breakpoints_.back());
+  return t;
+}
+
+int BSplineBasis::interval(double x) const {
+  const auto it = std::upper_bound(breakpoints_.begin(), breakpoints_.end(), x);
+  const int i = static_cast<int>(it - breakpoints_.begin()) - 1;
+  return std::clamp(i, 0, intervals() - 1);
+}
+
+int BSplineBasis::evaluate(double x, double* value, double* d1, double* d2) const {
+  const int i = interval(x);
+  // Orders wanted: d2 implies d1 in the recursion, so a scratch array stands in for a null d1.
+  double scratch[kMaxSplineDegree + 1];
+  const int orders = d2 ? 2 : d1 ? 1 : 0;
+  if (d2 && !d1) d1 = scratch;
+  const double* b = breakpoints_.data();
+  const int m = intervals();
+  switch (degree_) {
+    case 0: evaluate_degree<0>(b, m, i, x, orders, value, d1, d2); break;
+    case 1: evaluate_degree<1>(b, m, i, x, orders, value, d1, d2); break;
+    case 2: evaluate_degree<2>(b, m, i, x, orders, value, d1, d2); break;
+    default: evaluate_degree<3>(b, m, i, x, orders, value, d1, d2); break;
+  }
+  return i;
+}
+
+}  // namespace wrc

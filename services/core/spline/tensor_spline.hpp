@@ -1,0 +1,128 @@
+#pragma once
+/// @file
+/// Tensor products of B-spline bases over up to four variables (y, roll, yaw and, as an option
+/// for a non-prismatic rail, x), the basis evaluated once per configuration (TensorBasisPoint) and
+/// contracted with the coefficients of every fitted quantity (TensorSplineSet).
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/spline/bspline_basis.hpp"
+
+namespace wrc {
+
+/// Largest number of variables of a tensor product.
+constexpr int kMaxTensorDimension = 4;
+/// Largest number of non-zero tensor basis functions at one point: (kMaxSplineDegree + 1)^4.
+constexpr int kMaxTensorTerms = 256;
+
+/// How many derivatives TensorBasis::evaluate computes.
+enum class SplineDerivatives { kValue = 0, kGradient = 1, kHessian = 2 };
+
+/// The non-zero tensor basis functions at one point: coefficient index and weights for the value,
+/// the gradient and the Hessian (upper triangle, row-major: (0,0), (0,1), .., (0,d-1), (1,1), ..).
+/// Units: weights of derivatives carry 1 / (unit of the variable) per derivative.
+struct TensorBasisPoint {
+  int terms = 0;                                          ///< number of non-zero basis functions
+  int dimension = 0;                                      ///< variables of the tensor product
+  SplineDerivatives derivatives = SplineDerivatives::kValue;  ///< what is filled in
+  std::array<int, kMaxTensorTerms> index{};               ///< flat coefficient index of each term
+  std::array<double, kMaxTensorTerms> value{};            ///< basis value of each term
+  /// d/dv_k of each term, k < dimension (filled for kGradient and kHessian).
+  std::array<std::array<double, kMaxTensorTerms>, kMaxTensorDimension> gradient{};
+  /// d2/dv_k dv_l of each term, upper triangle (k <= l) in the order above (filled for kHessian).
+  std::array<std::array<double, kMaxTensorTerms>, kMaxTensorDimension*(kMaxTensorDimension + 1) / 2> hessian{};
+};
+
+/// Position of Hessian entry (k, l) in the upper-triangle order of TensorBasisPoint::hessian.
+int hessian_slot(int k, int l, int dimension);
+
+/// The tensor product of 1..kMaxTensorDimension univariate bases. Flat coefficient index:
+/// row-major with the last variable fastest, index = ((i0 * n1 + i1) * n2 + i2) * n3 + i3.
+class TensorBasis {
+ public:
+  /// @throws std::invalid_argument for no basis or more than kMaxTensorDimension.
+  explicit TensorBasis(std::vector<BSplineBasis> bases);
+
+  int dimension() const { return static_cast<int>(bases_.size()); }
+  const BSplineBasis& basis(int k) const { return bases_[static_cast<size_t>(k)]; }
+  const std::vector<BSplineBasis>& bases() const { return bases_; }
+  /// Number of coefficients per function: the product of the basis sizes.
+  int size() const { return size_; }
+  /// True when every coordinate of point lies inside [lower, upper] of its basis.
+  bool contains(const double* point) const;
+
+  /// The non-zero basis functions at point (dimension() coordinates) with the derivatives asked for.
+  void evaluate(const double* point, SplineDerivatives derivatives, TensorBasisPoint& out) const;
+
+ private:
+  std::vector<BSplineBasis> bases_;
+  int size_ = 0;
+};
+
+/// M functions on one tensor basis (all fitted quantities of one wheel), coefficients stored
+/// basis-index-major with the functions contiguous, so that one basis evaluation is contracted
+/// with every function in one pass.
+class TensorSplineSet {
+ public:
+  /// @param coefficients size() x M, column j the coefficients of function j (flat index above).
+  /// @throws std::invalid_argument when the rows do not match basis.size() or M = 0.
+  TensorSplineSet(TensorBasis basis, const Eigen::MatrixXd& coefficients);
+
+  const TensorBasis& basis() const { return basis_; }
+  int functions() const { return functions_; }
+  /// Coefficient of basis function i for function j.
+  double coefficient(int i, int j) const { return data_[static_cast<size_t>(i) * stride_ + j]; }
+  /// size() x M matrix of the coefficients (the constructor's argument).
+  Eigen::MatrixXd coefficients() const;
+
+  /// Every function's value at the evaluated point: out[j], j < functions().
+  void values(const TensorBasisPoint& point, double* out) const;
+  /// Value, gradient (dimension entries) and Hessian (upper triangle, hessian_slot order) of
+  /// function j; point must have been evaluated with kHessian (kGradient: hessian may be null).
+  void derivatives(const TensorBasisPoint& point, int j, double& value, double* gradient, double* hessian) const;
+  /// Gradient of every function: gradient[k * functions() + j] = d f_j / d v_k (point evaluated
+  /// with kGradient or kHessian).
+  void gradients(const TensorBasisPoint& point, double* gradient) const;
+
+ private:
+  TensorBasis basis_;
+  int functions_ = 0;
+  int stride_ = 0;             // functions_ rounded up for aligned contraction
+  std::vector<double> data_;   // [basis index][function]
+};
+
+/// Samples for a weighted least-squares fit (the paper's equation (1) discretised):
+/// minimise sum_i w_i (f_ij - s_j(x_i))^2 for every function j.
+struct WeightedSamples {
+  int dimension = 0;                ///< variables per sample point
+  std::vector<double> points;       ///< sample i at points[i * dimension ..] [units of the variables]
+  std::vector<double> weights;      ///< w_i >= 0 [-]
+  Eigen::MatrixXd values;           ///< samples x M, f_ij [SI of function j]
+  int count() const { return static_cast<int>(weights.size()); }
+};
+
+/// What the fit did.
+struct FitStatistics {
+  double seconds = 0;         ///< wall time of assembly and solve [s]
+  int coefficients = 0;       ///< unknowns per function
+  int samples = 0;            ///< samples used
+  long nonzeros = 0;          ///< non-zeros of the normal-equation matrix
+  double ridge = 0;           ///< regularisation added to the diagonal, relative to its mean [-]
+};
+
+/// Weighted least-squares fit of every function in samples on basis: the normal equations
+/// B^T W B c = B^T W f assembled sparse (each sample touches at most (p+1)^d coefficients) and
+/// solved once by Eigen's SimplicialLDLT for all right-hand sides. A relative ridge
+/// (ridge * mean diagonal added to the diagonal, default 1e-12) keeps a basis function whose
+/// support holds only zero-weight samples determined (its coefficient goes to ~0).
+/// @throws std::invalid_argument for mismatched sizes, a negative or NaN weight, a NaN value, a
+///         point outside the basis box, or a basis function with no sample in its support
+///         (message names the function's index and its support); std::runtime_error when the
+///         factorisation fails.
+TensorSplineSet fit_tensor_spline(const TensorBasis& basis, const WeightedSamples& samples,
+                                  FitStatistics* statistics = nullptr, double ridge = 1e-12);
+
+}  // namespace wrc

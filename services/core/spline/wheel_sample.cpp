@@ -1,0 +1,78 @@
+#include "core/spline/wheel_sample.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/models/patch_builder.hpp"
+
+namespace wrc {
+
+double flange_split(const Profile& wheel, double flange_angle) {
+  const double limit = std::tan(flange_angle);
+  const double lower = wheel.lower();
+  for (double s = 0.0; s > lower; s -= 1e-5) {
+    if (std::abs(wheel.evaluate(s).slope) > limit) return s;
+  }
+  return lower;
+}
+
+WheelSample sample_wheel(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose, double s_split,
+                         double clearance_cap, double lateral_curvature_floor, const PotentialPointSearch& search) {
+  WheelSample out;
+  const std::vector<ContactPoint> points = geometry.potential_points(side, pose, search);
+  const double inf = std::numeric_limits<double>::infinity();
+  const ContactPoint* lowest = nullptr;
+  double second = inf, flange_low = inf;
+  for (const ContactPoint& p : points) {
+    if (!p.is_minimum) continue;
+    if (p.s <= s_split) {
+      flange_low = std::min(flange_low, p.distance);
+    } else if (!lowest || p.distance < lowest->distance) {
+      if (lowest) second = std::min(second, lowest->distance);
+      lowest = &p;
+    } else {
+      second = std::min(second, p.distance);
+    }
+  }
+  if (!lowest) return out;
+  const LocusPoint split = geometry.locus(side, pose).at(s_split);
+  if (split.over_rail) flange_low = std::min(flange_low, split.distance);
+  out.valid = true;
+  out.tread = *lowest;
+  out.second_minimum_gap = second - lowest->distance;
+  out.flange_clearance = std::min(flange_low - lowest->distance, clearance_cap);
+
+  const ContactPoint& p = out.tread;
+  const PatchShape shape = contact_shape(p, lateral_curvature_floor);
+  auto& f = out.fields;
+  f[kFieldZ] = pose.z - p.distance;
+  f[kFieldSWheel] = p.s;
+  f[kFieldSRail] = p.rail_u;
+  f[kFieldTheta] = p.theta;
+  f[kFieldWheelX] = p.wheel_point.x() - pose.x;
+  f[kFieldWheelY] = p.wheel_point.y() - pose.y;
+  f[kFieldWheelZ] = p.wheel_point.z() - pose.z;
+  f[kFieldRailZ] = p.rail_point.z();
+  f[kFieldContactAngle] = p.contact_angle;
+  f[kFieldRollingRadius] = p.rolling_radius;
+  f[kFieldNormalX] = p.normal.x();
+  f[kFieldNormalY] = p.normal.y();
+  f[kFieldNormalZ] = p.normal.z();
+  f[kFieldWheelCurvatureLateral] = p.wheel_curvature_lateral;
+  f[kFieldWheelCurvatureRolling] = p.wheel_curvature_rolling;
+  f[kFieldRailCurvatureLateral] = p.rail_curvature_lateral;
+  f[kFieldRailCurvatureRolling] = p.rail_curvature_rolling;
+  f[kFieldDistanceCurvature] = p.distance_curvature;
+  f[kFieldHertzA] = shape.shape.A;
+  f[kFieldHertzB] = shape.shape.B;
+  f[kFieldMinorOverMajor] = shape.shape.minor_over_major;
+  f[kFieldEllipticK] = shape.shape.K;
+  f[kFieldEllipticE] = shape.shape.E;
+  f[kFieldHertzM] = shape.shape.m;
+  f[kFieldHertzN] = shape.shape.n;
+  f[kFieldFlangeClearance] = out.flange_clearance;
+  return out;
+}
+
+}  // namespace wrc

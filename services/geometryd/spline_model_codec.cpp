@@ -1,0 +1,313 @@
+#include "geometryd/spline_model_codec.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "core/identity/geometry_key.hpp"
+#include "core/identity/sha256.hpp"
+
+namespace wrc::geometryd {
+namespace {
+
+[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("spline_model_t: " + what); }
+
+void require_finite(double v, const std::string& name) {
+  if (!std::isfinite(v)) bad(name + " = " + std::to_string(v) + " is not finite");
+}
+
+std::vector<double> checked_breakpoints(const std::vector<double>& b, int32_t count, const std::string& name) {
+  if (count < 2 || static_cast<size_t>(count) != b.size())
+    bad(name + ": " + std::to_string(count) + " breakpoints declared, " + std::to_string(b.size()) + " present");
+  for (size_t i = 0; i < b.size(); ++i) require_finite(b[i], name + "[" + std::to_string(i) + "]");
+  return b;  // BSplineBasis checks the order
+}
+
+}  // namespace
+
+spline_fit_options_t to_message(const SplineFitOptions& o) {
+  spline_fit_options_t m;
+  m.y_min = o.y_min;
+  m.y_max = o.y_max;
+  m.roll_max = o.roll_max;
+  m.yaw_max = o.yaw_max;
+  for (int k = 0; k < 3; ++k) {
+    m.intervals[k] = o.intervals[static_cast<size_t>(k)];
+    m.degrees[k] = static_cast<int8_t>(o.degrees[static_cast<size_t>(k)]);
+  }
+  m.knot_placement =
+      o.placement == KnotPlacement::kUniform ? spline_fit_options_t::UNIFORM : spline_fit_options_t::GRADED;
+  m.grading = o.grading;
+  m.num_y_breakpoints = static_cast<int32_t>(o.y_breakpoints.size());
+  m.y_breakpoints = o.y_breakpoints;
+  m.sample_step_y = o.sample_step_y;
+  m.roll_samples = o.roll_samples;
+  m.yaw_samples = o.yaw_samples;
+  m.jump_weight = o.jump_weight;
+  m.jump_band = o.jump_band;
+  m.flange_angle = o.flange_angle;
+  m.clearance_cap = o.clearance_cap;
+  return m;
+}
+
+SplineFitOptions from_message(const spline_fit_options_t& m) {
+  SplineFitOptions o;
+  o.y_min = m.y_min;
+  o.y_max = m.y_max;
+  o.roll_max = m.roll_max;
+  o.yaw_max = m.yaw_max;
+  for (int k = 0; k < 3; ++k) {
+    o.intervals[static_cast<size_t>(k)] = m.intervals[k];
+    o.degrees[static_cast<size_t>(k)] = m.degrees[k];
+  }
+  if (m.knot_placement != spline_fit_options_t::UNIFORM && m.knot_placement != spline_fit_options_t::GRADED)
+    throw std::invalid_argument("spline_fit_options_t: knot_placement = " + std::to_string(m.knot_placement) +
+                                " is neither UNIFORM (0) nor GRADED (1)");
+  o.placement = m.knot_placement == spline_fit_options_t::UNIFORM ? KnotPlacement::kUniform : KnotPlacement::kGraded;
+  o.grading = m.grading;
+  if (m.num_y_breakpoints < 0 || static_cast<size_t>(m.num_y_breakpoints) != m.y_breakpoints.size())
+    throw std::invalid_argument("spline_fit_options_t: num_y_breakpoints = " + std::to_string(m.num_y_breakpoints) +
+                                " does not match the array");
+  o.y_breakpoints = m.y_breakpoints;
+  o.sample_step_y = m.sample_step_y;
+  o.roll_samples = m.roll_samples;
+  o.yaw_samples = m.yaw_samples;
+  o.jump_weight = m.jump_weight;
+  o.jump_band = m.jump_band;
+  o.flange_angle = m.flange_angle;
+  o.clearance_cap = m.clearance_cap;
+  o.validate();
+  return o;
+}
+
+track_t to_message(const GeometrySpec& spec) {
+  track_t t;
+  t.wheel_profile.name = spec.wheel;
+  t.wheel_profile.content_hash = profile_content_hash(spec.wheel);
+  t.rail_profile.name = spec.rail;
+  t.rail_profile.content_hash = profile_content_hash(spec.rail);
+  t.rail_cant = spec.rail_cant ? *spec.rail_cant : std::numeric_limits<double>::quiet_NaN();
+  t.gauge = spec.track.gauge;
+  t.gauge_depth = spec.track.gauge_depth;
+  t.flange_back_spacing = spec.track.flange_back_spacing;
+  t.taping_line_offset = spec.track.taping_line_offset;
+  t.rail_inclination = spec.track.inclination;
+  t.nominal_radius = spec.track.nominal_radius;
+  return t;
+}
+
+GeometrySpec from_message(const track_t& t) {
+  GeometrySpec spec;
+  spec.wheel = t.wheel_profile.name;
+  spec.rail = t.rail_profile.name;
+  if (!std::isnan(t.rail_cant)) {
+    if (!std::isfinite(t.rail_cant)) throw std::invalid_argument("track_t: rail_cant is infinite");
+    spec.rail_cant = t.rail_cant;
+  }
+  spec.track.gauge = t.gauge;
+  spec.track.gauge_depth = t.gauge_depth;
+  spec.track.flange_back_spacing = t.flange_back_spacing;
+  spec.track.taping_line_offset = t.taping_line_offset;
+  spec.track.inclination = t.rail_inclination;
+  spec.track.nominal_radius = t.nominal_radius;
+  spec.track.validate();
+  for (const profile_ref_t* ref : {&t.wheel_profile, &t.rail_profile}) {
+    if (!ref->content_hash.empty() && ref->content_hash != profile_content_hash(ref->name))
+      throw std::invalid_argument("track_t: the content of profile '" + ref->name +
+                                  "' here differs from the sender's (content_hash " + ref->content_hash + ")");
+  }
+  return spec;
+}
+
+std::string model_key(const std::string& geometry_key, const SplineFitOptions& options) {
+  return sha256_hex("wrc-spline-model-v" + std::to_string(kSplineModelVersion) + "\n" + geometry_key + "\n" +
+                    options.canonical_text());
+}
+
+spline_model_t encode_model(const SplineFit& fit, const GeometrySpec& spec, const SplineFitOptions& options) {
+  const SplineContactGeometry& model = *fit.model;
+  spline_model_t m;
+  m.request_id = 0;
+  m.geometry_key = geometry_key(spec);
+  m.model_key = model_key(m.geometry_key, options);
+  m.model_hash = model.data_hash();
+  m.version = kSplineModelVersion;
+  m.track = to_message(spec);
+  m.fit = to_message(options);
+  m.flange_split_s = model.s_split();
+  m.lateral_curvature_floor = model.lateral_curvature_floor();
+  m.num_functions = kSplineFieldCount;
+  for (const SplineFieldInfo& f : kSplineFields) {
+    m.function_names.push_back(f.name);
+    m.function_units.push_back(f.unit);
+  }
+  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
+    const int w = static_cast<int>(side);
+    const TensorSplineSet& set = model.wheel(side);
+    const WheelFitReport& report = fit.wheels[static_cast<size_t>(w)];
+    spline_wheel_t& out = m.wheels[w];
+    out.wheel = static_cast<int8_t>(w);
+    const auto& b = set.basis();
+    out.breakpoints_y = b.basis(0).breakpoints();
+    out.breakpoints_roll = b.basis(1).breakpoints();
+    out.breakpoints_yaw = b.basis(2).breakpoints();
+    out.num_breakpoints_y = static_cast<int32_t>(out.breakpoints_y.size());
+    out.num_breakpoints_roll = static_cast<int32_t>(out.breakpoints_roll.size());
+    out.num_breakpoints_yaw = static_cast<int32_t>(out.breakpoints_yaw.size());
+    out.basis_size_y = b.basis(0).size();
+    out.basis_size_roll = b.basis(1).size();
+    out.basis_size_yaw = b.basis(2).size();
+    out.num_functions = kSplineFieldCount;
+    out.num_coefficients = b.size();
+    const Eigen::MatrixXd c = set.coefficients();
+    out.coefficients.assign(static_cast<size_t>(kSplineFieldCount), std::vector<double>(static_cast<size_t>(b.size())));
+    for (int f = 0; f < kSplineFieldCount; ++f)
+      for (int i = 0; i < b.size(); ++i) out.coefficients[static_cast<size_t>(f)][static_cast<size_t>(i)] = c(i, f);
+    for (const FieldError& e : report.residuals) {
+      out.fit_rms_error.push_back(e.rms_error);
+      out.fit_max_error.push_back(e.max_error);
+    }
+    out.samples = report.samples;
+    out.samples_near_jumps = report.samples_near_jumps;
+    out.jumps = static_cast<int32_t>(report.jumps.size());
+  }
+  m.sampling_seconds = fit.sampling_seconds;
+  m.fitting_seconds = fit.fitting_seconds;
+  m.file_size = 0;
+  return m;
+}
+
+std::shared_ptr<const SplineContactGeometry> decode_model(const spline_model_t& m) {
+  if (m.version != kSplineModelVersion)
+    bad("version = " + std::to_string(m.version) + ", this reader knows " + std::to_string(kSplineModelVersion));
+  if (m.num_functions != kSplineFieldCount || m.function_names.size() != static_cast<size_t>(kSplineFieldCount))
+    bad("num_functions = " + std::to_string(m.num_functions) + ", expected " + std::to_string(kSplineFieldCount));
+  for (int f = 0; f < kSplineFieldCount; ++f) {
+    if (m.function_names[static_cast<size_t>(f)] != kSplineFields[static_cast<size_t>(f)].name)
+      bad("function_names[" + std::to_string(f) + "] = '" + m.function_names[static_cast<size_t>(f)] + "', expected '" +
+          kSplineFields[static_cast<size_t>(f)].name + "'");
+  }
+  const SplineFitOptions options = from_message(m.fit);
+  require_finite(m.flange_split_s, "flange_split_s");
+  require_finite(m.lateral_curvature_floor, "lateral_curvature_floor");
+  std::vector<TensorSplineSet> sets;
+  for (int w = 0; w < 2; ++w) {
+    const spline_wheel_t& in = m.wheels[w];
+    const std::string name = std::string("wheels[") + std::to_string(w) + "]";
+    if (in.wheel != w) bad(name + ".wheel = " + std::to_string(in.wheel));
+    TensorBasis basis({BSplineBasis(options.degrees[0], checked_breakpoints(in.breakpoints_y, in.num_breakpoints_y,
+                                                                            name + ".breakpoints_y")),
+                       BSplineBasis(options.degrees[1], checked_breakpoints(in.breakpoints_roll, in.num_breakpoints_roll,
+                                                                            name + ".breakpoints_roll")),
+                       BSplineBasis(options.degrees[2], checked_breakpoints(in.breakpoints_yaw, in.num_breakpoints_yaw,
+                                                                            name + ".breakpoints_yaw"))});
+    if (in.basis_size_y != basis.basis(0).size() || in.basis_size_roll != basis.basis(1).size() ||
+        in.basis_size_yaw != basis.basis(2).size())
+      bad(name + ": basis sizes " + std::to_string(in.basis_size_y) + " x " + std::to_string(in.basis_size_roll) +
+          " x " + std::to_string(in.basis_size_yaw) + " do not match the breakpoints and degrees");
+    if (in.num_functions != kSplineFieldCount || in.num_coefficients != basis.size() ||
+        in.coefficients.size() != static_cast<size_t>(kSplineFieldCount))
+      bad(name + ": " + std::to_string(in.num_functions) + " x " + std::to_string(in.num_coefficients) +
+          " coefficients, expected " + std::to_string(kSplineFieldCount) + " x " + std::to_string(basis.size()) +
+          (in.num_coefficients == 0 ? " (the coefficients are in the file: resolve_model() first)" : ""));
+    Eigen::MatrixXd c(basis.size(), kSplineFieldCount);
+    for (int f = 0; f < kSplineFieldCount; ++f) {
+      const auto& row = in.coefficients[static_cast<size_t>(f)];
+      for (int i = 0; i < basis.size(); ++i) {
+        c(i, f) = row[static_cast<size_t>(i)];
+        if (!std::isfinite(c(i, f)))
+          bad(name + ".coefficients[" + std::to_string(f) + "][" + std::to_string(i) + "] is not finite");
+      }
+    }
+    sets.emplace_back(std::move(basis), c);
+  }
+  auto model = std::make_shared<const SplineContactGeometry>(
+      std::move(sets), SplineBox{options.y_min, options.y_max, options.roll_max, options.yaw_max}, m.flange_split_s,
+      m.lateral_curvature_floor);
+  const std::string hash = model->data_hash();
+  if (hash != m.model_hash) bad("model_hash = " + m.model_hash + " but the data hash to " + hash);
+  return model;
+}
+
+bool too_large_for_inline(spline_model_t& message) { return message.getEncodedSize() > kMaxInlineModelBytes; }
+
+spline_model_t write_model_file(const spline_model_t& message, const std::string& path) {
+  spline_model_t stored = message;
+  stored.header = header_t{};
+  stored.request_id = 0;
+  stored.file_path.clear();
+  stored.file_hash.clear();
+  stored.file_size = 0;
+  const int size = stored.getEncodedSize();
+  std::vector<char> bytes(static_cast<size_t>(size));
+  if (stored.encode(bytes.data(), 0, size) != size) throw std::runtime_error("spline model: encoding failed");
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), size);
+    if (!out) throw std::runtime_error("spline model: cannot write " + temporary);
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, path, ec);
+  if (ec) throw std::runtime_error("spline model: cannot rename " + temporary + " to " + path + ": " + ec.message());
+  return file_reference(message, path);
+}
+
+namespace {
+std::vector<char> read_bytes(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("spline model file " + path + " is missing");
+  std::ifstream in(path, std::ios::binary);
+  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw std::runtime_error("spline model file " + path + ": read error");
+  return bytes;
+}
+
+spline_model_t decode_file(const std::vector<char>& bytes, const std::string& path) {
+  spline_model_t full;
+  if (full.decode(bytes.data(), 0, static_cast<int>(bytes.size())) != static_cast<int>(bytes.size()))
+    throw std::runtime_error("spline model file " + path + " does not decode as a spline_model_t");
+  return full;
+}
+}  // namespace
+
+spline_model_t file_reference(const spline_model_t& full, const std::string& path) {
+  const std::vector<char> bytes = read_bytes(path);
+  spline_model_t reference = full;
+  for (spline_wheel_t& w : reference.wheels) {
+    w.num_coefficients = 0;
+    w.coefficients.assign(static_cast<size_t>(w.num_functions), std::vector<double>());
+  }
+  reference.file_path = std::filesystem::absolute(path).string();
+  reference.file_hash = sha256_hex(bytes.data(), bytes.size());
+  reference.file_size = static_cast<int64_t>(bytes.size());
+  return reference;
+}
+
+spline_model_t read_model_file(const std::string& path) { return decode_file(read_bytes(path), path); }
+
+spline_model_t resolve_model(const spline_model_t& reference) {
+  if (reference.file_path.empty()) return reference;
+  const std::string& path = reference.file_path;
+  const std::vector<char> bytes = read_bytes(path);
+  if (static_cast<std::int64_t>(bytes.size()) != reference.file_size)
+    throw std::runtime_error("spline model file " + path + " has " + std::to_string(bytes.size()) +
+                             " bytes, the message says " + std::to_string(reference.file_size));
+  const std::string hash = sha256_hex(bytes.data(), bytes.size());
+  if (hash != reference.file_hash)
+    throw std::runtime_error("spline model file " + path + ": SHA-256 " + hash + " differs from the message's " +
+                             reference.file_hash);
+  spline_model_t full = decode_file(bytes, path);
+  if (full.model_key != reference.model_key || full.model_hash != reference.model_hash)
+    throw std::runtime_error("spline model file " + path + " holds another model (model_key or model_hash differ)");
+  full.header = reference.header;
+  full.request_id = reference.request_id;
+  return full;
+}
+
+}  // namespace wrc::geometryd

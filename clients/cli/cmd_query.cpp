@@ -372,8 +372,9 @@ int run_query(const std::vector<std::string>& args) {
             << number(result.round_trip * 1e3) << " ms (compute " << number(reply.compute_time * 1e3) << " ms, "
             << result.attempts << " attempt" << (result.attempts > 1 ? "s" : "") << ")\n";
   if (reply.status != wrc::contact_reply_t::OK) {
-    static const char* names_of[] = {"OK", "BAD_REQUEST", "NO_CONTACT", "IMPOSSIBLE_CONFIGURATION", "INTERNAL_ERROR"};
-    const char* status = reply.status >= 0 && reply.status <= 4 ? names_of[reply.status] : "UNKNOWN";
+    static const char* names_of[] = {"OK", "BAD_REQUEST", "NO_CONTACT", "IMPOSSIBLE_CONFIGURATION", "INTERNAL_ERROR",
+                                     "OUTSIDE_MODEL"};
+    const char* status = reply.status >= 0 && reply.status <= 5 ? names_of[reply.status] : "UNKNOWN";
     std::cerr << "query: " << status << ": " << reply.message << "\n";
     return 1;
   }

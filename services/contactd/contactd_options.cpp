@@ -5,9 +5,18 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "core/models/contact_model_factory.hpp"
+
 namespace wrc::contactd {
 
 namespace {
+
+// "onepoint, interp, multipoint, spline" from the registry.
+std::string model_list() {
+  std::string list;
+  for (const std::string& n : contact_model_names()) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
 
 double parse_number(const std::string& option, const std::string& text, double lo, double hi) {
   char* end = nullptr;
@@ -36,11 +45,11 @@ ContactdOptions ContactdOptions::parse(const std::vector<std::string>& args) {
       value = args[++i];
     }
     if (option == "--model") {
-      const auto& models = known_models();
-      if (std::find(models.begin(), models.end(), value) == models.end()) {
-        throw std::invalid_argument("--model: '" + value + "' is not one of onepoint, interp, multipoint");
+      try {
+        options.model = contact_model_entry(value).name;
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--model: ") + e.what());
       }
-      options.model = value;
     } else if (option == "--wheel") {
       options.geometry.wheel = value;
     } else if (option == "--rail") {
@@ -71,14 +80,14 @@ ContactdOptions ContactdOptions::parse(const std::vector<std::string>& args) {
       throw std::invalid_argument("unknown option '" + option + "' (see --help)");
     }
   }
-  if (options.model.empty()) throw std::invalid_argument("--model is required (onepoint, interp or multipoint)");
+  if (options.model.empty()) throw std::invalid_argument("--model is required (" + model_list() + ")");
   track.validate();
   return options;
 }
 
 std::string ContactdOptions::help_text() {
-  return "  --model M               contact model: onepoint, interp or multipoint (required)\n"
-         "  --wheel W               wheel profile: S1002, conic:<slope>, or a profile file (default S1002)\n"
+  return "  --model M               contact model: " + model_list() + " (required)\n" +
+         std::string("  --wheel W               wheel profile: S1002, conic:<slope>, or a profile file (default S1002)\n"
          "  --rail R                rail profile: UIC60, UIC60-MB, circle:<radius [m]>, or a file (default UIC60)\n"
          "  --rail-cant C           inclination already in the rail profile: 1:N, none or [rad] (default: the file's)\n"
          "  --gauge G               track gauge [m], measured --gauge-depth below the top of rail (default 1.435)\n"
@@ -86,7 +95,7 @@ std::string ContactdOptions::help_text() {
          "  --flange-back F         flange-back spacing [m] (default 1.360)\n"
          "  --taping-line-offset T  taping line from the wheel's inner face [m] (default 0.070)\n"
          "  --inclination I         rail inclination: 1:40, 1:20, none, or an angle [rad] (default 1:40)\n"
-         "  --r0 R0                 nominal rolling radius [m] (default 0.46)\n";
+         "  --r0 R0                 nominal rolling radius [m] (default 0.46)\n");
 }
 
 }  // namespace wrc::contactd

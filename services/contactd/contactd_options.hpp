@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Command line of wrc-contactd beyond the options every service shares (bus/service_options.hpp):
-///   --model onepoint|interp|multipoint   (required)
+///   --model M   (required; a name of core/models/contact_model_factory.hpp's registry)
 ///   --wheel W --rail R --rail-cant C --gauge G --gauge-depth D --flange-back F
 ///   --taping-line-offset T --inclination I --r0 R0
 /// with the same meaning and defaults as the geometry commands of the `wrc` front end
@@ -14,15 +14,9 @@
 
 namespace wrc::contactd {
 
-/// Models this service can run.
-inline const std::vector<std::string>& known_models() {
-  static const std::vector<std::string> models{"onepoint", "interp", "multipoint"};
-  return models;
-}
-
 /// Parsed wrc-contactd options (those after bus::ServiceOptions took its own).
 struct ContactdOptions {
-  std::string model;      ///< one of known_models()
+  std::string model;      ///< a registered contact model (contact_model_names())
   GeometrySpec geometry;  ///< profiles, rail cant and track
 
   /// Parses the arguments ServiceOptions left over. Throws std::invalid_argument with one line

@@ -1,6 +1,7 @@
-// wrc-contactd: one contact model (onepoint, interp or multipoint) as a service on the wrc bus.
-// It builds the wheelset geometry and the model (heartbeat state STARTING meanwhile, the build
-// time in its log), then answers every contact_query_t on CONTACT_QUERY.<model> addressed to its
+// wrc-contactd: one contact model (onepoint, interp, multipoint or spline) as a service on the wrc
+// bus. It builds the wheelset geometry and the model (heartbeat state STARTING meanwhile, the
+// build time in its log; the spline model's data come from wrc-geometryd:
+// contactd/spline_model_source.hpp), then answers every contact_query_t on CONTACT_QUERY.<model> addressed to its
 // instance (or to any instance while it is the model's leader: contactd/instance_filter.hpp) with
 // a contact_reply_t on the query's reply channel, request id echoed. Heartbeats: model, instance,
 // state (STARTING, READY, DRAINING on SIGTERM/SIGINT), geometry key (core/identity/geometry_key.hpp),
@@ -9,7 +10,7 @@
 // geometry_key differs is rejected. The service adds nothing to the model:
 // contactd/query_adapter.hpp only translates.
 //
-//   wrc-contactd --model onepoint|interp|multipoint [--wheel W --rail R --rail-cant C --gauge G ...]
+//   wrc-contactd --model onepoint|interp|multipoint|spline [--wheel W --rail R --rail-cant C --gauge G ...]
 //                [--instance NAME] [--channel-prefix P] [--lcm-url URL] [--heartbeat-period S]
 
 #include <algorithm>
@@ -38,6 +39,7 @@
 #include "contactd/instance_filter.hpp"
 #include "contactd/model_hash.hpp"
 #include "contactd/query_adapter.hpp"
+#include "contactd/spline_model_source.hpp"
 #include "core/geometry/geometry_spec.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
@@ -45,6 +47,9 @@
 #include "wrc/contact_reply_t.hpp"
 
 namespace {
+
+/// [s] between requests to wrc-geometryd while the spline service waits for its model.
+constexpr double kModelRequestPeriod = 2.0;
 
 /// The geometry and model a service computes with, and what building them cost.
 struct Built {
@@ -96,36 +101,75 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   heartbeat.set_geometry_key(key);
   heartbeat.publish_now();  // STARTING
 
-  // Build in a worker thread so that STARTING heartbeats keep coming while the model is built
-  // (the interpolated model takes a while); LCM is only used from this thread.
-  std::cerr << sender << ": building the " << model_name << " model (wheel " << options.geometry.wheel << ", rail "
-            << options.geometry.rail << ", geometry key " << key << ")\n";
-  auto pending = std::async(std::launch::async, build, std::cref(options));
-  while (pending.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
-    if (ShutdownSignal::requested()) {
-      heartbeat.set_state(wrc::heartbeat_t::DRAINING);
-      std::cerr << sender << ": signal " << ShutdownSignal::signal_number()
-                << " while building the model; exiting without waiting for it\n";
-      std::cerr.flush();
-      std::_Exit(0);  // the build thread cannot be interrupted; nothing else needs cleaning up
+  const wrc::ContactModelEntry& entry = wrc::contact_model_entry(model_name);
+  std::shared_ptr<const wrc::ContactModel> model;  // replaced (loop thread only) when a new spline model comes
+  std::string model_hash;
+  std::shared_ptr<const wrc::WheelsetGeometry> geometry;
+  std::unique_ptr<wrc::contactd::SplineModelSource> splines;
+  if (!entry.needs_data) {
+    // Build in a worker thread so that STARTING heartbeats keep coming while the model is built
+    // (the interpolated model takes a while); LCM is only used from this thread.
+    std::cerr << sender << ": building the " << model_name << " model (wheel " << options.geometry.wheel << ", rail "
+              << options.geometry.rail << ", geometry key " << key << ")\n";
+    auto pending = std::async(std::launch::async, build, std::cref(options));
+    while (pending.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
+      if (ShutdownSignal::requested()) {
+        heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+        std::cerr << sender << ": signal " << ShutdownSignal::signal_number()
+                  << " while building the model; exiting without waiting for it\n";
+        std::cerr.flush();
+        std::_Exit(0);  // the build thread cannot be interrupted; nothing else needs cleaning up
+      }
+      heartbeat.tick();
     }
-    heartbeat.tick();
+    Built built;
+    try {
+      built = pending.get();
+    } catch (const std::exception& e) {
+      heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+      std::cerr << sender << ": cannot build the " << model_name << " model: " << e.what() << "\n";
+      return 1;
+    }
+    std::cerr << sender << ": built the " << model_name << " model in " << built.model_seconds << " s (geometry "
+              << built.geometry_seconds << " s)"
+              << (built.model_hash.empty() ? std::string() : ", model hash " + built.model_hash) << "\n";
+    model = std::move(built.model);
+    model_hash = built.model_hash;
+  } else {
+    // The model's data come from wrc-geometryd: ask, and wait (STARTING) until they are here.
+    try {
+      geometry = std::make_shared<const wrc::WheelsetGeometry>(wrc::make_geometry(options.geometry));
+    } catch (const std::exception& e) {
+      heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+      std::cerr << sender << ": cannot build the geometry: " << e.what() << "\n";
+      return 1;
+    }
+    splines = std::make_unique<wrc::contactd::SplineModelSource>(*lcm, names, sender, options.geometry,
+                                                                 wrc::SplineFitOptions{}, kModelRequestPeriod);
+    std::cerr << sender << ": waiting for spline model " << splines->model_key().substr(0, 12)
+              << " from wrc-geometryd (geometry key " << key << ")\n";
+    while (!model) {
+      if (ShutdownSignal::requested()) {
+        heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+        std::cerr << sender << ": signal " << ShutdownSignal::signal_number() << " while waiting for the model\n";
+        return 0;
+      }
+      splines->tick();
+      if (lcm->handleTimeout(20) < 0) {
+        std::cerr << sender << ": LCM failed while waiting for the model\n";
+        return 1;
+      }
+      heartbeat.tick();
+      if (auto fitted = splines->take()) {
+        model = wrc::make_contact_model(model_name, geometry, wrc::ContactModelOptions{}, {fitted});
+        model_hash = wrc::contactd::model_hash(*model);
+        std::cerr << sender << ": got spline model " << splines->model_key().substr(0, 12) << ", model hash "
+                  << model_hash << " after " << splines->requests_sent() << " request(s)\n";
+      }
+    }
   }
-  Built built;
-  try {
-    built = pending.get();
-  } catch (const std::exception& e) {
-    heartbeat.set_state(wrc::heartbeat_t::DRAINING);
-    std::cerr << sender << ": cannot build the " << model_name << " model: " << e.what() << "\n";
-    return 1;
-  }
-  std::cerr << sender << ": built the " << model_name << " model in " << built.model_seconds << " s (geometry "
-            << built.geometry_seconds << " s)"
-            << (built.model_hash.empty() ? std::string() : ", model hash " + built.model_hash) << "\n";
-  const std::string model_hash = built.model_hash;
   heartbeat.set_model_hash(model_hash);
 
-  const wrc::ContactModel& model = *built.model;
   LatencyWindow compute_times;  // recent evaluation times [s], for the log
   wrc::contactd::InstanceFilter filter(*lcm, names.name(channel::kHeartbeat), model_name, instance);
   RequestServer<contact_query_t, contact_reply_t> server(
@@ -135,7 +179,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
         reply.instance = instance;
         reply.geometry_key = key;
         reply.model_hash = model_hash;
-        wrc::contactd::evaluate_query(model, query, reply);
+        wrc::contactd::evaluate_query(*model, query, reply);
         reply.compute_time = monotonic_seconds() - t0;
         compute_times.add(reply.compute_time);
       });
@@ -163,6 +207,17 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
 
   ServiceLoop loop(*lcm, heartbeat);
   loop.add_load_source(&server);
+  if (splines) {
+    // A recompute of the same model (same model_key, new data) replaces the model between queries.
+    loop.set_idle_hook([&] {
+      auto fitted = splines->take();
+      if (!fitted) return;
+      model = wrc::make_contact_model(model_name, geometry, wrc::ContactModelOptions{}, {fitted});
+      model_hash = wrc::contactd::model_hash(*model);
+      heartbeat.set_model_hash(model_hash);
+      std::cerr << sender << ": replaced the spline model, model hash now " << model_hash << "\n";
+    });
+  }
   std::cerr << sender << ": serving " << request_channel << "\n";
   const int rc = loop.run();
   const auto& c = server.counters();
@@ -179,7 +234,7 @@ int main(int argc, char** argv) {
   try {
     const auto service = wrc::bus::ServiceOptions::parse(argc, argv);
     if (service.help) {
-      std::cout << "usage: wrc-contactd --model onepoint|interp|multipoint [options]\n"
+      std::cout << "usage: wrc-contactd --model onepoint|interp|multipoint|spline [options]\n"
                    "Contact service: answers contact_query_t on CONTACT_QUERY.<model> with contact_reply_t.\n\n"
                 << wrc::contactd::ContactdOptions::help_text() << wrc::bus::ServiceOptions::help_text();
       return 0;

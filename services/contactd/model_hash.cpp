@@ -6,6 +6,7 @@
 
 #include "core/identity/sha256.hpp"
 #include "core/models/interpolated_model.hpp"
+#include "core/models/spline_model.hpp"
 
 namespace wrc::contactd {
 namespace {
@@ -51,6 +52,7 @@ std::string table_hash(const ContactPointTable& table) {
 
 std::string model_hash(const ContactModel& model) {
   if (const auto* interp = dynamic_cast<const InterpolatedModel*>(&model)) return table_hash(interp->table());
+  if (const auto* spline = dynamic_cast<const SplineModel*>(&model)) return spline->splines().data_hash();
   return "";
 }
 

@@ -78,10 +78,11 @@ int status_severity(std::int8_t status) {
   switch (status) {
     case wrc::contact_reply_t::OK: return 0;
     case wrc::contact_reply_t::NO_CONTACT: return 1;
-    case wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION: return 2;
-    case wrc::contact_reply_t::BAD_REQUEST: return 3;
-    case wrc::contact_reply_t::INTERNAL_ERROR: return 4;
-    default: return 5;
+    case wrc::contact_reply_t::OUTSIDE_MODEL: return 2;
+    case wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION: return 3;
+    case wrc::contact_reply_t::BAD_REQUEST: return 4;
+    case wrc::contact_reply_t::INTERNAL_ERROR: return 5;
+    default: return 6;
   }
 }
 
@@ -92,6 +93,7 @@ const char* status_name(std::int8_t status) {
     case wrc::contact_reply_t::NO_CONTACT: return "NO_CONTACT";
     case wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION: return "IMPOSSIBLE_CONFIGURATION";
     case wrc::contact_reply_t::INTERNAL_ERROR: return "INTERNAL_ERROR";
+    case wrc::contact_reply_t::OUTSIDE_MODEL: return "OUTSIDE_MODEL";
     default: return "UNKNOWN";
   }
 }
@@ -193,6 +195,9 @@ void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query
     std::string why;
     try {
       to_result_message(model.evaluate(to_contact_query(query, i)), out);
+    } catch (const OutsideModelError& e) {
+      status = wrc::contact_reply_t::OUTSIDE_MODEL;
+      why = e.what();
     } catch (const ContactConfigurationError& e) {
       status = wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION;
       why = e.what();

@@ -32,9 +32,9 @@ void to_result_message(const ContactResult& result, wrc::contact_result_t& messa
 
 /// Evaluates every configuration of a validated query with model and fills reply.status,
 /// reply.message and reply.results (one per configuration, in query order). Per configuration:
-/// ContactConfigurationError -> IMPOSSIBLE_CONFIGURATION, std::invalid_argument -> BAD_REQUEST,
+/// OutsideModelError -> OUTSIDE_MODEL, ContactConfigurationError -> IMPOSSIBLE_CONFIGURATION, std::invalid_argument -> BAD_REQUEST,
 /// any other exception -> INTERNAL_ERROR; such a configuration gets no patches and zero
-/// resultants. The overall status is the worst one (OK < NO_CONTACT < IMPOSSIBLE_CONFIGURATION <
+/// resultants. The overall status is the worst one (OK < NO_CONTACT < OUTSIDE_MODEL < IMPOSSIBLE_CONFIGURATION <
 /// BAD_REQUEST < INTERNAL_ERROR) and the message that of the first configuration with that status,
 /// prefixed "configuration <i> (y=..., roll=..., yaw=...): ". Never throws for a model failure.
 void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query, wrc::contact_reply_t& reply);

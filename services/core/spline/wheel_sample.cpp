@@ -35,9 +35,18 @@ WheelSample sample_wheel(const WheelsetGeometry& geometry, WheelSide side, const
       second = std::min(second, p.distance);
     }
   }
-  if (!lowest) return out;
-  const LocusPoint split = geometry.locus(side, pose).at(s_split);
+  const ContactLocus locus = geometry.locus(side, pose);
+  const LocusPoint split = locus.at(s_split);
   if (split.over_rail) flange_low = std::min(flange_low, split.distance);
+  // Deep in flange contact the tread's minimum can merge into the split point and vanish: the
+  // tread's lowest point is then the split point itself (the fields stay continuous, and the
+  // clearance is <= 0 there, so the model does not use them).
+  ContactPoint boundary;
+  if (!lowest) {
+    if (!split.over_rail) return out;
+    boundary = make_contact_point(locus, s_split, false);
+    lowest = &boundary;
+  }
   out.valid = true;
   out.tread = *lowest;
   out.second_minimum_gap = second - lowest->distance;

@@ -13,8 +13,10 @@ namespace wrc {
 
 /// The exact geometry of one wheel at one pose, split at the flange (s_split).
 struct WheelSample {
-  bool valid = false;      ///< a local minimum of the distance exists on the tread side (s > s_split)
-  ContactPoint tread;      ///< the lowest local minimum with s > s_split (the tread contact point)
+  bool valid = false;      ///< the tread side (s > s_split) has a local minimum or the split point is over the rail
+  /// The lowest local minimum with s > s_split (the tread contact point); without one (deep
+  /// flange contact) the point of C at s_split.
+  ContactPoint tread;
   /// Distance of the second-lowest tread minimum above the lowest [m] (+inf with one minimum):
   /// zero where the tread contact point jumps.
   double second_minimum_gap = 0;

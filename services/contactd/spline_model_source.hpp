@@ -1,0 +1,69 @@
+#pragma once
+/// @file
+/// How wrc-contactd --model spline gets its model: it asks wrc-geometryd (geometry_request_t on
+/// GEOMETRY_REQUEST, re-sent every retry period while nothing has come), listens on SPLINE_MODEL
+/// for the answer or any later publication of the same model (same model_key: a recompute),
+/// reads the model file, checks its SHA-256 and the model hash, and decodes it. Used from the
+/// service's loop thread only.
+
+#include <memory>
+#include <string>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "bus/channels.hpp"
+#include "bus/header_stamper.hpp"
+#include "bus/rejection_log.hpp"
+#include "core/geometry/geometry_spec.hpp"
+#include "core/spline/spline_contact_geometry.hpp"
+#include "core/spline/spline_fit_options.hpp"
+#include "wrc/spline_model_t.hpp"
+
+namespace wrc::contactd {
+
+class SplineModelSource {
+ public:
+  /// Subscribes to SPLINE_MODEL and PROGRESS (names with prefix); sends nothing yet.
+  /// @param retry_period [s] between requests while no model has come, > 0.
+  SplineModelSource(lcm::LCM& lcm, const bus::ChannelNames& names, std::string sender, GeometrySpec spec,
+                    SplineFitOptions fit, double retry_period);
+  ~SplineModelSource();
+  SplineModelSource(const SplineModelSource&) = delete;
+  SplineModelSource& operator=(const SplineModelSource&) = delete;
+
+  /// Sends the request when none was sent yet or the retry period has passed without a model.
+  void tick();
+  /// The model received and checked since the last call, or null.
+  std::shared_ptr<const SplineContactGeometry> take();
+
+  const std::string& geometry_key() const { return geometry_key_; }
+  const std::string& model_key() const { return model_key_; }
+  /// SHA-256 of the data of the model taken last (empty before the first).
+  const std::string& model_hash() const { return model_hash_; }
+  /// Requests sent so far.
+  int requests_sent() const { return requests_sent_; }
+
+ private:
+  void on_model(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void on_progress(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void send_request();
+
+  lcm::LCM& lcm_;
+  std::string request_channel_;
+  bus::HeaderStamper stamper_;
+  GeometrySpec spec_;
+  SplineFitOptions fit_;
+  double retry_period_;
+  std::string geometry_key_;
+  std::string model_key_;
+  std::string model_hash_;
+  std::int64_t request_id_ = 0;
+  int requests_sent_ = 0;
+  double last_request_ = -1e300;  // [s] monotonic
+  std::shared_ptr<const SplineContactGeometry> pending_;
+  bus::RejectionLog rejections_;
+  lcm::Subscription* model_subscription_ = nullptr;
+  lcm::Subscription* progress_subscription_ = nullptr;
+};
+
+}  // namespace wrc::contactd

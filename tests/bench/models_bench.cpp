@@ -1,6 +1,7 @@
 // In-process benchmark of the contact models (services/core/models): evaluations per second of
-// onepoint, interp and multipoint (both wheels, FASTSIM 20x20, rigid and elastic), the time interp
-// spends building its table, and the split of one one-point evaluation into geometry (common point
+// onepoint, interp, multipoint and spline (both wheels, FASTSIM 20x20, rigid and elastic), the time
+// interp spends building its table and the spline model its fit (sampling and least squares), what
+// one query of both wheels needs from the splines, and the split of one one-point evaluation into geometry (common point
 // of both wheels), Hertz (shape + loading, both wheels) and FASTSIM (both patches).
 // S1002 / UIC60, standard track; the configurations cycle through 25 lateral shifts in
 // [-6, 6] mm at their rigid-contact roll and height (tread, two-minima and flange-root cases; no yaw).
@@ -18,6 +19,7 @@
 #include "core/models/interpolated_model.hpp"
 #include "core/models/patch_builder.hpp"
 #include "core/profile/profile_factory.hpp"
+#include "core/spline/spline_geometry_fit.hpp"
 
 namespace {
 
@@ -46,12 +48,20 @@ std::vector<wrc::ContactQuery> queries(wrc::ContactFormulation formulation) {
   return out;
 }
 
-const char* const kModels[] = {"onepoint", "interp", "multipoint"};
+const char* const kModels[] = {"onepoint", "interp", "multipoint", "spline"};
 
-// range(0): model index (onepoint, interp, multipoint); range(1): 0 rigid, 1 elastic.
+// The default spline model of S1002/UIC60 (SplineFitOptions{}), fitted once.
+const wrc::SplineFit& spline_fit() {
+  static const wrc::SplineFit fit = wrc::fit_spline_geometry(*geometry(), wrc::SplineFitOptions{});
+  return fit;
+}
+
+// range(0): model index (onepoint, interp, multipoint, spline); range(1): 0 rigid, 1 elastic.
 void BM_Evaluate(benchmark::State& state) {
   const auto formulation = state.range(1) == 0 ? wrc::ContactFormulation::kRigid : wrc::ContactFormulation::kElastic;
-  const auto model = wrc::make_contact_model(kModels[state.range(0)], geometry());
+  const char* name = kModels[state.range(0)];
+  const wrc::ContactModelData data{std::string(name) == "spline" ? spline_fit().model : nullptr};
+  const auto model = wrc::make_contact_model(name, geometry(), {}, data);
   const std::vector<wrc::ContactQuery> qs = queries(formulation);
   size_t i = 0, patches = 0;
   for (auto _ : state) {
@@ -64,7 +74,45 @@ void BM_Evaluate(benchmark::State& state) {
   state.counters["patches/eval"] = static_cast<double>(patches) / static_cast<double>(state.iterations());
   state.SetLabel(std::string(kModels[state.range(0)]) + (state.range(1) == 0 ? " rigid" : " elastic"));
 }
-BENCHMARK(BM_Evaluate)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Evaluate)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMicrosecond);
+
+// What one contact query of both wheels needs from the splines: per wheel one basis evaluation
+// with second derivatives, every fitted quantity's value, z's gradient and Hessian and the flange
+// clearance's gradient (SplineContactGeometry::evaluate with kHessian), at the 25 rigid poses.
+void BM_SplineBothWheels(benchmark::State& state) {
+  const wrc::SplineContactGeometry& model = *spline_fit().model;
+  const std::vector<wrc::ContactQuery> qs = queries(wrc::ContactFormulation::kRigid);
+  const auto derivatives = static_cast<wrc::SplineDerivatives>(state.range(0));
+  wrc::SplineEvaluation left, right;
+  size_t i = 0;
+  for (auto _ : state) {
+    model.evaluate(wrc::WheelSide::kLeft, qs[i].pose, derivatives, left);
+    model.evaluate(wrc::WheelSide::kRight, qs[i].pose, derivatives, right);
+    benchmark::DoNotOptimize(left.value.data());
+    benchmark::DoNotOptimize(right.z_hessian.data());
+    i = (i + 1) % qs.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["functions"] = wrc::kSplineFieldCount;
+  state.counters["terms/wheel"] = 64;
+}
+BENCHMARK(BM_SplineBothWheels)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kNanosecond);
+
+// The default spline model's precomputation: exact-geometry sampling of both wheels (two threads
+// on this machine) and the weighted least-squares fits.
+void BM_SplinePrecompute(benchmark::State& state) {
+  double sampling = 0, fitting = 0;
+  for (auto _ : state) {
+    const wrc::SplineFit fit = wrc::fit_spline_geometry(*geometry(), wrc::SplineFitOptions{});
+    sampling += fit.sampling_seconds;
+    fitting += fit.fitting_seconds;
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["sampling_s"] = sampling / n;
+  state.counters["fitting_s"] = fitting / n;
+  state.counters["exact_scans"] = spline_fit().wheels[0].exact_evaluations + spline_fit().wheels[1].exact_evaluations;
+}
+BENCHMARK(BM_SplinePrecompute)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // Interp's table: 41 x 3 x 3 nodes, both wheels (the default grid), built in the constructor.
 void BM_InterpPrecompute(benchmark::State& state) {

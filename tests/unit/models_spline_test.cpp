@@ -113,8 +113,8 @@ TEST(SplineModel, OutsideTheBoxIsAnOutsideModelError) {
   }
 }
 
-// Flange contact is physical and kept: with a box reaching into flange contact (both wheels up to
-// |y| = 7 mm; the left wheel which touches its flange flank from ~6.5 mm at roll 0), the fitted flange clearance
+// Flange contact is physical and kept: with a box reaching into flange contact (|y| <= 7 mm; the
+// left wheel touches its flange flank from ~6.5 mm at roll 0), the fitted flange clearance
 // changes sign once along y, and where it is <= 0 the model returns the exact common point's
 // patch, identical to the one-point model's.
 TEST(SplineModel, FlangeContactUsesTheExactGeometry) {

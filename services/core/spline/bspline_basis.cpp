@@ -21,11 +21,14 @@ namespace {
 // derivatives up to order `orders` (0..2) into d1 / d2. The knot t_j of the clamped sequence is
 // b[clamp(j - P, 0, m)], so the knot vector is never materialised.
 template <int P>
-void evaluate_degree(const double* b, int m, int i, double x, int orders, double* value, double* d1, double* d2) {
+void evaluate_degree(const double* b, int m, int i, const double* inverse, double x, int orders, double* value,
+                     double* d1, double* d2) {
   auto knot = [b, m](int j) { return b[std::clamp(j - P, 0, m)]; };
   const int span = i + P;  // index of the knot interval in the full knot sequence
-  // ndu[j][r], r >= j: basis functions of degree j (column), r < j: knot differences (row).
+  // ndu[j][r], r >= j: basis functions of degree j (column); r < j would hold the knot
+  // difference right[r + 1] + left[j - r], whose reciprocal inverse[j][r] is precomputed.
   double ndu[P + 1][P + 1];
+  auto inv = [inverse](int j, int r) { return inverse[j * (P + 1) + r]; };
   double left[P + 1], right[P + 1];
   ndu[0][0] = 1.0;
   for (int j = 1; j <= P; ++j) {
@@ -33,8 +36,7 @@ void evaluate_degree(const double* b, int m, int i, double x, int orders, double
     right[j] = knot(span + j) - x;
     double saved = 0.0;
     for (int r = 0; r < j; ++r) {
-      ndu[j][r] = right[r + 1] + left[j - r];  // a knot difference, > 0 for distinct breakpoints
-      const double temp = ndu[r][j - 1] / ndu[j][r];
+      const double temp = ndu[r][j - 1] * inv(j, r);
       ndu[r][j] = saved + right[r + 1] * temp;
       saved = left[j - r] * temp;
     }
@@ -56,17 +58,17 @@ void evaluate_degree(const double* b, int m, int i, double x, int orders, double
       double d = 0.0;
       const int rk = r - k, pk = P - k;
       if (r >= k) {
-        a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+        a[s2][0] = a[s1][0] * inv(pk + 1, rk);
         d = a[s2][0] * ndu[rk][pk];
       }
       const int j1 = rk >= -1 ? 1 : -rk;
       const int j2 = r - 1 <= pk ? k - 1 : P - r;
       for (int j = j1; j <= j2; ++j) {
-        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
+        a[s2][j] = (a[s1][j] - a[s1][j - 1]) * inv(pk + 1, rk + j);
         d += a[s2][j] * ndu[rk + j][pk];
       }
       if (r <= pk) {
-        a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+        a[s2][k] = -a[s1][k - 1] * inv(pk + 1, r);
         d += a[s2][k] * ndu[r][pk];
       }
       ders[k][r] = d;
@@ -99,6 +101,18 @@ BSplineBasis::BSplineBasis(int degree, std::vector<double> breakpoints)
           << " = " << breakpoints_[i - 1];
       fail(msg.str());
     }
+  }
+  // Reciprocal knot differences per interval i: inverse[j][r] = 1 / (t_{i+P+r+1} - t_{i+P+1-j+r})
+  // for r < j <= P, the divisors of the Cox-de Boor triangle (the knots do not depend on x).
+  const int P = degree_, m = intervals();
+  auto knot = [this, P, m](int j) { return breakpoints_[static_cast<size_t>(std::clamp(j - P, 0, m))]; };
+  inverse_differences_.assign(static_cast<size_t>(m) * (P + 1) * (P + 1), 0.0);
+  for (int i = 0; i < m; ++i) {
+    const int span = i + P;
+    for (int j = 1; j <= P; ++j)
+      for (int r = 0; r < j; ++r)
+        inverse_differences_[(static_cast<size_t>(i) * (P + 1) + j) * (P + 1) + r] =
+            1.0 / (knot(span + r + 1) - knot(span + 1 - j + r));
   }
 }
 
@@ -138,11 +152,12 @@ int BSplineBasis::evaluate(double x, double* value, double* d1, double* d2) cons
   if (d2 && !d1) d1 = scratch;
   const double* b = breakpoints_.data();
   const int m = intervals();
+  const double* inverse = inverse_differences_.data() + static_cast<size_t>(i) * (degree_ + 1) * (degree_ + 1);
   switch (degree_) {
-    case 0: evaluate_degree<0>(b, m, i, x, orders, value, d1, d2); break;
-    case 1: evaluate_degree<1>(b, m, i, x, orders, value, d1, d2); break;
-    case 2: evaluate_degree<2>(b, m, i, x, orders, value, d1, d2); break;
-    default: evaluate_degree<3>(b, m, i, x, orders, value, d1, d2); break;
+    case 0: evaluate_degree<0>(b, m, i, inverse, x, orders, value, d1, d2); break;
+    case 1: evaluate_degree<1>(b, m, i, inverse, x, orders, value, d1, d2); break;
+    case 2: evaluate_degree<2>(b, m, i, inverse, x, orders, value, d1, d2); break;
+    default: evaluate_degree<3>(b, m, i, inverse, x, orders, value, d1, d2); break;
   }
   return i;
 }

@@ -46,6 +46,7 @@ class BSplineBasis {
  private:
   int degree_;
   std::vector<double> breakpoints_;
+  std::vector<double> inverse_differences_;  // per interval, (degree+1)^2 reciprocal knot differences
 };
 
 }  // namespace wrc

@@ -71,17 +71,19 @@ std::string SplineContactGeometry::outside_reason(WheelSide side, const Wheelset
 }
 
 void SplineContactGeometry::evaluate(WheelSide side, const WheelsetPose& pose, SplineDerivatives derivatives,
-                                     SplineEvaluation& out) const {
-  const TensorSplineSet& set = wheel(side);
+                                     SplineEvaluation& out, int value_count) const {
   const std::array<double, 3> x = coordinates(pose);
-  TensorBasisPoint point;
-  set.basis().evaluate(x.data(), derivatives, point);
-  set.values(point, out.value.data());
-  if (derivatives == SplineDerivatives::kValue) return;
-  double z = 0, clearance = 0;
-  set.derivatives(point, kFieldZ, z, out.z_gradient.data(),
-                  derivatives == SplineDerivatives::kHessian ? out.z_hessian.data() : nullptr);
-  set.derivatives(point, kFieldFlangeClearance, clearance, out.clearance_gradient.data(), nullptr);
+  if (derivatives == SplineDerivatives::kValue) {
+    wheel(side).query(x.data(), value_count, out.value.data(), 0, nullptr);
+    return;
+  }
+  // z and the flange clearance are fields 0 and 1: their derivatives come together.
+  static_assert(kFieldZ == 0 && kFieldFlangeClearance == 1, "the derivative fields lead the list");
+  double d[20];
+  wheel(side).query(x.data(), value_count, out.value.data(), 2, d);
+  std::copy(d + 1, d + 4, out.z_gradient.begin());
+  std::copy(d + 4, d + 10, out.z_hessian.begin());
+  std::copy(d + 11, d + 14, out.clearance_gradient.begin());
 }
 
 ContactPoint SplineContactGeometry::contact_point(WheelSide side, const WheelsetPose& pose,

@@ -54,8 +54,12 @@ class SplineContactGeometry {
   /// "y = ... m is outside the spline model's box [..] m of the left wheel" or empty when inside.
   std::string outside_reason(WheelSide side, const WheelsetPose& pose) const;
 
-  /// Evaluates one wheel at pose (no box check: outside, the end polynomials extrapolate).
-  void evaluate(WheelSide side, const WheelsetPose& pose, SplineDerivatives derivatives, SplineEvaluation& out) const;
+  /// Evaluates one wheel at pose (no box check: outside, the end polynomials extrapolate): the
+  /// values of the first value_count fields (kSplineQueryFieldCount: what a contact query uses),
+  /// and with kGradient or kHessian the gradient and Hessian of z and the clearance's gradient
+  /// (both always the Hessian: one-variable-at-a-time contraction, TensorSplineSet::query).
+  void evaluate(WheelSide side, const WheelsetPose& pose, SplineDerivatives derivatives, SplineEvaluation& out,
+                int value_count = kSplineFieldCount) const;
 
   /// The contact point of an evaluation at pose: positions shifted by the pose, the distance
   /// z - z_touch, the normal renormalised, marked a local minimum.

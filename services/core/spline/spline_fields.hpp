@@ -15,9 +15,13 @@ enum SplineField : int {
   /// distance is affine in z with unit slope). Fitted C2 (the paper: the reaction forces contain
   /// its second derivatives).
   kFieldZ = 0,
+  /// Flange clearance: the smallest vertical distance of the wheel's flange region (s below the
+  /// flange split, see SplineFitOptions::flange_angle) minus the contact point's distance [m],
+  /// capped at SplineFitOptions::clearance_cap. Continuous; <= 0 means the flange touches first:
+  /// flange contact, the physical discontinuity the model keeps (the event function).
+  kFieldFlangeClearance,
   kFieldSWheel,        ///< wheel profile coordinate of the contact point [m]
   kFieldSRail,         ///< rail profile coordinate of the contact point [m]
-  kFieldTheta,         ///< angular position on the wheel from its lowest point [rad]
   kFieldWheelX,        ///< contact point on the wheel relative to the wheelset centre, track x [m]
   kFieldWheelY,        ///< the same, track y [m]
   kFieldWheelZ,        ///< the same, track z [m]
@@ -27,11 +31,6 @@ enum SplineField : int {
   kFieldNormalX,       ///< common normal, rail into wheel, track x [-] (renormalised after evaluation)
   kFieldNormalY,       ///< the same, track y [-]
   kFieldNormalZ,       ///< the same, track z [-]
-  kFieldWheelCurvatureLateral,  ///< wheel profile curvature [1/m], > 0 convex
-  kFieldWheelCurvatureRolling,  ///< wheel curvature in the rolling direction [1/m]
-  kFieldRailCurvatureLateral,   ///< rail profile curvature [1/m], > 0 convex
-  kFieldRailCurvatureRolling,   ///< rail curvature along the track [1/m]
-  kFieldDistanceCurvature,      ///< d2(distance)/ds2 along the curve C [1/m]
   kFieldHertzA,        ///< Hertz relative curvature A, rolling direction [1/m]
   kFieldHertzB,        ///< Hertz relative curvature B, lateral, after the conformal-contact floor [1/m]
   kFieldMinorOverMajor,///< Hertz k' = min(a, b) / max(a, b) [-]
@@ -39,13 +38,18 @@ enum SplineField : int {
   kFieldEllipticE,     ///< complete elliptic integral E(e) [-]
   kFieldHertzM,        ///< Hertz coefficient m of the rolling semi-axis a [-]
   kFieldHertzN,        ///< Hertz coefficient n of the lateral semi-axis b [-]
-  /// Flange clearance: the smallest vertical distance of the wheel's flange region (s below the
-  /// flange split, see SplineFitOptions::flange_angle) minus the contact point's distance [m],
-  /// capped at SplineFitOptions::clearance_cap. Continuous; <= 0 means the flange touches first:
-  /// flange contact, the physical discontinuity the model keeps (the event function).
-  kFieldFlangeClearance,
+  kFieldWheelCurvatureLateral,  ///< wheel profile curvature [1/m], > 0 convex
+  kFieldRailCurvatureLateral,   ///< rail profile curvature [1/m], > 0 convex
+  // Fields below kSplineQueryFieldCount are what a contact query uses; the rest is reported only.
+  kFieldTheta,         ///< angular position on the wheel from its lowest point [rad]
+  kFieldWheelCurvatureRolling,  ///< wheel curvature in the rolling direction [1/m]
+  kFieldRailCurvatureRolling,   ///< rail curvature along the track [1/m]
+  kFieldDistanceCurvature,      ///< d2(distance)/ds2 along the curve C [1/m]
   kSplineFieldCount
 };
+
+/// The fields a contact query evaluates (the others complete ContactPoint for reports).
+inline constexpr int kSplineQueryFieldCount = kFieldTheta;
 
 /// Name (as in the model file, the report and spline_model_t) and SI unit of a fitted quantity.
 struct SplineFieldInfo {
@@ -56,9 +60,9 @@ struct SplineFieldInfo {
 /// The names and units of every field, in SplineField order.
 inline constexpr std::array<SplineFieldInfo, kSplineFieldCount> kSplineFields{{
     {"z", "m"},
+    {"flange_clearance", "m"},
     {"s_wheel", "m"},
     {"s_rail", "m"},
-    {"theta", "rad"},
     {"wheel_x", "m"},
     {"wheel_y", "m"},
     {"wheel_z", "m"},
@@ -68,11 +72,6 @@ inline constexpr std::array<SplineFieldInfo, kSplineFieldCount> kSplineFields{{
     {"normal_x", "-"},
     {"normal_y", "-"},
     {"normal_z", "-"},
-    {"wheel_curvature_lateral", "1/m"},
-    {"wheel_curvature_rolling", "1/m"},
-    {"rail_curvature_lateral", "1/m"},
-    {"rail_curvature_rolling", "1/m"},
-    {"distance_curvature", "1/m"},
     {"hertz_A", "1/m"},
     {"hertz_B", "1/m"},
     {"minor_over_major", "-"},
@@ -80,7 +79,12 @@ inline constexpr std::array<SplineFieldInfo, kSplineFieldCount> kSplineFields{{
     {"elliptic_E", "-"},
     {"hertz_m", "-"},
     {"hertz_n", "-"},
-    {"flange_clearance", "m"},
+    {"wheel_curvature_lateral", "1/m"},
+    {"rail_curvature_lateral", "1/m"},
+    {"theta", "rad"},
+    {"wheel_curvature_rolling", "1/m"},
+    {"rail_curvature_rolling", "1/m"},
+    {"distance_curvature", "1/m"},
 }};
 
 }  // namespace wrc

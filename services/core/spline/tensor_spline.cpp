@@ -11,6 +11,7 @@
 #include <chrono>
 #include <climits>
 #include <cstddef>
+#include <cstring>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -35,14 +36,21 @@ void contract_block(const double* data, int stride, int j0, int count, const Ten
   for (int j = 0; j < count; ++j) out[j0 + j] = acc[j];
 }
 
-// out[j] = sum_t weight[t] * data[index[t] * stride + j], j < functions, in blocks of 8 functions
-// and a last one of 4 (stride is a multiple of 4 and the padding columns of data are zero). Measured
+// out[j] = sum_t weight[t] * data[index[t] * stride + j], j < functions (<= the functions stored),
+// in blocks of 8 functions and a last one of 4 (stride is a multiple of 4 and the padding columns
+// of data are zero). Measured
 // (SSE2): blocks of 8 beat one pass over 20 or 12 + 8, whose wider unrolls the compiler spills.
+// Compiled twice (runtime dispatch): for x86-64-v3 (AVX2, FMA) where the processor has it, and
+// for the baseline, so that the binary runs anywhere and the Release flags stay the default.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
 void contract(const std::vector<double>& data, int stride, int functions, const TensorBasisPoint& point,
               const double* weight, double* out) {
+  const int width = (functions + 3) / 4 * 4;  // <= stride; the padding columns of data are zero
   int j0 = 0;
-  for (; j0 + 8 <= stride; j0 += 8) contract_block<8>(data.data(), stride, j0, std::min(8, functions - j0), point, weight, out);
-  if (j0 < stride) contract_block<4>(data.data(), stride, j0, functions - j0, point, weight, out);
+  for (; j0 + 8 <= width; j0 += 8) contract_block<8>(data.data(), stride, j0, std::min(8, functions - j0), point, weight, out);
+  if (j0 < width) contract_block<4>(data.data(), stride, j0, functions - j0, point, weight, out);
 }
 
 // dst[t * Q + a] = src[t] * f[a], t < terms: the tensor product of a term array with the Q 1-D
@@ -309,6 +317,117 @@ void TensorBasis::evaluate(const double* point, SplineDerivatives derivatives, T
   }
 }
 
+namespace {
+
+// The 1-D factors of a 3-D query: f[k][order][a] for variable k, derivative order 0..2 and the
+// degree + 1 non-zero basis functions, and the first basis index of each variable.
+struct QueryFactors {
+  double f[3][3][kMaxSplineDegree + 1];
+  int first[3];
+};
+
+// TensorSplineSet::query for degrees Q0 - 1, Q1 - 1, Q2 - 1 and S stored functions per row
+// (compile-time loop bounds, so that the S accumulators stay in registers and the terms are one
+// pass: the term's weight is formed from the 1-D factors, its row is base + row offset). Each
+// derivative is contracted for functions 0..3 at once over yaw (orders 0..2), then roll, then y,
+// keeping only total orders <= 2. Compiled for x86-64-v3 (AVX2, FMA) and the baseline, chosen at run time.
+template <int Q0, int Q1, int Q2, int S>
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+void query_kernel(const double* base, const std::ptrdiff_t* offsets, const QueryFactors& q, int value_count,
+                  double* values, int derivative_count, double* derivatives) {
+  if (value_count > 0) {
+    // S / 4 accumulators of four doubles (GCC vector extension: one AVX register each in the
+    // x86-64-v3 clone, two SSE registers in the baseline), all functions in one pass over the terms.
+    typedef double Vec4 __attribute__((vector_size(32)));
+    constexpr int kVectors = S / 4;
+    Vec4 acc[kVectors];
+    for (int k = 0; k < kVectors; ++k) acc[k] = Vec4{0.0, 0.0, 0.0, 0.0};
+    int t = 0;
+    for (int a = 0; a < Q0; ++a)
+      for (int b = 0; b < Q1; ++b) {
+        const double wab = q.f[0][0][a] * q.f[1][0][b];
+        for (int c = 0; c < Q2; ++c, ++t) {
+          const double w = wab * q.f[2][0][c];
+          const Vec4 wv = {w, w, w, w};
+          const double* row = base + offsets[t];
+          for (int k = 0; k < kVectors; ++k) {
+            Vec4 r;
+            std::memcpy(&r, row + 4 * k, sizeof r);
+            acc[k] += wv * r;
+          }
+        }
+      }
+    double all[S];
+    std::memcpy(all, acc, sizeof all);
+    for (int j = 0; j < value_count; ++j) values[j] = all[j];
+  }
+  if (derivative_count > 0) {
+    // Functions 0..3 at once, one variable at a time: T over yaw (orders 0..2), U over roll, then y.
+    typedef double Vec4 __attribute__((vector_size(32)));
+#define WRC_SPLAT(v) (Vec4{(v), (v), (v), (v)})  // a macro: a function returning Vec4 would change the baseline ABI
+    Vec4 T[Q0][Q1][3];
+    for (int a = 0; a < Q0; ++a)
+      for (int b = 0; b < Q1; ++b) {
+        Vec4 t0 = WRC_SPLAT(0), t1 = WRC_SPLAT(0), t2 = WRC_SPLAT(0);
+        for (int c = 0; c < Q2; ++c) {
+          Vec4 r;
+          std::memcpy(&r, base + offsets[(a * Q1 + b) * Q2 + c], sizeof r);
+          t0 += WRC_SPLAT(q.f[2][0][c]) * r, t1 += WRC_SPLAT(q.f[2][1][c]) * r, t2 += WRC_SPLAT(q.f[2][2][c]) * r;
+        }
+        T[a][b][0] = t0, T[a][b][1] = t1, T[a][b][2] = t2;
+      }
+    // U[a][k]: (roll order, yaw order) = (0,0), (1,0), (0,1), (2,0), (1,1), (0,2).
+    constexpr int kRoll[6] = {0, 1, 0, 2, 1, 0}, kYaw[6] = {0, 0, 1, 0, 1, 2};
+    Vec4 U[Q0][6];
+    for (int a = 0; a < Q0; ++a)
+      for (int k = 0; k < 6; ++k) {
+        Vec4 u = WRC_SPLAT(0);
+        for (int b = 0; b < Q1; ++b) u += WRC_SPLAT(q.f[1][kRoll[k]][b]) * T[a][b][kYaw[k]];
+        U[a][k] = u;
+      }
+    // Output slot -> (y order, U column): value, gradient (y, roll, yaw), Hessian (hessian_slot order).
+    constexpr int kY[10] = {0, 1, 0, 0, 2, 1, 1, 0, 0, 0}, kU[10] = {0, 0, 1, 2, 0, 1, 2, 3, 4, 5};
+    for (int slot = 0; slot < 10; ++slot) {
+      Vec4 r = WRC_SPLAT(0);
+      for (int a = 0; a < Q0; ++a) r += WRC_SPLAT(q.f[0][kY[slot]][a]) * U[a][kU[slot]];
+      double lanes[4];
+      std::memcpy(lanes, &r, sizeof lanes);
+      for (int n = 0; n < derivative_count; ++n) derivatives[10 * n + slot] = lanes[n];
+    }
+#undef WRC_SPLAT
+  }
+}
+
+using QueryKernel = void (*)(const double*, const std::ptrdiff_t*, const QueryFactors&, int, double*, int, double*);
+
+// The kernel for degrees (q0, q1, q2) - 1 and stride, or null (general path).
+template <int Q0, int Q1, int Q2>
+QueryKernel kernel_for_stride(int stride) {
+  switch (stride) {
+    case 4: return query_kernel<Q0, Q1, Q2, 4>;
+    case 8: return query_kernel<Q0, Q1, Q2, 8>;
+    case 12: return query_kernel<Q0, Q1, Q2, 12>;
+    case 16: return query_kernel<Q0, Q1, Q2, 16>;
+    case 20: return query_kernel<Q0, Q1, Q2, 20>;
+    case 24: return query_kernel<Q0, Q1, Q2, 24>;
+    case 28: return query_kernel<Q0, Q1, Q2, 28>;
+    case 32: return query_kernel<Q0, Q1, Q2, 32>;
+    default: return nullptr;
+  }
+}
+
+QueryKernel select_kernel(const TensorBasis& basis, int stride) {
+  if (basis.dimension() != 3) return nullptr;
+  const int d0 = basis.basis(0).degree(), d1 = basis.basis(1).degree(), d2 = basis.basis(2).degree();
+  if (d0 == 3 && d1 == 3 && d2 == 3) return kernel_for_stride<4, 4, 4>(stride);
+  if (d0 == 3 && d1 == 3 && d2 == 2) return kernel_for_stride<4, 4, 3>(stride);
+  return nullptr;
+}
+
+}  // namespace
+
 TensorSplineSet::TensorSplineSet(TensorBasis basis, const Eigen::MatrixXd& coefficients)
     : basis_(std::move(basis)), functions_(static_cast<int>(coefficients.cols())) {
   if (coefficients.rows() != basis_.size() || functions_ == 0) {
@@ -321,6 +440,15 @@ TensorSplineSet::TensorSplineSet(TensorBasis basis, const Eigen::MatrixXd& coeff
   data_.assign(static_cast<size_t>(basis_.size()) * static_cast<size_t>(stride_), 0.0);
   for (int i = 0; i < basis_.size(); ++i)
     for (int j = 0; j < functions_; ++j) data_[static_cast<size_t>(i) * stride_ + j] = coefficients(i, j);
+  kernel_ = reinterpret_cast<void (*)()>(select_kernel(basis_, stride_));
+  if (kernel_) {
+    // Row offsets of the (q0 q1 q2) terms of a query from the first term's row.
+    const int n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
+    for (int a = 0; a <= basis_.basis(0).degree(); ++a)
+      for (int b = 0; b <= basis_.basis(1).degree(); ++b)
+        for (int c = 0; c <= basis_.basis(2).degree(); ++c)
+          offsets_.push_back(static_cast<std::ptrdiff_t>((a * n1 + b) * n2 + c) * stride_);
+  }
 }
 
 Eigen::MatrixXd TensorSplineSet::coefficients() const {
@@ -340,6 +468,39 @@ void TensorSplineSet::gradients(const TensorBasisPoint& point, double* gradient)
   for (int k = 0; k < point.dimension; ++k)
     contract(data_, stride_, functions_, point, point.gradient[static_cast<size_t>(k)].data(),
              gradient + static_cast<size_t>(k) * functions_);
+}
+
+void TensorSplineSet::query(const double* point, int value_count, double* values, int derivative_count,
+                            double* derivatives) const {
+  if (basis_.dimension() != 3) throw std::invalid_argument("TensorSplineSet::query: the basis is not 3-D");
+  if (value_count < 0 || value_count > functions_ || derivative_count < 0 ||
+      derivative_count > std::min(4, functions_))
+    throw std::invalid_argument("TensorSplineSet::query: value_count = " + std::to_string(value_count) +
+                                " or derivative_count = " + std::to_string(derivative_count) + " out of range");
+  QueryFactors q;
+  const bool orders = derivative_count > 0;
+  for (int k = 0; k < 3; ++k) {
+    const BSplineBasis& b = basis_.basis(k);
+    q.first[k] = b.evaluate(point[k], q.f[k][0], orders ? q.f[k][1] : nullptr, orders ? q.f[k][2] : nullptr);
+    // Orders above the degree vanish (degree 0 and 1 bases fill only what they have).
+    for (int order = 1; order < 3; ++order)
+      if (!orders || order > b.degree())
+        for (int a = 0; a <= kMaxSplineDegree; ++a) q.f[k][order][a] = 0.0;
+  }
+  if (kernel_) {
+    const int n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
+    const double* base = data_.data() + static_cast<size_t>((q.first[0] * n1 + q.first[1]) * n2 + q.first[2]) * stride_;
+    reinterpret_cast<QueryKernel>(kernel_)(base, offsets_.data(), q, value_count, values, derivative_count, derivatives);
+    return;
+  }
+  // Other degree combinations: the general tensor-product path.
+  TensorBasisPoint p;
+  basis_.evaluate(point, orders ? SplineDerivatives::kHessian : SplineDerivatives::kValue, p);
+  if (value_count > 0) contract(data_, stride_, value_count, p, p.value.data(), values);
+  for (int n = 0; n < derivative_count; ++n) {
+    double* out = derivatives + 10 * n;
+    this->derivatives(p, n, out[0], out + 1, out + 4);
+  }
 }
 
 void TensorSplineSet::derivatives(const TensorBasisPoint& point, int j, double& value, double* gradient,

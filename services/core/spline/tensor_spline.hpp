@@ -5,6 +5,7 @@
 /// contracted with the coefficients of every fitted quantity (TensorSplineSet).
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,16 +25,18 @@ enum class SplineDerivatives { kValue = 0, kGradient = 1, kHessian = 2 };
 /// The non-zero tensor basis functions at one point: coefficient index and weights for the value,
 /// the gradient and the Hessian (upper triangle, row-major: (0,0), (0,1), .., (0,d-1), (1,1), ..).
 /// Units: weights of derivatives carry 1 / (unit of the variable) per derivative.
+/// The arrays are left uninitialised by construction (30 kB: zeroing them would cost more than
+/// the evaluation); TensorBasis::evaluate fills the first `terms` entries of what it computes.
 struct TensorBasisPoint {
   int terms = 0;                                          ///< number of non-zero basis functions
   int dimension = 0;                                      ///< variables of the tensor product
   SplineDerivatives derivatives = SplineDerivatives::kValue;  ///< what is filled in
-  std::array<int, kMaxTensorTerms> index{};               ///< flat coefficient index of each term
-  std::array<double, kMaxTensorTerms> value{};            ///< basis value of each term
+  std::array<int, kMaxTensorTerms> index;                 ///< flat coefficient index of each term
+  std::array<double, kMaxTensorTerms> value;              ///< basis value of each term
   /// d/dv_k of each term, k < dimension (filled for kGradient and kHessian).
-  std::array<std::array<double, kMaxTensorTerms>, kMaxTensorDimension> gradient{};
+  std::array<std::array<double, kMaxTensorTerms>, kMaxTensorDimension> gradient;
   /// d2/dv_k dv_l of each term, upper triangle (k <= l) in the order above (filled for kHessian).
-  std::array<std::array<double, kMaxTensorTerms>, kMaxTensorDimension*(kMaxTensorDimension + 1) / 2> hessian{};
+  std::array<std::array<double, kMaxTensorTerms>, kMaxTensorDimension*(kMaxTensorDimension + 1) / 2> hessian;
 };
 
 /// Position of Hessian entry (k, l) in the upper-triangle order of TensorBasisPoint::hessian.
@@ -87,11 +90,22 @@ class TensorSplineSet {
   /// with kGradient or kHessian).
   void gradients(const TensorBasisPoint& point, double* gradient) const;
 
+  /// What one query of a 3-D set needs, from one evaluation of the three 1-D bases at point:
+  /// the values of functions 0..value_count-1 into values, and for functions 0..derivative_count-1
+  /// (at most 4) their value, gradient (3) and Hessian (6, the hessian_slot order) into
+  /// derivatives[10 * n ..]. Degrees (3, 3, 3) and (3, 3, 2) with up to 32 functions run a compiled
+  /// kernel (one pass over the terms for all values; the derivatives contracted one variable at a
+  /// time, 4 functions at once); other bases the general path.
+  /// @throws std::invalid_argument for a basis that is not 3-D or a count out of range.
+  void query(const double* point, int value_count, double* values, int derivative_count, double* derivatives) const;
+
  private:
   TensorBasis basis_;
   int functions_ = 0;
   int stride_ = 0;             // functions_ rounded up for aligned contraction
   std::vector<double> data_;   // [basis index][function]
+  void (*kernel_)() = nullptr; // query(): compiled kernel for these degrees and stride, if any
+  std::vector<std::ptrdiff_t> offsets_;  // query(): row offsets of the terms from the first term's row
 };
 
 /// Samples for a weighted least-squares fit (the paper's equation (1) discretised):

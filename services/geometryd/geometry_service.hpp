@@ -1,0 +1,114 @@
+#pragma once
+/// @file
+/// The request side of wrc-geometryd: geometry_request_t on GEOMETRY_REQUEST (decoded from the
+/// raw buffer, validated), answered with spline_model_t from the model cache at once or after a
+/// fit by the worker, progress_t on PROGRESS meanwhile. Lives on the service loop's thread: it
+/// is the only user of LCM; poll() (the loop's idle hook) publishes what the worker reported.
+///
+/// Rules: an undecodable message is counted and logged, nothing else. An invalid request
+/// (request_id <= 0, reply channel too long, a field from_message rejects, a profile that
+/// cannot be read) is counted, logged and answered with a progress_t of its request_id,
+/// done = total = 0, message "rejected: <reason>". A valid one is answered from
+/// <cache>/<model_key>.splinemodel unless recompute is set or the file is missing or unusable;
+/// otherwise a fit is queued, unless one of the same model_key is queued or running already:
+/// then the request waits for that one. Every fitted model is stored in the cache; the answer
+/// (request_id echoed, header stamped) is inline when small enough, else the file reference,
+/// on reply_channel or SPLINE_MODEL. Progress of a fit: at most every 0.2 s, then "done" or
+/// "failed: <reason>" with done == total.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "bus/channels.hpp"
+#include "bus/header_stamper.hpp"
+#include "bus/rejection_log.hpp"
+#include "bus/service_load.hpp"
+#include "geometryd/fit_worker.hpp"
+#include "geometryd/model_cache.hpp"
+#include "wrc/progress_t.hpp"
+#include "wrc/spline_model_t.hpp"
+
+namespace wrc::geometryd {
+
+/// Counters of the service since start.
+struct GeometryCounters {
+  std::int64_t received = 0;    ///< messages seen on GEOMETRY_REQUEST
+  std::int64_t answered = 0;    ///< models published (one per request answered)
+  std::int64_t from_cache = 0;  ///< requests answered from a cache file without fitting
+  std::int64_t joined = 0;      ///< requests that waited for a fit of the same model already queued or running
+  std::int64_t fits = 0;        ///< fits finished
+  std::int64_t failed = 0;      ///< fits that threw (or whose model could not be stored)
+  std::int64_t failed_requests = 0;  ///< requests answered "failed: " (heartbeat: rejected, a handler failure)
+};
+
+class GeometryService : public bus::LoadSource {
+ public:
+  /// Subscribes to GEOMETRY_REQUEST (names applies the prefix). sender: header sender name
+  /// (bus::sender_name). @throws std::runtime_error when the subscription fails.
+  GeometryService(lcm::LCM& lcm, const bus::ChannelNames& names, const std::string& sender, const ModelCache& cache,
+                  FitWorker& worker);
+  ~GeometryService() override;
+  GeometryService(const GeometryService&) = delete;
+  GeometryService& operator=(const GeometryService&) = delete;
+
+  /// Publishes what the worker reported since the last call (progress, models, failures).
+  void poll();
+
+  /// Full bus name of the request channel.
+  const std::string& request_channel() const { return request_channel_; }
+  const GeometryCounters& counters() const { return counters_; }
+  /// Requests rejected (undecodable or invalid).
+  std::int64_t rejected() const { return rejections_.count(); }
+  /// Jobs queued or running.
+  std::size_t pending_jobs() const { return jobs_.size(); }
+
+  void add_load(bus::ServiceLoad& load) const override;
+  double take_busy_time() override;
+
+ private:
+  /// A request waiting for a job.
+  struct Waiter {
+    std::int64_t request_id = 0;
+    std::string reply_channel;  // full bus name
+    double received = 0.0;      // [s] monotonic
+  };
+  /// A fit queued or running, and who waits for it.
+  struct Job {
+    std::string model_key;
+    std::string task;  // progress_t.task
+    std::vector<Waiter> waiters;
+  };
+
+  void on_request(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  /// Counts and logs why; when tell, answers request_id with a "rejected: " progress.
+  void reject(const std::string& channel, std::int64_t request_id, bool tell, const std::string& why);
+  void publish_progress(std::int64_t request_id, const std::string& task, long done, long total, double elapsed,
+                        double remaining, const std::string& message);
+  /// Publishes message (complete or reference) for waiter.
+  void publish_model(spline_model_t message, const Waiter& waiter);
+  void finish(const FitEvent& event);
+
+  lcm::LCM& lcm_;
+  const std::string request_channel_;
+  const std::string model_channel_;
+  const std::string progress_channel_;
+  const std::string sender_;
+  const ModelCache& cache_;
+  FitWorker& worker_;
+  bus::HeaderStamper model_stamper_;
+  bus::HeaderStamper progress_stamper_;
+  bus::RejectionLog rejections_;
+  lcm::Subscription* subscription_ = nullptr;
+  std::map<std::int64_t, Job> jobs_;                 // by job id
+  std::map<std::string, std::int64_t> job_of_key_;   // model_key -> job id
+  std::int64_t next_job_ = 1;
+  GeometryCounters counters_;
+  bus::LatencyWindow latencies_;  // request to answer [s]
+  double busy_time_ = 0.0;        // [s] handler and publishing time since take_busy_time()
+};
+
+}  // namespace wrc::geometryd

@@ -1,0 +1,85 @@
+// wrc-geometryd: the geometry precomputation service of the wrc bus. It answers every
+// geometry_request_t on GEOMETRY_REQUEST with the spline contact model (spline_model_t, request
+// id echoed) on the request's reply channel or SPLINE_MODEL: from its model cache
+// (<cache-dir>/<model_key>.splinemodel) when the model was fitted before, otherwise after fitting
+// it (core/spline/spline_geometry_fit.hpp) in one worker thread, with progress_t on PROGRESS
+// meanwhile. The fit runs off the service loop, so heartbeats (model "geometryd", READY) keep
+// coming while it works; LCM is only used from the loop's thread (geometryd/geometry_service.hpp
+// has the rules, geometryd/fit_worker.hpp the worker).
+//
+//   wrc-geometryd [--cache-dir DIR] [--instance NAME] [--channel-prefix P] [--lcm-url URL]
+//                 [--heartbeat-period S]
+
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+
+#include "bus/channels.hpp"
+#include "bus/heartbeat_publisher.hpp"
+#include "bus/line_atomic_stderr.hpp"
+#include "bus/service_loop.hpp"
+#include "bus/service_options.hpp"
+#include "bus/shutdown_signal.hpp"
+#include "geometryd/fit_worker.hpp"
+#include "geometryd/geometry_service.hpp"
+#include "geometryd/geometryd_options.hpp"
+#include "geometryd/model_cache.hpp"
+
+namespace {
+
+constexpr double kProgressInterval = 0.2;  // [s] least time between two progress_t of one fit
+constexpr double kLoopWait = 0.05;         // [s] longest LCM wait: how late worker events are published
+
+int run(const wrc::bus::ServiceOptions& service, const wrc::geometryd::GeometrydOptions& options) {
+  using namespace wrc::bus;
+  ShutdownSignal::install();
+  const ChannelNames names(service.channel_prefix);
+  const wrc::geometryd::ModelCache cache(options.cache_dir);
+  auto lcm = open_lcm(service.lcm_url);
+  const std::string sender = sender_name("wrc-geometryd", service.instance);
+
+  wrc::geometryd::FitWorker worker(kProgressInterval);
+  wrc::geometryd::GeometryService server(*lcm, names, sender, cache, worker);
+  HeartbeatPublisher heartbeat(*lcm, names.name(channel::kHeartbeat),
+                               {"wrc-geometryd", "geometryd", service.instance, server.request_channel()},
+                               service.heartbeat_period);
+  heartbeat.publish_now();  // STARTING
+
+  ServiceLoop loop(*lcm, heartbeat);
+  loop.add_load_source(&server);
+  loop.set_idle_hook([&server] { server.poll(); });
+  loop.set_max_wait(kLoopWait);
+  std::cerr << sender << ": serving " << server.request_channel() << ", model cache " << cache.dir() << "\n";
+  const int rc = loop.run();
+  const auto& c = server.counters();
+  std::cerr << sender << ": stopped (signal " << ShutdownSignal::signal_number() << "), answered " << c.answered
+            << " (from the cache " << c.from_cache << ", waited for a running fit " << c.joined << "), fits "
+            << c.fits << ", failed " << c.failed << ", rejected " << server.rejected() << "\n";
+  if (worker.fitting()) {
+    std::cerr << sender << ": a fit is still running; exiting without waiting for it\n";
+    std::cerr.flush();
+    std::_Exit(rc);  // the fit cannot be interrupted; nothing else needs cleaning up
+  }
+  return rc;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  wrc::bus::make_stderr_line_atomic();  // one log shared with other processes: whole lines only
+  try {
+    const auto service = wrc::bus::ServiceOptions::parse(argc, argv);
+    if (service.help) {
+      std::cout << "usage: wrc-geometryd [options]\n"
+                   "Geometry service: answers geometry_request_t on GEOMETRY_REQUEST with the spline contact\n"
+                   "model (spline_model_t), fitted or from its cache, and progress_t on PROGRESS.\n\n"
+                << wrc::geometryd::GeometrydOptions::help_text() << wrc::bus::ServiceOptions::help_text();
+      return 0;
+    }
+    const auto options = wrc::geometryd::GeometrydOptions::parse(service.rest);
+    return run(service, options);
+  } catch (const std::exception& e) {
+    std::cerr << "wrc-geometryd: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,61 @@
+#include "geometryd/model_cache.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+#include "geometryd/spline_model_codec.hpp"
+
+namespace wrc::geometryd {
+
+namespace fs = std::filesystem;
+
+ModelCache::ModelCache(std::string dir) : dir_(std::move(dir)) {
+  if (dir_.empty()) throw std::runtime_error("model cache: the directory name is empty");
+  // Create each missing component ourselves so that every directory made here is 0700.
+  fs::path partial;
+  for (const fs::path& part : fs::path(dir_)) {
+    partial /= part;
+    std::error_code ec;
+    if (fs::exists(partial, ec)) continue;
+    if (!fs::create_directory(partial, ec) && ec)
+      throw std::runtime_error("model cache: cannot create " + partial.string() + ": " + ec.message());
+    fs::permissions(partial, fs::perms::owner_all, fs::perm_options::replace, ec);
+    if (ec) throw std::runtime_error("model cache: cannot set mode 0700 on " + partial.string() + ": " + ec.message());
+  }
+  std::error_code ec;
+  if (!fs::is_directory(dir_, ec)) throw std::runtime_error("model cache: " + dir_ + " is not a directory");
+}
+
+std::string ModelCache::path(const std::string& model_key) const {
+  return (fs::path(dir_) / (model_key + kModelFileExtension)).string();
+}
+
+std::optional<spline_model_t> ModelCache::find(const std::string& model_key, std::string* why) const {
+  why->clear();
+  const std::string file = path(model_key);
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return std::nullopt;
+  try {
+    spline_model_t full = read_model_file(file);
+    if (full.model_key != model_key) {
+      *why = file + " holds model_key " + full.model_key;
+      return std::nullopt;
+    }
+    decode_model(full);
+    return full;
+  } catch (const std::exception& e) {
+    *why = e.what();
+    return std::nullopt;
+  }
+}
+
+spline_model_t ModelCache::store(const spline_model_t& full) const { return write_model_file(full, path(full.model_key)); }
+
+spline_model_t answer_message(const spline_model_t& full, const std::string& path) {
+  spline_model_t copy = full;
+  if (!too_large_for_inline(copy)) return copy;
+  return file_reference(full, path);
+}
+
+}  // namespace wrc::geometryd

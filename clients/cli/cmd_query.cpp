@@ -29,6 +29,7 @@
 #include "bus/request_client.hpp"
 #include "bus/service_loop.hpp"
 #include "bus/spawn_child.hpp"
+#include "core/models/contact_model_factory.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
@@ -159,6 +160,24 @@ bool handle_until(lcm::LCM& lcm, double deadline, const std::function<bool()>& d
   return true;
 }
 
+// wrc-geometryd, started (tied to this process) when no instance of it is alive: the spline
+// service asks it for its model. Null when one runs.
+std::unique_ptr<StartedService> start_geometry_service(const bus::HeartbeatMonitor& monitor, const std::string& build,
+                                                       const std::string& instance, const Options& o) {
+  for (const bus::ServiceStatus& s : monitor.services(bus::monotonic_seconds()))
+    if (s.last.model == "geometryd" && s.available()) return nullptr;
+  const auto path = bus::find_service_executable("wrc-geometryd", build);
+  if (!path) throw std::runtime_error("no wrc-geometryd runs and it is not built in " + build);
+  std::vector<std::string> args{"--instance", instance, "--heartbeat-period", "0.2"};
+  if (o.has("--channel-prefix")) args.insert(args.end(), {"--channel-prefix", o.text("--channel-prefix")});
+  if (o.has("--lcm-url")) args.insert(args.end(), {"--lcm-url", o.text("--lcm-url")});
+  const std::string log =
+      (std::filesystem::temp_directory_path() / ("wrc-query-geometryd-" + instance + ".log")).string();
+  std::cerr << "query: no wrc-geometryd heard; starting " << *path << " --instance " << instance << " (log " << log
+            << ")\n";
+  return std::make_unique<StartedService>(*path, args, log);
+}
+
 // ---- output --------------------------------------------------------------------------------------
 
 std::string number(double v) {
@@ -217,7 +236,7 @@ void print_patches(const wrc::contact_reply_t& reply, const std::string& format)
 
 int run_query(const std::vector<std::string>& args) {
   std::vector<OptionSpec> specs{
-      {"--model", true, "contact model: onepoint, interp or multipoint", ""},
+      {"--model", true, "contact model: onepoint, interp, multipoint or spline", ""},
       {"--y", true, "lateral shift of the wheelset [m], > 0 towards the left rail", ""},
       {"--roll", true, "roll angle [rad], > 0 raises the left wheel", "0 (elastic without --z: rigid solution)"},
       {"--yaw", true, "yaw angle [rad]", "0"},
@@ -256,8 +275,8 @@ int run_query(const std::vector<std::string>& args) {
                  "--roll is given) is lowered by --penetration.\n";
     return 0;
   }
-  const std::string model = o.choice("--model", {"onepoint", "interp", "multipoint"}, "");
-  if (model.empty()) throw UsageError("--model is required (onepoint, interp or multipoint)");
+  const std::string model = o.choice("--model", contact_model_names(), "");
+  if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
   const double y = o.required_number("--y", -0.5, 0.5);
   const double yaw = o.number("--yaw", 0.0, -0.5, 0.5);
   const std::string formulation = o.choice("--formulation", {"rigid", "elastic"}, "rigid");
@@ -325,11 +344,13 @@ int run_query(const std::vector<std::string>& args) {
     handle_until(*lcm, bus::monotonic_seconds() + start_timeout,
                  [&] { return (service = pick(monitor, model, key, "", true)).has_value(); });
   }
+  std::unique_ptr<StartedService> started_geometry;  // for a model whose data wrc-geometryd computes
   if (!service) {
     const std::string build = o.text("--build-dir", bus::build_dir());
     const auto path = bus::find_service_executable("wrc-contactd", build);
     if (!path) throw std::runtime_error("no " + model + " service runs and wrc-contactd is not built in " + build);
     const std::string instance = "q" + std::to_string(::getpid());
+    if (contact_model_entry(model).needs_data) started_geometry = start_geometry_service(monitor, build, instance, o);
     std::vector<std::string> service_args{"--model", model, "--instance", instance, "--heartbeat-period", "0.2"};
     for (auto& a : geometry_arguments(spec)) service_args.push_back(a);
     if (o.has("--channel-prefix")) service_args.insert(service_args.end(), {"--channel-prefix", o.text("--channel-prefix")});
@@ -359,9 +380,14 @@ int run_query(const std::vector<std::string>& args) {
       *lcm, names.name(bus::channel::kContactQuery, model), names.name(bus::channel::kContactReply, client_id),
       bus::sender_name("wrc-query", client_id));
   auto result = client.call(query, policy);
+  const bool answered = result && result.reply->status == wrc::contact_reply_t::OK;
+  if (started_geometry) {
+    started_geometry->stop();
+    if (answered) std::filesystem::remove(started_geometry->log());
+  }
   if (started) {
     started->stop();
-    if (result && result.reply->status == wrc::contact_reply_t::OK) std::filesystem::remove(started->log());
+    if (answered) std::filesystem::remove(started->log());
   }
   if (!result) {
     throw std::runtime_error("no reply from " + model + " instance " + query.instance + " after " +

@@ -17,6 +17,7 @@
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/profile/profile_factory.hpp"
+#include "geometryd/spline_model_codec.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
 #include "wrc/heartbeat_t.hpp"
@@ -365,6 +366,85 @@ TEST_F(ContactServiceTest, OneAnswerPerQueryWithTwoInstances) {
     }
   }
   lcm_->unsubscribe(sub);
+}
+
+// ---- the spline model: wrc-geometryd and wrc-contactd --model spline ------------------------------
+
+// The whole chain over the bus: the spline service starts first and waits (STARTING, asking
+// wrc-geometryd); wrc-geometryd starts later, fits and publishes; the service checks and loads the
+// model, goes READY with the model's hash in its heartbeat, and answers exactly as the in-process
+// SplineModel built from the cached model file (to 1e-12), the reply carrying the same hash.
+TEST_F(ContactServiceTest, SplineServiceGetsItsModelFromALateGeometryService) {
+  const std::string cache = temp_path("models");
+  ::setenv("WRC_CACHE_DIR", cache.c_str(), 1);
+  const std::string log = temp_path("spline.log");
+  auto spline = start_contactd("spline", "s", log);
+  ASSERT_TRUE(handle_until([&] { return monitor_->find("spline", "s", monotonic_seconds()).has_value(); }, 10.0));
+  handle_until([] { return false; }, 1.0);
+  auto waiting = monitor_->find("spline", "s", monotonic_seconds());
+  ASSERT_TRUE(waiting && waiting->alive);
+  EXPECT_EQ(waiting->last.state, wrc::heartbeat_t::STARTING) << "READY without a model";
+  const std::string geometry_log = temp_path("geometryd.log");
+  ChildProcess geometryd(WRC_GEOMETRYD_PATH, {"--instance", "g", "--heartbeat-period", "0.2"}, geometry_log);
+  ASSERT_TRUE(wait_ready_while("spline", "s", *spline)) << read_text(log) << read_text(geometry_log);
+  ::unsetenv("WRC_CACHE_DIR");
+
+  // The model the service loaded is the cached file's (same key the service asked for).
+  const GeometrySpec spec;
+  const std::string key = geometryd::model_key(geometry_key(spec), SplineFitOptions{});
+  const auto model = geometryd::decode_model(geometryd::read_model_file(cache + "/" + key + ".splinemodel"));
+  const std::string hash = model->data_hash();
+  EXPECT_EQ(monitor_->find("spline", "s", monotonic_seconds())->last.model_hash, hash);
+
+  const auto query = make_query("spline", {configuration(0.003, 0.0002, 0.001, 0.46), configuration(-0.0045, -0.0004, 0.0, 0.46),
+                                           configuration(0.0065, 0.0, 0.0, 0.46)});
+  const auto reply = ask("spline", query);
+  EXPECT_EQ(reply.model_hash, hash);
+  ASSERT_EQ(reply.num_configurations, 3);
+  const auto local = make_contact_model("spline", std::make_shared<const WheelsetGeometry>(make_geometry(spec)),
+                                        ContactModelOptions{}, ContactModelData{model});
+  for (int i = 0; i < 2; ++i) {
+    ASSERT_EQ(reply.results[static_cast<size_t>(i)].status, wrc::contact_reply_t::OK) << reply.message;
+    const ContactResult want = local->evaluate(library_query(query, query.configurations[static_cast<size_t>(i)]));
+    const auto& got = reply.results[static_cast<size_t>(i)];
+    ASSERT_EQ(got.patches.size(), want.patches.size());
+    for (size_t k = 0; k < want.patches.size(); ++k) {
+      expect_close(got.patches[k].s_wheel, want.patches[k].point.s, "s");
+      expect_close(got.patches[k].a, want.patches[k].a, "a");
+      expect_close(got.patches[k].fy, want.patches[k].forces.fy, "fy");
+    }
+  }
+  // y = 6.5 mm lies beyond the box (|y| <= 6 mm): OUTSIDE_MODEL, naming y and the box.
+  EXPECT_EQ(reply.results[2].status, wrc::contact_reply_t::OUTSIDE_MODEL);
+  EXPECT_EQ(reply.status, wrc::contact_reply_t::OUTSIDE_MODEL);
+  EXPECT_NE(reply.message.find("y = 0.0065 m not in [-0.006, 0.006] m"), std::string::npos) << reply.message;
+}
+
+// `wrc launch` starts wrc-geometryd and the spline service (default profile lines), and
+// `wrc query --model spline` is answered by them.
+TEST_F(ContactServiceTest, LaunchBringsUpTheSplineServiceAndQueryUsesIt) {
+  const std::string cache = temp_path("models");
+  ::setenv("WRC_CACHE_DIR", cache.c_str(), 1);
+  const std::string log = temp_path("launch.log");
+  ChildProcess launcher(WRC_CLI_PATH,
+                        {"launch", "--profile", std::string(WRC_SOURCE_DIR) + "/profiles/launch/default.txt",
+                         "--build-dir", WRC_TEST_BUILD_DIR, "geometry", "contact-spline"},
+                        log);
+  handle_until([&] { auto s = monitor_->find("spline", "a", monotonic_seconds()); return s && s->available(); },
+               kBuildDeadline);
+  ::unsetenv("WRC_CACHE_DIR");
+  ASSERT_TRUE(wait_ready("spline", "a", 0.0)) << read_text(log);
+  int status = -1;
+  const std::string out = run_command(std::string(WRC_CLI_PATH) +
+                                          " query --model spline --y 0.003 --roll 0.0002 --load 80000 --format csv 2>&1",
+                                      &status);
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("spline instance a answered"), std::string::npos) << out;
+  EXPECT_NE(out.find("\nleft,"), std::string::npos) << out;
+  EXPECT_NE(out.find("\nright,"), std::string::npos) << out;
+  launcher.signal(SIGINT);
+  ASSERT_TRUE(launcher.wait(10.0, &status)) << read_text(log);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(log);
 }
 
 // ---- the front end -------------------------------------------------------------------------------

@@ -19,16 +19,19 @@ namespace {
 
 // Basis functions N_{i..i+P} of degree P on interval i of breakpoints b (m + 1 values) at x, and
 // derivatives up to order `orders` (0..2) into d1 / d2. The knot t_j of the clamped sequence is
-// b[clamp(j - P, 0, m)], so the knot vector is never materialised.
+// b[clamp(j - P, 0, m)], so the knot vector is never materialised. inverse holds this interval's
+// reciprocal knot differences inv(j, r) = 1 / (t_{span+r+1} - t_{span+1-j+r}), r < j <= P.
+// Derivatives from the lower-degree functions of the same triangle:
+//   N'_{k,j} = j (N_{k,j-1} / (t_{k+j} - t_k) - N_{k+1,j-1} / (t_{k+j+1} - t_{k+1})),
+// applied once for d1 and twice for d2 (no division, a few dozen operations for cubics).
 template <int P>
 void evaluate_degree(const double* b, int m, int i, const double* inverse, double x, int orders, double* value,
                      double* d1, double* d2) {
   auto knot = [b, m](int j) { return b[std::clamp(j - P, 0, m)]; };
-  const int span = i + P;  // index of the knot interval in the full knot sequence
-  // ndu[j][r], r >= j: basis functions of degree j (column); r < j would hold the knot
-  // difference right[r + 1] + left[j - r], whose reciprocal inverse[j][r] is precomputed.
-  double ndu[P + 1][P + 1];
   auto inv = [inverse](int j, int r) { return inverse[j * (P + 1) + r]; };
+  const int span = i + P;  // index of the knot interval in the full knot sequence
+  // ndu[r][j], r <= j: the degree-j functions N_{span-j+r, j} (the Cox-de Boor triangle).
+  double ndu[P + 1][P + 1];
   double left[P + 1], right[P + 1];
   ndu[0][0] = 1.0;
   for (int j = 1; j <= P; ++j) {
@@ -44,41 +47,30 @@ void evaluate_degree(const double* b, int m, int i, const double* inverse, doubl
   }
   for (int r = 0; r <= P; ++r) value[r] = ndu[r][P];
   if (orders == 0) return;
-
-  // Derivatives of order k <= min(orders, P); those of order > P vanish.
-  double* ders[3] = {value, d1, d2};
-  const int top = std::min(orders, P);
-  for (int k = top + 1; k <= orders; ++k)
-    for (int r = 0; r <= P; ++r) ders[k][r] = 0.0;
-  double a[2][P + 1];
-  for (int r = 0; r <= P; ++r) {
-    int s1 = 0, s2 = 1;
-    a[0][0] = 1.0;
-    for (int k = 1; k <= top; ++k) {
-      double d = 0.0;
-      const int rk = r - k, pk = P - k;
-      if (r >= k) {
-        a[s2][0] = a[s1][0] * inv(pk + 1, rk);
-        d = a[s2][0] * ndu[rk][pk];
-      }
-      const int j1 = rk >= -1 ? 1 : -rk;
-      const int j2 = r - 1 <= pk ? k - 1 : P - r;
-      for (int j = j1; j <= j2; ++j) {
-        a[s2][j] = (a[s1][j] - a[s1][j - 1]) * inv(pk + 1, rk + j);
-        d += a[s2][j] * ndu[rk + j][pk];
-      }
-      if (r <= pk) {
-        a[s2][k] = -a[s1][k - 1] * inv(pk + 1, r);
-        d += a[s2][k] * ndu[r][pk];
-      }
-      ders[k][r] = d;
-      std::swap(s1, s2);
+  // out[r] = j (lower[r-1] inv(j, r-1) - lower[r] inv(j, r)), r = 0..j: the derivative of the
+  // degree-j functions from the j coefficients `lower` of degree j - 1.
+  auto raise = [&inv](int j, const double* lower, double* out) {
+    for (int r = 0; r <= j; ++r) {
+      double v = 0.0;
+      if (r >= 1) v += lower[r - 1] * inv(j, r - 1);
+      if (r <= j - 1) v -= lower[r] * inv(j, r);
+      out[r] = j * v;
     }
+  };
+  double lower[P + 1], middle[P + 1];
+  if constexpr (P == 0) {
+    d1[0] = 0.0;
+  } else {
+    for (int r = 0; r < P; ++r) lower[r] = ndu[r][P - 1];
+    raise(P, lower, d1);
   }
-  double factor = P;  // P! / (P - k)!
-  for (int k = 1; k <= top; ++k) {
-    for (int r = 0; r <= P; ++r) ders[k][r] *= factor;
-    factor *= P - k;
+  if (orders < 2) return;
+  if constexpr (P < 2) {
+    for (int r = 0; r <= P; ++r) d2[r] = 0.0;
+  } else {
+    for (int r = 0; r < P - 1; ++r) lower[r] = ndu[r][P - 2];
+    raise(P - 1, lower, middle);  // first derivatives of the degree P - 1 functions
+    raise(P, middle, d2);
   }
 }
 
@@ -146,7 +138,7 @@ int BSplineBasis::interval(double x) const {
 
 int BSplineBasis::evaluate(double x, double* value, double* d1, double* d2) const {
   const int i = interval(x);
-  // Orders wanted: d2 implies d1 in the recursion, so a scratch array stands in for a null d1.
+  // Orders wanted: d2 is computed after d1, so a scratch array stands in for a null d1.
   double scratch[kMaxSplineDegree + 1];
   const int orders = d2 ? 2 : d1 ? 1 : 0;
   if (d2 && !d1) d1 = scratch;

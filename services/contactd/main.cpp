@@ -33,6 +33,7 @@
 #include "bus/request_server.hpp"
 #include "bus/service_load.hpp"
 #include "bus/service_loop.hpp"
+#include "bus/service_main.hpp"
 #include "bus/service_options.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "contactd/contactd_options.hpp"
@@ -230,19 +231,9 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
 }  // namespace
 
 int main(int argc, char** argv) {
-  wrc::bus::make_stderr_line_atomic();  // one log shared with other processes: whole lines only
-  try {
-    const auto service = wrc::bus::ServiceOptions::parse(argc, argv);
-    if (service.help) {
-      std::cout << "usage: wrc-contactd --model onepoint|interp|multipoint|spline [options]\n"
-                   "Contact service: answers contact_query_t on CONTACT_QUERY.<model> with contact_reply_t.\n\n"
-                << wrc::contactd::ContactdOptions::help_text() << wrc::bus::ServiceOptions::help_text();
-      return 0;
-    }
-    const auto options = wrc::contactd::ContactdOptions::parse(service.rest);
-    return run(service, options);
-  } catch (const std::exception& e) {
-    std::cerr << "wrc-contactd: " << e.what() << "\n";
-    return 1;
-  }
+  return wrc::bus::service_main<wrc::contactd::ContactdOptions>(
+      argc, argv, "wrc-contactd",
+      "usage: wrc-contactd --model onepoint|interp|multipoint|spline [options]\n"
+      "Contact service: answers contact_query_t on CONTACT_QUERY.<model> with contact_reply_t.\n",
+      run);
 }

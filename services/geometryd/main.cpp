@@ -18,6 +18,7 @@
 #include "bus/heartbeat_publisher.hpp"
 #include "bus/line_atomic_stderr.hpp"
 #include "bus/service_loop.hpp"
+#include "bus/service_main.hpp"
 #include "bus/service_options.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "geometryd/fit_worker.hpp"
@@ -66,20 +67,10 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::geometryd::Geometryd
 }  // namespace
 
 int main(int argc, char** argv) {
-  wrc::bus::make_stderr_line_atomic();  // one log shared with other processes: whole lines only
-  try {
-    const auto service = wrc::bus::ServiceOptions::parse(argc, argv);
-    if (service.help) {
-      std::cout << "usage: wrc-geometryd [options]\n"
-                   "Geometry service: answers geometry_request_t on GEOMETRY_REQUEST with the spline contact\n"
-                   "model (spline_model_t), fitted or from its cache, and progress_t on PROGRESS.\n\n"
-                << wrc::geometryd::GeometrydOptions::help_text() << wrc::bus::ServiceOptions::help_text();
-      return 0;
-    }
-    const auto options = wrc::geometryd::GeometrydOptions::parse(service.rest);
-    return run(service, options);
-  } catch (const std::exception& e) {
-    std::cerr << "wrc-geometryd: " << e.what() << "\n";
-    return 1;
-  }
+  return wrc::bus::service_main<wrc::geometryd::GeometrydOptions>(
+      argc, argv, "wrc-geometryd",
+      "usage: wrc-geometryd [options]\n"
+      "Geometry service: answers geometry_request_t on GEOMETRY_REQUEST with the spline contact\n"
+      "model (spline_model_t), fitted or from its cache, and progress_t on PROGRESS.\n",
+      run);
 }

@@ -9,22 +9,14 @@
 
 #include "core/contact/elliptic.hpp"
 #include "core/contact/hertz.hpp"
+#include "expect_invalid.hpp"
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 const double kEstar = wrc::contact_modulus(8.2e10, 0.28);  // G / (1 - nu) [Pa]
 
-// Expects fn() to throw std::invalid_argument whose message contains `text`.
-template <class F>
-void expect_invalid(F fn, const std::string& text) {
-  try {
-    fn();
-    ADD_FAILURE() << "no exception, expected one mentioning '" << text << "'";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-  }
-}
+using wrc::test::expect_invalid;
 
 // Verifies K and E at reference points: k = 0 (pi/2 both), k = 1/sqrt(2) (K and E to 16 digits from
 // DLMF 19.20 / Gauss's lemniscate constant), and Legendre's relation E K' + E' K - K K' = pi/2 at

@@ -15,6 +15,7 @@
 
 #include "core/spline/bspline_basis.hpp"
 #include "core/spline/tensor_spline.hpp"
+#include "expect_invalid.hpp"
 
 namespace {
 
@@ -23,16 +24,7 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Nonuniform breakpoints on [0, 1], smallest spacing 0.05.
 const std::vector<double> kBreaks = {0.0, 0.1, 0.35, 0.4, 0.8, 1.0};
 
-// Expects fn() to throw std::invalid_argument whose message contains `text`.
-template <class F>
-void expect_invalid(F fn, const std::string& text) {
-  try {
-    fn();
-    ADD_FAILURE() << "no exception, expected one mentioning '" << text << "'";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-  }
-}
+using wrc::test::expect_invalid;
 
 // Bound on |d^a/dx^a sum_i c_i N_i| for |c_i| <= 1: differentiating a spline differences its
 // coefficients and divides by knot spans >= the smallest interval hmin, each step a factor

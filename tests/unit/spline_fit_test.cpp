@@ -13,19 +13,11 @@
 #include <vector>
 
 #include "core/spline/tensor_spline.hpp"
+#include "expect_invalid.hpp"
 
 namespace {
 
-// Expects fn() to throw std::invalid_argument whose message contains `text`.
-template <class F>
-void expect_invalid(F fn, const std::string& text) {
-  try {
-    fn();
-    ADD_FAILURE() << "no exception, expected one mentioning '" << text << "'";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-  }
-}
+using wrc::test::expect_invalid;
 
 using Function = std::function<double(const double*)>;
 

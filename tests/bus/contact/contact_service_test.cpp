@@ -28,16 +28,6 @@ namespace {
 constexpr double kBuildDeadline = 240.0;  // [s] until a started contact service is READY
 using ContactClient = RequestClient<wrc::contact_query_t, wrc::contact_reply_t>;
 
-std::string run_command(const std::string& command, int* status) {
-  std::string out;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  *status = ::pclose(pipe);
-  return out;
-}
-
 wrc::wheelset_configuration_t configuration(double y, double roll, double yaw, double z) {
   wrc::wheelset_configuration_t c{};
   c.y = y;

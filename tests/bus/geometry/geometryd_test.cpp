@@ -40,16 +40,6 @@ using geometryd::resolve_model;
 
 constexpr double kPeriod = 0.2;  // [s] heartbeat period of the services started here
 
-std::string run_command(const std::string& command, int* status) {
-  std::string out;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  *status = ::pclose(pipe);
-  return out;
-}
-
 /// A model that fits in well under a second: cubic in y on 4 intervals, linear in roll and yaw,
 /// 3 x 3 lines sampled every 0.5 mm.
 SplineFitOptions small_options() {

@@ -35,4 +35,8 @@ bool process_gone(pid_t pid);
 /// Reads a whole text file (empty when missing).
 std::string read_text(const std::string& path);
 
+/// Runs a shell command and returns its standard output; its exit status (as pclose() gives it)
+/// goes to *status.
+std::string run_command(const std::string& command, int* status);
+
 }  // namespace wrc::bus::test

@@ -8,17 +8,6 @@
 namespace wrc::bus::test {
 namespace {
 
-/// Runs a shell command, returns its stdout; exit status in *status.
-std::string run(const std::string& command, int* status) {
-  std::string out;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  *status = ::pclose(pipe);
-  return out;
-}
-
 const std::string kJar = std::string(WRC_TEST_BUILD_DIR) + "/lcmtypes/wrc_lcmtypes_java.jar";
 
 // `wrc status` lists a running service with its model, instance, pid, state and channel.
@@ -26,7 +15,7 @@ TEST_F(BusTest, StatusListsLiveService) {
   auto pingd = start_pingd("s", 0.1);
   ASSERT_TRUE(wait_ready("pingd", "s", 5.0));
   int status = -1;
-  const std::string out = run(std::string(WRC_CLI_PATH) + " status --duration 0.5 --format csv", &status);
+  const std::string out = run_command(std::string(WRC_CLI_PATH) + " status --duration 0.5 --format csv", &status);
   EXPECT_EQ(status, 0);
   EXPECT_NE(out.find("model,instance,pid,state"), std::string::npos) << out;
   EXPECT_NE(out.find("pingd,s," + std::to_string(pingd->pid()) + ",READY,1,"), std::string::npos) << out;
@@ -37,12 +26,12 @@ TEST_F(BusTest, StatusListsLiveService) {
 TEST(Spy, PrintsTheCommandItRuns) {
   int status = -1;
   const std::string out =
-      run(std::string(WRC_CLI_PATH) + " spy --print-command --lcm-url udpm://239.255.76.67:7667?ttl=0", &status);
+      run_command(std::string(WRC_CLI_PATH) + " spy --print-command --lcm-url udpm://239.255.76.67:7667?ttl=0", &status);
   EXPECT_EQ(status, 0);
   EXPECT_EQ(out, "CLASSPATH=" + kJar +
                      " JDK_JAVA_OPTIONS=-XX:+IgnoreUnrecognizedVMOptions lcm-spy "
                      "--lcm-url=udpm://239.255.76.67:7667?ttl=0\n");
-  const std::string bad = run(std::string(WRC_CLI_PATH) + " spy --print-command --jar /nonexistent.jar 2>&1", &status);
+  const std::string bad = run_command(std::string(WRC_CLI_PATH) + " spy --print-command --jar /nonexistent.jar 2>&1", &status);
   EXPECT_NE(status, 0);
   EXPECT_NE(bad.find("'/nonexistent.jar' does not exist"), std::string::npos) << bad;
 }
@@ -50,7 +39,7 @@ TEST(Spy, PrintsTheCommandItRuns) {
 // The jar holds a class for every .lcm type, so lcm-spy can decode every message.
 TEST(Spy, JarHoldsEveryType) {
   int status = -1;
-  const std::string listing = run("jar tf " + kJar, &status);
+  const std::string listing = run_command("jar tf " + kJar, &status);
   ASSERT_EQ(status, 0) << "cannot list " << kJar;
   int types = 0;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(WRC_SOURCE_DIR) + "/lcmtypes")) {

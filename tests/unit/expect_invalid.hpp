@@ -1,0 +1,23 @@
+#pragma once
+/// @file
+/// A test helper: fn() must throw std::invalid_argument whose message contains a given text.
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace wrc::test {
+
+/// Expects fn() to throw std::invalid_argument whose message contains `text`.
+template <class F>
+void expect_invalid(F fn, const std::string& text) {
+  try {
+    fn();
+    ADD_FAILURE() << "no exception, expected one mentioning '" << text << "'";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace wrc::test

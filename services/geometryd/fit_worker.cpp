@@ -99,6 +99,7 @@ void FitWorker::run() {
       result.geometry_seconds = monotonic_seconds() - start;
       const SplineFit fit = fit_spline_geometry(geometry, job.options, progress);
       result.model = encode_model(fit, job.spec, job.options);
+      for (const auto& grid : fit.samples) result.tables.push_back(encode_table(*grid, job.spec, result.model.model_key));
       result.kind = FitEvent::Kind::kFinished;
     } catch (const std::exception& e) {
       result.kind = FitEvent::Kind::kFailed;

@@ -14,6 +14,7 @@
 
 #include "core/geometry/geometry_spec.hpp"
 #include "core/spline/spline_fit_options.hpp"
+#include "wrc/geometry_table_t.hpp"
 #include "wrc/spline_model_t.hpp"
 
 namespace wrc::geometryd {
@@ -36,6 +37,7 @@ struct FitEvent {
   double remaining = -1.0;   ///< [s] linear estimate from done/total, -1 = unknown
   std::string stage;         ///< kProgress: the fit's current stage; kFailed: the reason
   spline_model_t model;      ///< kFinished: the complete model message (encode_model, coefficients inline)
+  std::vector<geometry_table_t> tables;  ///< kFinished: the exact samples, left and right wheel (encode_table)
   double geometry_seconds = 0.0;  ///< kFinished: make_geometry [s]
 };
 

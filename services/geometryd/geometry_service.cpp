@@ -51,11 +51,13 @@ GeometryService::GeometryService(lcm::LCM& lcm, const bus::ChannelNames& names, 
       request_channel_(names.name(bus::channel::kGeometryRequest)),
       model_channel_(names.name(bus::channel::kSplineModel)),
       progress_channel_(names.name(bus::channel::kProgress)),
+      table_channel_(names.name(bus::channel::kGeometryTable)),
       sender_(sender),
       cache_(cache),
       worker_(worker),
       model_stamper_(sender),
       progress_stamper_(sender),
+      table_stamper_(sender),
       rejections_(sender + " on " + request_channel_) {
   subscription_ = lcm_.subscribe(bus::regex_escape(request_channel_), &GeometryService::on_request, this);
   if (subscription_ == nullptr) throw std::runtime_error("cannot subscribe to request channel '" + request_channel_ + "'");
@@ -120,6 +122,7 @@ void GeometryService::on_request(const lcm::ReceiveBuffer* rbuf, const std::stri
       try {
         spline_model_t answer = answer_message(*full, cache_.path(key));
         const bool inline_model = answer.file_path.empty();
+        publish_tables(cache_.find_tables(key), waiter);
         publish_model(std::move(answer), waiter);
         ++counters_.from_cache;
         std::cerr << sender_ << ": request " << request.request_id << " answered from the cache: model " << short_key
@@ -170,11 +173,16 @@ void GeometryService::finish(const FitEvent& event) {
     const spline_model_t& full = event.model;
     try {
       cache_.store(full);  // always: the cache holds every model
+      std::vector<geometry_table_t> tables;
+      for (const geometry_table_t& t : event.tables) tables.push_back(cache_.store_table(t));
       spline_model_t answer = answer_message(full, cache_.path(job.model_key));
       const std::string where = answer.file_path.empty()
                                     ? std::string("inline")
                                     : "file " + answer.file_path + " (" + std::to_string(answer.file_size) + " B)";
-      for (const Waiter& w : job.waiters) publish_model(answer, w);
+      for (const Waiter& w : job.waiters) {
+        publish_tables(tables, w);
+        publish_model(answer, w);
+      }
       std::cerr << sender_ << ": model " << short_key << " fitted in " << seconds_text(event.elapsed) << " (geometry "
                 << seconds_text(event.geometry_seconds) << ", sampling " << seconds_text(full.sampling_seconds)
                 << ", fitting " << seconds_text(full.fitting_seconds) << "), " << where << ", "
@@ -201,6 +209,14 @@ void GeometryService::publish_model(spline_model_t message, const Waiter& waiter
     rejections_.reject(waiter.reply_channel, "publishing the model failed");
   ++counters_.answered;
   latencies_.add(bus::monotonic_seconds() - waiter.received);
+}
+
+void GeometryService::publish_tables(std::vector<geometry_table_t> tables, const Waiter& waiter) {
+  for (geometry_table_t& t : tables) {
+    t.request_id = waiter.request_id;
+    table_stamper_.stamp(t.header);
+    if (lcm_.publish(table_channel_, &t) != 0) rejections_.reject(table_channel_, "publishing a geometry table failed");
+  }
 }
 
 void GeometryService::publish_progress(std::int64_t request_id, const std::string& task, long done, long total,

@@ -13,7 +13,8 @@
 /// otherwise a fit is queued, unless one of the same model_key is queued or running already:
 /// then the request waits for that one. Every fitted model is stored in the cache; the answer
 /// (request_id echoed, header stamped) is inline when small enough, else the file reference,
-/// on reply_channel or SPLINE_MODEL. Progress of a fit: at most every 0.2 s, then "done" or
+/// on reply_channel or SPLINE_MODEL, after the references to the two geometry tables (the exact
+/// samples of each wheel, stored next to the model) on GEOMETRY_TABLE. Progress of a fit: at most every 0.2 s, then "done" or
 /// "failed: <reason>" with done == total.
 
 #include <lcm/lcm-cpp.hpp>
@@ -90,17 +91,21 @@ class GeometryService : public bus::LoadSource {
                         double remaining, const std::string& message);
   /// Publishes message (complete or reference) for waiter.
   void publish_model(spline_model_t message, const Waiter& waiter);
+  /// Publishes the table references on GEOMETRY_TABLE with waiter's request id.
+  void publish_tables(std::vector<geometry_table_t> tables, const Waiter& waiter);
   void finish(const FitEvent& event);
 
   lcm::LCM& lcm_;
   const std::string request_channel_;
   const std::string model_channel_;
   const std::string progress_channel_;
+  const std::string table_channel_;
   const std::string sender_;
   const ModelCache& cache_;
   FitWorker& worker_;
   bus::HeaderStamper model_stamper_;
   bus::HeaderStamper progress_stamper_;
+  bus::HeaderStamper table_stamper_;
   bus::RejectionLog rejections_;
   lcm::Subscription* subscription_ = nullptr;
   std::map<std::int64_t, Job> jobs_;                 // by job id

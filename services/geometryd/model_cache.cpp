@@ -52,6 +52,31 @@ std::optional<spline_model_t> ModelCache::find(const std::string& model_key, std
 
 spline_model_t ModelCache::store(const spline_model_t& full) const { return write_model_file(full, path(full.model_key)); }
 
+std::string ModelCache::table_path(const std::string& model_key, int wheel) const {
+  return (fs::path(dir_) / (model_key + (wheel == geometry_table_t::LEFT ? ".left" : ".right") + kTableFileExtension))
+      .string();
+}
+
+geometry_table_t ModelCache::store_table(const geometry_table_t& full) const {
+  return write_table_file(full, table_path(full.model_key, full.wheel));
+}
+
+std::vector<geometry_table_t> ModelCache::find_tables(const std::string& model_key) const {
+  std::vector<geometry_table_t> out;
+  for (int wheel : {static_cast<int>(geometry_table_t::LEFT), static_cast<int>(geometry_table_t::RIGHT)}) {
+    const std::string file = table_path(model_key, wheel);
+    std::error_code ec;
+    if (!fs::exists(file, ec)) continue;
+    try {
+      geometry_table_t full = read_table_file(file);
+      if (full.model_key == model_key && full.wheel == wheel) out.push_back(table_reference(full, file));
+    } catch (const std::exception&) {
+      // an unusable table is not published; the next fit of this model rewrites it
+    }
+  }
+  return out;
+}
+
 spline_model_t answer_message(const spline_model_t& full, const std::string& path) {
   spline_model_t copy = full;
   if (!too_large_for_inline(copy)) return copy;

@@ -5,14 +5,18 @@
 /// a request for a stored model is answered from its file.
 
 #include <optional>
+#include <vector>
 #include <string>
 
+#include "wrc/geometry_table_t.hpp"
 #include "wrc/spline_model_t.hpp"
 
 namespace wrc::geometryd {
 
 /// File extension of a cached model.
 inline constexpr const char* kModelFileExtension = ".splinemodel";
+/// File extension of a cached geometry table (after ".left" or ".right").
+inline constexpr const char* kTableFileExtension = ".geometrytable";
 
 class ModelCache {
  public:
@@ -34,6 +38,15 @@ class ModelCache {
   /// Writes full (coefficients inline) to path(full.model_key) and returns the file reference
   /// (write_model_file). @throws std::runtime_error naming the path.
   spline_model_t store(const spline_model_t& full) const;
+
+  /// <dir>/<model_key>.left.geometrytable or .right.geometrytable (wheel: geometry_table_t::LEFT, RIGHT).
+  std::string table_path(const std::string& model_key, int wheel) const;
+  /// Writes a complete table to table_path() and returns its reference (write_table_file).
+  /// @throws std::runtime_error naming the path.
+  geometry_table_t store_table(const geometry_table_t& full) const;
+  /// References to the stored tables of model_key that read and decode (left, then right; none
+  /// when missing or unusable).
+  std::vector<geometry_table_t> find_tables(const std::string& model_key) const;
 
  private:
   std::string dir_;

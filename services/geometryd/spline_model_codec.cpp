@@ -236,8 +236,12 @@ std::shared_ptr<const SplineContactGeometry> decode_model(const spline_model_t& 
 
 bool too_large_for_inline(spline_model_t& message) { return message.getEncodedSize() > kMaxInlineModelBytes; }
 
-spline_model_t write_model_file(const spline_model_t& message, const std::string& path) {
-  spline_model_t stored = message;
+namespace {
+
+// The file form of a message: M with its header, request id and file fields cleared, LCM-encoded,
+// written atomically (temporary file, then rename). what names the kind in errors.
+template <class M>
+void write_message_file(M stored, const std::string& path, const char* what) {
   stored.header = header_t{};
   stored.request_id = 0;
   stored.file_path.clear();
@@ -245,66 +249,181 @@ spline_model_t write_model_file(const spline_model_t& message, const std::string
   stored.file_size = 0;
   const int size = stored.getEncodedSize();
   std::vector<char> bytes(static_cast<size_t>(size));
-  if (stored.encode(bytes.data(), 0, size) != size) throw std::runtime_error("spline model: encoding failed");
+  if (stored.encode(bytes.data(), 0, size) != size) throw std::runtime_error(std::string(what) + ": encoding failed");
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), size);
-    if (!out) throw std::runtime_error("spline model: cannot write " + temporary);
+    if (!out) throw std::runtime_error(std::string(what) + ": cannot write " + temporary);
   }
   std::error_code ec;
   std::filesystem::rename(temporary, path, ec);
-  if (ec) throw std::runtime_error("spline model: cannot rename " + temporary + " to " + path + ": " + ec.message());
-  return file_reference(message, path);
+  if (ec)
+    throw std::runtime_error(std::string(what) + ": cannot rename " + temporary + " to " + path + ": " + ec.message());
 }
 
-namespace {
-std::vector<char> read_bytes(const std::string& path) {
+std::vector<char> read_bytes(const std::string& path, const char* what) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error("spline model file " + path + " is missing");
+  if (!std::filesystem::is_regular_file(path, ec)) throw std::runtime_error(std::string(what) + " " + path + " is missing");
   std::ifstream in(path, std::ios::binary);
   std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw std::runtime_error("spline model file " + path + ": read error");
+  if (in.bad()) throw std::runtime_error(std::string(what) + " " + path + ": read error");
   return bytes;
 }
 
-spline_model_t decode_file(const std::vector<char>& bytes, const std::string& path) {
-  spline_model_t full;
+template <class M>
+M decode_bytes(const std::vector<char>& bytes, const std::string& path, const char* what) {
+  M full;
   if (full.decode(bytes.data(), 0, static_cast<int>(bytes.size())) != static_cast<int>(bytes.size()))
-    throw std::runtime_error("spline model file " + path + " does not decode as a spline_model_t");
+    throw std::runtime_error(std::string(what) + " " + path + " does not decode as a " + M::getTypeName());
   return full;
 }
+
+// The file fields of a reference to path (absolute path, size, SHA-256 of the bytes).
+template <class M>
+void set_file_fields(M& reference, const std::string& path, const std::vector<char>& bytes) {
+  reference.file_path = std::filesystem::absolute(path).string();
+  reference.file_hash = sha256_hex(bytes.data(), bytes.size());
+  reference.file_size = static_cast<int64_t>(bytes.size());
+}
+
+// The bytes behind a reference, checked against its file size and SHA-256.
+template <class M>
+std::vector<char> checked_file(const M& reference, const char* what) {
+  const std::string& path = reference.file_path;
+  std::vector<char> bytes = read_bytes(path, what);
+  if (static_cast<std::int64_t>(bytes.size()) != reference.file_size)
+    throw std::runtime_error(std::string(what) + " " + path + " has " + std::to_string(bytes.size()) +
+                             " bytes, the message says " + std::to_string(reference.file_size));
+  const std::string hash = sha256_hex(bytes.data(), bytes.size());
+  if (hash != reference.file_hash)
+    throw std::runtime_error(std::string(what) + " " + path + ": SHA-256 " + hash + " differs from the message's " +
+                             reference.file_hash);
+  return bytes;
+}
+
+constexpr const char* kModelFile = "spline model file";
+constexpr const char* kTableFile = "geometry table file";
+
+// SHA-256 of a table's values as little-endian doubles.
+std::string values_hash(const std::vector<double>& values) {
+  return sha256_hex(values.data(), values.size() * sizeof(double));
+}
+
 }  // namespace
 
+spline_model_t write_model_file(const spline_model_t& message, const std::string& path) {
+  write_message_file(message, path, kModelFile);
+  return file_reference(message, path);
+}
+
 spline_model_t file_reference(const spline_model_t& full, const std::string& path) {
-  const std::vector<char> bytes = read_bytes(path);
+  const std::vector<char> bytes = read_bytes(path, kModelFile);
   spline_model_t reference = full;
   for (spline_wheel_t& w : reference.wheels) {
     w.num_coefficients = 0;
     w.coefficients.assign(static_cast<size_t>(w.num_functions), std::vector<double>());
   }
-  reference.file_path = std::filesystem::absolute(path).string();
-  reference.file_hash = sha256_hex(bytes.data(), bytes.size());
-  reference.file_size = static_cast<int64_t>(bytes.size());
+  set_file_fields(reference, path, bytes);
   return reference;
 }
 
-spline_model_t read_model_file(const std::string& path) { return decode_file(read_bytes(path), path); }
+spline_model_t read_model_file(const std::string& path) {
+  return decode_bytes<spline_model_t>(read_bytes(path, kModelFile), path, kModelFile);
+}
 
 spline_model_t resolve_model(const spline_model_t& reference) {
   if (reference.file_path.empty()) return reference;
-  const std::string& path = reference.file_path;
-  const std::vector<char> bytes = read_bytes(path);
-  if (static_cast<std::int64_t>(bytes.size()) != reference.file_size)
-    throw std::runtime_error("spline model file " + path + " has " + std::to_string(bytes.size()) +
-                             " bytes, the message says " + std::to_string(reference.file_size));
-  const std::string hash = sha256_hex(bytes.data(), bytes.size());
-  if (hash != reference.file_hash)
-    throw std::runtime_error("spline model file " + path + ": SHA-256 " + hash + " differs from the message's " +
-                             reference.file_hash);
-  spline_model_t full = decode_file(bytes, path);
+  spline_model_t full = decode_bytes<spline_model_t>(checked_file(reference, kModelFile), reference.file_path, kModelFile);
   if (full.model_key != reference.model_key || full.model_hash != reference.model_hash)
-    throw std::runtime_error("spline model file " + path + " holds another model (model_key or model_hash differ)");
+    throw std::runtime_error(std::string(kModelFile) + " " + reference.file_path +
+                             " holds another model (model_key or model_hash differ)");
+  full.header = reference.header;
+  full.request_id = reference.request_id;
+  return full;
+}
+
+geometry_table_t encode_table(const WheelSampleGrid& grid, const GeometrySpec& spec, const std::string& model_key) {
+  geometry_table_t t;
+  t.request_id = 0;
+  t.geometry_key = geometry_key(spec);
+  t.model_key = model_key;
+  t.version = kGeometryTableVersion;
+  t.track = to_message(spec);
+  t.wheel = grid.side == WheelSide::kLeft ? geometry_table_t::LEFT : geometry_table_t::RIGHT;
+  t.y_min = grid.y.front();
+  t.y_max = grid.y.back();
+  t.y_count = static_cast<int32_t>(grid.y.size());
+  t.roll_min = grid.roll.front();
+  t.roll_max = grid.roll.back();
+  t.roll_count = static_cast<int32_t>(grid.roll.size());
+  t.yaw_min = grid.yaw.front();
+  t.yaw_max = grid.yaw.back();
+  t.yaw_count = static_cast<int32_t>(grid.yaw.size());
+  for (const SplineFieldInfo& f : kSplineFields) {
+    t.column_names.push_back(f.name);
+    t.column_units.push_back(f.unit);
+  }
+  t.column_names.insert(t.column_names.end(), {"valid", "second_minimum_gap", "jump_distance"});
+  t.column_units.insert(t.column_units.end(), {"-", "m", "m"});
+  t.num_columns = static_cast<int32_t>(t.column_names.size());
+  t.values.reserve(grid.samples.size() * static_cast<size_t>(t.num_columns));
+  for (size_t j = 0; j < grid.roll.size(); ++j)
+    for (size_t k = 0; k < grid.yaw.size(); ++k)
+      for (size_t i = 0; i < grid.y.size(); ++i) {
+        const WheelSample& s = grid.at(i, j, k);
+        t.values.insert(t.values.end(), s.fields.begin(), s.fields.end());
+        const double gap = std::isfinite(s.second_minimum_gap) ? s.second_minimum_gap : 1.0;
+        const double jump = std::isfinite(grid.jump_distance(i, j, k)) ? grid.jump_distance(i, j, k) : 1.0;
+        t.values.insert(t.values.end(), {s.valid ? 1.0 : 0.0, gap, jump});
+      }
+  t.num_values = static_cast<int32_t>(t.values.size());
+  t.table_hash = values_hash(t.values);
+  for (const auto& line : grid.line_jumps)
+    for (const TreadJump& jump : line) {
+      t.jump_y.push_back(jump.y);
+      t.jump_roll.push_back(jump.roll);
+      t.jump_yaw.push_back(jump.yaw);
+    }
+  t.num_jumps = static_cast<int32_t>(t.jump_y.size());
+  t.file_size = 0;
+  return t;
+}
+
+geometry_table_t write_table_file(const geometry_table_t& table, const std::string& path) {
+  write_message_file(table, path, kTableFile);
+  return table_reference(table, path);
+}
+
+geometry_table_t table_reference(const geometry_table_t& full, const std::string& path) {
+  const std::vector<char> bytes = read_bytes(path, kTableFile);
+  geometry_table_t reference = full;
+  reference.num_values = 0;
+  reference.values.clear();
+  set_file_fields(reference, path, bytes);
+  return reference;
+}
+
+geometry_table_t read_table_file(const std::string& path) {
+  return decode_bytes<geometry_table_t>(read_bytes(path, kTableFile), path, kTableFile);
+}
+
+geometry_table_t resolve_table(const geometry_table_t& reference) {
+  geometry_table_t full =
+      reference.file_path.empty()
+          ? reference
+          : decode_bytes<geometry_table_t>(checked_file(reference, kTableFile), reference.file_path, kTableFile);
+  const std::int64_t expected = static_cast<std::int64_t>(full.y_count) * full.roll_count * full.yaw_count * full.num_columns;
+  if (full.version != kGeometryTableVersion || full.num_values != expected ||
+      full.values.size() != static_cast<size_t>(expected) || full.column_names.size() != static_cast<size_t>(full.num_columns))
+    throw std::runtime_error("geometry table " + full.model_key.substr(0, 12) + ": version " +
+                             std::to_string(full.version) + ", " + std::to_string(full.values.size()) +
+                             " values for a " + std::to_string(full.y_count) + " x " + std::to_string(full.roll_count) +
+                             " x " + std::to_string(full.yaw_count) + " x " + std::to_string(full.num_columns) + " table");
+  if (values_hash(full.values) != full.table_hash)
+    throw std::runtime_error("geometry table " + full.model_key.substr(0, 12) + ": the values do not hash to table_hash");
+  if (!reference.file_path.empty() && (full.model_key != reference.model_key || full.wheel != reference.wheel))
+    throw std::runtime_error(std::string(kTableFile) + " " + reference.file_path + " holds another table");
   full.header = reference.header;
   full.request_id = reference.request_id;
   return full;

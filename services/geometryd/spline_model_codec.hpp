@@ -10,6 +10,7 @@
 
 #include "core/geometry/geometry_spec.hpp"
 #include "core/spline/spline_geometry_fit.hpp"
+#include "wrc/geometry_table_t.hpp"
 #include "wrc/spline_model_t.hpp"
 #include "wrc/track_t.hpp"
 
@@ -17,6 +18,8 @@ namespace wrc::geometryd {
 
 /// Layout version written into spline_model_t.version.
 inline constexpr int kSplineModelVersion = 2;
+/// Layout version written into geometry_table_t.version.
+inline constexpr int kGeometryTableVersion = 2;
 /// Largest encoded spline_model_t sent inline [B]; larger models travel as a file (one UDP
 /// datagram holds < 64 kB).
 inline constexpr int kMaxInlineModelBytes = 60000;
@@ -60,6 +63,21 @@ spline_model_t read_model_file(const std::string& path);
 /// read from file_path, checked against file_size and file_hash, decoded.
 /// @throws std::runtime_error naming the path and what does not match.
 spline_model_t resolve_model(const spline_model_t& reference);
+
+/// The exact samples of one wheel behind a fit (SplineFit::samples) as a complete table (values
+/// inline) for the model model_key.
+geometry_table_t encode_table(const WheelSampleGrid& grid, const GeometrySpec& spec, const std::string& model_key);
+
+/// Writes table (values inline) to path atomically and returns the reference to publish (no
+/// values; file_path, file_size, file_hash). @throws std::runtime_error naming the path.
+geometry_table_t write_table_file(const geometry_table_t& table, const std::string& path);
+/// The reference to an existing table file holding full. @throws std::runtime_error.
+geometry_table_t table_reference(const geometry_table_t& full, const std::string& path);
+/// Reads and decodes a table file. @throws std::runtime_error naming the path.
+geometry_table_t read_table_file(const std::string& path);
+/// The complete table behind a reference (or the message itself when its values are inline),
+/// checked: file size and SHA-256, version, sizes, table_hash. @throws std::runtime_error.
+geometry_table_t resolve_table(const geometry_table_t& reference);
 
 /// An encoded message larger than kMaxInlineModelBytes?
 bool too_large_for_inline(spline_model_t& message);

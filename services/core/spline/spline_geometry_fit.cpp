@@ -290,6 +290,7 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
     }
     sets.push_back(std::move(set));
     out.fitting_seconds += seconds_since(start);
+    out.samples[static_cast<size_t>(w)] = std::make_shared<const WheelSampleGrid>(std::move(grid));
   }
   out.model = std::make_shared<const SplineContactGeometry>(std::move(sets), left_box, s_split,
                                                             ContactModelOptions{}.lateral_curvature_floor);

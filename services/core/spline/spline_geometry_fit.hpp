@@ -71,6 +71,8 @@ struct WheelFitReport {
 struct SplineFit {
   std::shared_ptr<const SplineContactGeometry> model;
   std::array<WheelFitReport, 2> wheels;  ///< left, right
+  /// The exact samples the model was fitted to, left and right wheel (the geometry table).
+  std::array<std::shared_ptr<const WheelSampleGrid>, 2> samples;
   double sampling_seconds = 0;           ///< exact-geometry sampling and jump location [s]
   double fitting_seconds = 0;            ///< weights, knots and least squares [s]
 };

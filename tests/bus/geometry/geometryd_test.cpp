@@ -26,7 +26,9 @@
 #include "geometryd/geometryd_options.hpp"
 #include "geometryd/model_cache.hpp"
 #include "geometryd/spline_model_codec.hpp"
+#include "core/spline/wheel_sample.hpp"
 #include "wrc/geometry_request_t.hpp"
+#include "wrc/geometry_table_t.hpp"
 #include "wrc/heartbeat_t.hpp"
 #include "wrc/progress_t.hpp"
 #include "wrc/spline_model_t.hpp"
@@ -72,6 +74,8 @@ class GeometryServiceTest : public BusTest {
                                              &GeometryServiceTest::on_model, this));
     subscriptions_.push_back(lcm_->subscribe(regex_escape(names_.name(channel::kHeartbeat)),
                                              &GeometryServiceTest::on_heartbeat, this));
+    subscriptions_.push_back(lcm_->subscribe(regex_escape(names_.name(channel::kGeometryTable)),
+                                             &GeometryServiceTest::on_table, this));
   }
   void TearDown() override {
     if (service_ && service_->running()) {
@@ -93,6 +97,9 @@ class GeometryServiceTest : public BusTest {
     models_[m->request_id] = *m;
     model_channels_[m->request_id] = channel;
     model_arrival_[m->request_id] = monotonic_seconds();
+  }
+  void on_table(const lcm::ReceiveBuffer*, const std::string&, const wrc::geometry_table_t* t) {
+    tables_[t->request_id].push_back(*t);
   }
   void on_heartbeat(const lcm::ReceiveBuffer*, const std::string&, const wrc::heartbeat_t* h) {
     if (h->model == "geometryd") beats_.push_back({monotonic_seconds(), *h});
@@ -145,6 +152,7 @@ class GeometryServiceTest : public BusTest {
   std::map<std::int64_t, wrc::spline_model_t> models_;
   std::map<std::int64_t, std::string> model_channels_;
   std::map<std::int64_t, double> model_arrival_;
+  std::map<std::int64_t, std::vector<wrc::geometry_table_t>> tables_;
   std::vector<Beat> beats_;
 };
 
@@ -214,6 +222,61 @@ TEST_F(GeometryServiceTest, FitsASmallModelThenAnswersFromTheCache) {
       << text;
   std::printf("small model: answer after a fit %.3f s, from the cache %.4f s (%s)\n", fit_answer, cache_answer,
               fitted->file_path.empty() ? "inline" : "file");
+}
+
+// The exact samples behind a fit are published on GEOMETRY_TABLE before the model, one table per
+// wheel, as checked files in the cache: the table's values are the exact geometry at its grid
+// points (against sample_wheel, to 1e-15 m: the same computation), its z column is what the model
+// was fitted to (over the continuous region's samples, the largest |z_model - z_table| is the
+// model's published fit_max_error for z), and a cache hit republishes the same tables.
+TEST_F(GeometryServiceTest, PublishesTheExactSamplesAsGeometryTables) {
+  start_service();
+  const SplineFitOptions options = small_options();
+  send(make_request(21, options));
+  const auto fitted = wait_model(21, 20.0);
+  ASSERT_TRUE(fitted) << read_text(log_);
+  ASSERT_EQ(tables_[21].size(), 2u) << read_text(log_);
+  const auto model = decode_model(resolve_model(*fitted));
+  const WheelsetGeometry geometry = make_geometry(GeometrySpec{});
+  for (const wrc::geometry_table_t& reference : tables_[21]) {
+    EXPECT_EQ(reference.num_values, 0);  // the values are in the file
+    EXPECT_EQ(reference.model_key, fitted->model_key);
+    const wrc::geometry_table_t t = geometryd::resolve_table(reference);
+    const WheelSide side = t.wheel == wrc::geometry_table_t::LEFT ? WheelSide::kLeft : WheelSide::kRight;
+    ASSERT_EQ(t.column_names[kFieldZ], "z");
+    const int columns = t.num_columns;
+    double worst_fit = 0;
+    int checked = 0;
+    const int valid = columns - 3, jump_distance = columns - 1;
+    for (int j = 0; j < t.roll_count; ++j)
+      for (int k = 0; k < t.yaw_count; ++k)
+        for (int i = 0; i < t.y_count; ++i) {
+          WheelsetPose p;
+          p.y = t.y_min + (t.y_max - t.y_min) * i / (t.y_count - 1);
+          p.roll = t.roll_count > 1 ? t.roll_min + (t.roll_max - t.roll_min) * j / (t.roll_count - 1) : t.roll_min;
+          p.yaw = t.yaw_count > 1 ? t.yaw_min + (t.yaw_max - t.yaw_min) * k / (t.yaw_count - 1) : t.yaw_min;
+          p.z = 0.46;
+          const double* row = &t.values[static_cast<size_t>(((j * t.yaw_count + k) * t.y_count + i) * columns)];
+          SplineEvaluation e;
+          model->evaluate(side, p, SplineDerivatives::kValue, e);
+          if (row[valid] == 1.0 && row[jump_distance] >= options.jump_band && row[kFieldFlangeClearance] > 0.0)
+            worst_fit = std::max(worst_fit, std::abs(e.value[kFieldZ] - row[kFieldZ]));
+          if ((i + j + k) % 7 != 0) continue;
+          const WheelSample exact = sample_wheel(geometry, side, p, model->s_split(), options.clearance_cap, 0.01, options.search);
+          EXPECT_NEAR(row[kFieldZ], exact.fields[kFieldZ], 1e-15);
+          EXPECT_NEAR(row[kFieldSWheel], exact.fields[kFieldSWheel], 1e-15);
+          ++checked;
+        }
+    EXPECT_GT(checked, 10);
+    const double published = fitted->wheels[static_cast<int>(side)].fit_max_error[kFieldZ];
+    EXPECT_GT(published, 0.0);
+    EXPECT_NEAR(worst_fit, published, 1e-12);
+  }
+  send(make_request(22, options));
+  ASSERT_TRUE(wait_model(22, 5.0)) << read_text(log_);
+  ASSERT_EQ(tables_[22].size(), 2u);
+  EXPECT_EQ(tables_[22][0].table_hash, tables_[21][0].table_hash);
+  EXPECT_EQ(tables_[22][1].file_hash, tables_[21][1].file_hash);
 }
 
 // (c) heartbeats keep coming (READY, gaps below two periods) during a default-size fit (~1.5 s);

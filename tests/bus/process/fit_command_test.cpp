@@ -1,0 +1,53 @@
+// `wrc fit` as the user runs it: a small model fitted from the command line writes a JSON report
+// with every fitted parameter's max_error and rms_error (z among them), the validation set and
+// what it leaves out, the jumps and knots of both wheels and the timing; bad options fail with
+// one line naming the option.
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "bus_fixture.hpp"
+
+namespace wrc::bus::test {
+namespace {
+
+TEST_F(BusTest, FitCommandWritesTheAccuracyReport) {
+  const std::string report = temp_path("fit.json");
+  int status = -1;
+  const std::string out = run_command(std::string(WRC_CLI_PATH) +
+                                          " fit --knots 6x1x1 --degree 3x1x1 --samples 3x3 --sample-step 2.5e-4 --report " +
+                                          report + " 2>&1",
+                                      &status);
+  ASSERT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("z "), std::string::npos) << out;
+  EXPECT_NE(out.find("report: " + report), std::string::npos) << out;
+  std::ifstream in(report);
+  const nlohmann::json r = nlohmann::json::parse(in);
+  const auto& z = r.at("parameters").at("z");
+  EXPECT_EQ(z.at("unit"), "m");
+  // A coarse model (6 intervals in y, linear in roll and yaw) on the tread: z within tens of um.
+  EXPECT_GT(z.at("max_error").get<double>(), 0.0);
+  EXPECT_LT(z.at("rms_error").get<double>(), 2e-5);
+  EXPECT_LE(z.at("rms_error").get<double>(), z.at("max_error").get<double>());
+  for (const char* name : {"contact_angle", "rolling_radius", "s_wheel", "hertz_m", "flange_clearance"})
+    EXPECT_TRUE(r.at("parameters").contains(name)) << name;
+  EXPECT_EQ(r.at("options").at("intervals"), (nlohmann::json{6, 1, 1}));
+  EXPECT_EQ(r.at("validation").at("excluded_band").get<double>(), 5e-4);
+  ASSERT_EQ(r.at("wheels").size(), 2u);
+  for (const auto& w : r.at("wheels")) {
+    EXPECT_EQ(w.at("y_breakpoints").size(), 7u);
+    EXPECT_GT(w.at("jumps").size(), 0u);  // S1002/UIC60 has tread jumps in |y| <= 6 mm
+  }
+  EXPECT_GT(r.at("timing").at("precomputation_seconds").get<double>(), 0.0);
+
+  const std::string bad = run_command(std::string(WRC_CLI_PATH) + " fit --knots 0x2x2 --report " + report + " 2>&1", &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(bad.find("--knots: '0'"), std::string::npos) << bad;
+  const std::string no_report = run_command(std::string(WRC_CLI_PATH) + " fit 2>&1", &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(no_report.find("--report"), std::string::npos) << no_report;
+}
+
+}  // namespace
+}  // namespace wrc::bus::test

@@ -29,6 +29,8 @@
 #include "bus/request_client.hpp"
 #include "bus/service_loop.hpp"
 #include "bus/spawn_child.hpp"
+#include "bus/stop_children.hpp"
+#include "bus/contact_status.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
@@ -109,20 +111,10 @@ class StartedService {
     }
     return true;
   }
-  /// SIGTERM, up to 5 s for a clean exit, then SIGKILL.
+  /// SIGTERM, up to 5 s for a clean exit (DRAINING heartbeat), then SIGKILL (bus::stop_children).
   void stop() {
     if (!alive()) return;
-    ::kill(pid_, SIGTERM);
-    const double deadline = bus::monotonic_seconds() + 5.0;
-    while (bus::monotonic_seconds() < deadline) {
-      if (::waitpid(pid_, nullptr, WNOHANG) == pid_) {
-        pid_ = -1;
-        return;
-      }
-      ::usleep(10000);
-    }
-    ::kill(pid_, SIGKILL);
-    ::waitpid(pid_, nullptr, 0);
+    bus::stop_children({pid_}, 5.0);
     pid_ = -1;
   }
 
@@ -398,10 +390,7 @@ int run_query(const std::vector<std::string>& args) {
             << number(result.round_trip * 1e3) << " ms (compute " << number(reply.compute_time * 1e3) << " ms, "
             << result.attempts << " attempt" << (result.attempts > 1 ? "s" : "") << ")\n";
   if (reply.status != wrc::contact_reply_t::OK) {
-    static const char* names_of[] = {"OK", "BAD_REQUEST", "NO_CONTACT", "IMPOSSIBLE_CONFIGURATION", "INTERNAL_ERROR",
-                                     "OUTSIDE_MODEL"};
-    const char* status = reply.status >= 0 && reply.status <= 5 ? names_of[reply.status] : "UNKNOWN";
-    std::cerr << "query: " << status << ": " << reply.message << "\n";
+    std::cerr << "query: " << bus::contact_status_name(reply.status) << ": " << reply.message << "\n";
     return 1;
   }
   print_patches(reply, format);

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "bus/percentile.hpp"
 #include "bus/service_load.hpp"
 
 namespace wrc::bus {
@@ -20,13 +21,10 @@ void LatencyWindow::add(double seconds) {
 
 void LatencyWindow::summarise(ServiceLoad& load) const {
   if (samples_.empty()) return;
-  std::vector<double> sorted = samples_;
-  std::sort(sorted.begin(), sorted.end());
-  const double mean = std::accumulate(sorted.begin(), sorted.end(), 0.0) / sorted.size();
-  const std::size_t i95 = std::min(sorted.size() - 1, (sorted.size() * 95 + 99) / 100 - 1);
+  const double mean = std::accumulate(samples_.begin(), samples_.end(), 0.0) / samples_.size();
   load.latency_mean = std::max(load.latency_mean, mean);
-  load.latency_p95 = std::max(load.latency_p95, sorted[i95]);
-  load.latency_max = std::max(load.latency_max, sorted.back());
+  load.latency_p95 = std::max(load.latency_p95, percentile(samples_, 0.95));  // the one p95 rule
+  load.latency_max = std::max(load.latency_max, *std::max_element(samples_.begin(), samples_.end()));
 }
 
 }  // namespace wrc::bus

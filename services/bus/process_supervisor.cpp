@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "bus/clock.hpp"
+#include "bus/stop_children.hpp"
 
 namespace wrc::bus {
 
@@ -114,43 +115,33 @@ void ProcessSupervisor::poll() {
 }
 
 void ProcessSupervisor::stop_all() {
-  bool any = false;
+  std::vector<pid_t> pids;
+  std::vector<ChildState*> running;
   for (auto& child : children_) {
     if (child.pid > 0) {
-      ::kill(-child.pid, SIGTERM);
-      any = true;
+      pids.push_back(child.pid);
+      running.push_back(&child);
     }
   }
-  if (!any) return;
-  const double deadline = monotonic_seconds() + policy_.grace;
-  auto reap = [this](bool block) {
-    bool running = false;
-    for (auto& child : children_) {
-      if (child.pid <= 0) continue;
-      int status = 0;
-      const pid_t r = ::waitpid(child.pid, &status, block ? 0 : WNOHANG);
-      if (r == child.pid || (r < 0 && errno == ECHILD)) {
-        log_ << "launch: stopped " << child.spec.name << " (pid " << child.pid << "): "
-             << (r == child.pid ? describe_exit(status) : std::string("already reaped")) << std::endl;
-        ::kill(-child.pid, SIGKILL);  // anything the child left in its group
-        child.pid = -1;
-      } else {
-        running = true;
-      }
+  if (pids.empty()) return;
+  auto child_of = [&](pid_t pid) -> ChildState& {
+    for (ChildState* c : running) {
+      if (c->pid == pid) return *c;
     }
-    return running;
+    return *running.front();  // not reached: every pid is one of running
   };
-  while (reap(false) && monotonic_seconds() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  for (auto& child : children_) {
-    if (child.pid > 0) {
-      log_ << "launch: " << child.spec.name << " (pid " << child.pid << ") did not stop within "
-           << policy_.grace << " s, sending SIGKILL" << std::endl;
-      ::kill(-child.pid, SIGKILL);
-    }
-  }
-  reap(true);
+  StopHooks hooks;
+  hooks.before_kill = [&](pid_t pid) {
+    log_ << "launch: " << child_of(pid).spec.name << " (pid " << pid << ") did not stop within " << policy_.grace
+         << " s, sending SIGKILL" << std::endl;
+  };
+  hooks.on_reaped = [&](const StoppedChild& stopped) {
+    log_ << "launch: stopped " << child_of(stopped.pid).spec.name << " (pid " << stopped.pid
+         << "): " << (stopped.reaped ? describe_exit(stopped.wait_status) : std::string("already reaped"))
+         << std::endl;
+  };
+  stop_children(pids, policy_.grace, /*whole_group=*/true, hooks);
+  for (ChildState* c : running) c->pid = -1;
 }
 
 }  // namespace wrc::bus

@@ -5,7 +5,9 @@
 #include <exception>
 #include <stdexcept>
 
+#include "bus/contact_status.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
+#include "core/models/query_validation.hpp"
 
 namespace wrc::contactd {
 
@@ -31,6 +33,23 @@ std::string check_positive(const std::string& name, double value, double hi, con
   if (std::string why = check_range(name, value, 0.0, hi, unit); !why.empty()) return why;
   if (!(value > 0.0)) return name + " = " + number_text(value) + " is not positive";
   return {};
+}
+
+/// "" when value is finite and in the open interval (lo, hi), else "<name> = <value> is ...".
+std::string check_open(const std::string& name, double value, double lo, double hi, const char* unit) {
+  if (!std::isfinite(value)) return name + " = " + number_text(value) + " is not a finite number";
+  if (!(value > lo && value < hi)) {
+    return name + " = " + number_text(value) + " is outside (" + number_text(lo) + ", " + number_text(hi) +
+           ") " + unit;
+  }
+  return {};
+}
+
+/// "" when count is in [kMinFastsimGrid, kMaxFastsimGrid] (the library's limits).
+std::string check_grid(const char* name, std::int32_t count) {
+  if (count >= wrc::kMinFastsimGrid && count <= wrc::kMaxFastsimGrid) return {};
+  return std::string(name) + " = " + std::to_string(count) + " is outside [" + std::to_string(wrc::kMinFastsimGrid) +
+         ", " + std::to_string(wrc::kMaxFastsimGrid) + "]";
 }
 
 std::string validate_configuration(const wrc::wheelset_configuration_t& c, int i, bool rigid) {
@@ -74,44 +93,22 @@ void copy3(const Eigen::Vector3d& from, double to[3]) {
 
 }  // namespace
 
-int status_severity(std::int8_t status) {
-  switch (status) {
-    case wrc::contact_reply_t::OK: return 0;
-    case wrc::contact_reply_t::NO_CONTACT: return 1;
-    case wrc::contact_reply_t::OUTSIDE_MODEL: return 2;
-    case wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION: return 3;
-    case wrc::contact_reply_t::BAD_REQUEST: return 4;
-    case wrc::contact_reply_t::INTERNAL_ERROR: return 5;
-    default: return 6;
-  }
-}
-
-const char* status_name(std::int8_t status) {
-  switch (status) {
-    case wrc::contact_reply_t::OK: return "OK";
-    case wrc::contact_reply_t::BAD_REQUEST: return "BAD_REQUEST";
-    case wrc::contact_reply_t::NO_CONTACT: return "NO_CONTACT";
-    case wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION: return "IMPOSSIBLE_CONFIGURATION";
-    case wrc::contact_reply_t::INTERNAL_ERROR: return "INTERNAL_ERROR";
-    case wrc::contact_reply_t::OUTSIDE_MODEL: return "OUTSIDE_MODEL";
-    default: return "UNKNOWN";
-  }
-}
-
 std::string validate_query(const wrc::contact_query_t& q) {
   if (q.formulation != wrc::contact_query_t::RIGID && q.formulation != wrc::contact_query_t::ELASTIC) {
     return "formulation = " + std::to_string(q.formulation) + " is neither RIGID (0) nor ELASTIC (1)";
   }
-  if (std::string why = check_positive("shear_modulus", q.shear_modulus, 1e13, "Pa"); !why.empty()) return why;
-  if (std::string why = check_range("poisson_ratio", q.poisson_ratio, 0.0, 0.5, "[-]"); !why.empty()) return why;
-  if (std::string why = check_range("friction", q.friction, 0.0, 10.0, "[-]"); !why.empty()) return why;
-  if (std::string why = check_positive("speed", q.speed, 1000.0, "m/s"); !why.empty()) return why;
-  if (q.fastsim_nx < 1 || q.fastsim_nx > 400) {
-    return "fastsim_nx = " + std::to_string(q.fastsim_nx) + " is outside [1, 400]";
+  // Material, speed and grid limits are the library's (core/models/query_validation.hpp).
+  if (std::string why = check_positive("shear_modulus", q.shear_modulus, wrc::kMaxShearModulus, "Pa"); !why.empty()) {
+    return why;
   }
-  if (q.fastsim_ny < 1 || q.fastsim_ny > 400) {
-    return "fastsim_ny = " + std::to_string(q.fastsim_ny) + " is outside [1, 400]";
+  if (std::string why = check_open("poisson_ratio", q.poisson_ratio, wrc::kMinPoissonRatio, wrc::kMaxPoissonRatio, "[-]");
+      !why.empty()) {
+    return why;
   }
+  if (std::string why = check_range("friction", q.friction, 0.0, wrc::kMaxFriction, "[-]"); !why.empty()) return why;
+  if (std::string why = check_positive("speed", q.speed, wrc::kMaxSpeed, "m/s"); !why.empty()) return why;
+  if (std::string why = check_grid("fastsim_nx", q.fastsim_nx); !why.empty()) return why;
+  if (std::string why = check_grid("fastsim_ny", q.fastsim_ny); !why.empty()) return why;
   if (q.num_configurations < 1 || q.num_configurations > kMaxConfigurations) {
     return "num_configurations = " + std::to_string(q.num_configurations) + " is outside [1, " +
            std::to_string(kMaxConfigurations) + "]";
@@ -214,7 +211,7 @@ void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query
     if (status == wrc::contact_reply_t::OK) continue;
     out = wrc::contact_result_t{};
     out.status = status;
-    if (status_severity(status) > status_severity(reply.status)) {
+    if (bus::contact_status_severity(status) > bus::contact_status_severity(reply.status)) {
       reply.status = status;
       reply.message = configuration_label(query.configurations[static_cast<std::size_t>(i)], i) + why;
     }

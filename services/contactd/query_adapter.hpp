@@ -34,15 +34,9 @@ void to_result_message(const ContactResult& result, wrc::contact_result_t& messa
 /// reply.message and reply.results (one per configuration, in query order). Per configuration:
 /// OutsideModelError -> OUTSIDE_MODEL, ContactConfigurationError -> IMPOSSIBLE_CONFIGURATION, std::invalid_argument -> BAD_REQUEST,
 /// any other exception -> INTERNAL_ERROR; such a configuration gets no patches and zero
-/// resultants. The overall status is the worst one (OK < NO_CONTACT < OUTSIDE_MODEL < IMPOSSIBLE_CONFIGURATION <
-/// BAD_REQUEST < INTERNAL_ERROR) and the message that of the first configuration with that status,
+/// resultants. The overall status is the worst one (bus::contact_status_severity: OK < NO_CONTACT <
+/// OUTSIDE_MODEL < IMPOSSIBLE_CONFIGURATION < BAD_REQUEST < INTERNAL_ERROR) and the message that of the first configuration with that status,
 /// prefixed "configuration <i> (y=..., roll=..., yaw=...): ". Never throws for a model failure.
 void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query, wrc::contact_reply_t& reply);
-
-/// Severity rank of a contact_reply_t status for "worst of" (unknown codes rank highest).
-int status_severity(std::int8_t status);
-
-/// Name of a contact_reply_t status: "OK", "BAD_REQUEST", ...
-const char* status_name(std::int8_t status);
 
 }  // namespace wrc::contactd

@@ -59,12 +59,4 @@ class BareClient {
   double compute_time_ = 0.0;
 };
 
-/// Ends the benchmark's child processes (SIGTERM, then waits for each).
-inline void stop_children(const std::vector<pid_t>& children) {
-  for (pid_t pid : children) {
-    ::kill(pid, SIGTERM);
-    ::waitpid(pid, nullptr, 0);
-  }
-}
-
 }  // namespace wrc::bench

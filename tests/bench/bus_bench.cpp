@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "bare_client.hpp"
+#include "bus/stop_children.hpp"
 #include "bus/spawn_child.hpp"
 #include "bus/build_paths.hpp"
 #include "bus/channels.hpp"
@@ -92,7 +93,7 @@ struct Bench {
     }
     if (!bare_ok || !layer_ok) throw std::runtime_error("echo processes do not answer");
   }
-  ~Bench() { wrc::bench::stop_children(children); }
+  ~Bench() { wrc::bus::stop_children(children, 5.0); }
 };
 
 Bench& bench() {

@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "bare_client.hpp"
+#include "bus/stop_children.hpp"
 #include "bus/spawn_child.hpp"
 #include "bus/build_paths.hpp"
 #include "bus/channels.hpp"
@@ -261,7 +262,7 @@ struct Bench {
     if (!all_ok()) throw std::runtime_error("the echo or a contact service does not answer");
   }
   ~Bench() {
-    wrc::bench::stop_children(children);
+    wrc::bus::stop_children(children, 5.0);
     if (!cache_dir.empty()) std::filesystem::remove_all(cache_dir);
   }
 };

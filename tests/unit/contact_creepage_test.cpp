@@ -1,5 +1,5 @@
 // Unit tests of the creepages from wheelset motion (services/core/contact/creepage.hpp), against the
-// linearised table of the physics notes, Part B 2, with the track frame x forward, y left, z up.
+// linearised table of docs/contact-mechanics.md, "Creepages", with the track frame x forward, y left, z up.
 
 #include <gtest/gtest.h>
 

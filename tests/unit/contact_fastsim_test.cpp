@@ -1,8 +1,9 @@
 // Unit tests of FASTSIM, centre-value variant (services/core/contact/fastsim.hpp): linear limit,
 // strip-analytic pure creep, saturation, symmetry, a convergence study and the large-spin case.
 //
-// Patch used throughout unless stated: the physics notes' example, N = 80 kN, a = 6.68 mm, b = 5.02 mm,
-// G = 8.2e10 Pa, nu = 0.28, mu = 0.3 (mu N = 24 kN; saturation starts near xi ~ mu N / (G c^2 C11) ~ 2e-3).
+// Patch used throughout unless stated: the Hertz example of docs/contact-mechanics.md,
+// N = 80 kN, a = 6.68 mm, b = 5.02 mm, G = 8.2e10 Pa, nu = 0.28, mu = 0.3
+// (mu N = 24 kN; saturation starts near xi ~ mu N / (G c^2 C11) ~ 2e-3).
 
 #include <gtest/gtest.h>
 
@@ -33,12 +34,12 @@ wrc::CreepPatch example_patch() {
 
 double rel(double value, double reference) { return (value - reference) / reference; }
 
-// Continuum reference of the simplified theory for pure longitudinal creep (physics notes 4.3): per strip
-// of half-length a_j the force is -(4/3) k a_j^3 (1 - (1 - t_j)^3), k = mu 2N/(pi a b)/a^2,
-// t_j = min(1, xi/(2 L1 k a_j)). With `strips` > 0 the sum runs over FASTSIM's own strips (midpoints,
-// width 2b/strips), which isolates the discretisation error along x; with strips = 0 the y integral is
-// done with 200000 midpoint strips (relative quadrature error < 1e-9), the full continuum reference.
-// Works for pure lateral creep as well with L2 in place of L1 (no coupling without spin).
+// Continuum reference of the simplified theory for pure longitudinal creep (docs/contact-mechanics.md,
+// "FASTSIM"): per strip of half-length a_j the force is -(4/3) k a_j^3 (1 - (1 - t_j)^3),
+// k = mu 2N/(pi a b)/a^2, t_j = min(1, xi/(2 L1 k a_j)). With `strips` > 0 the sum runs over FASTSIM's own strips
+// (midpoints, width 2b/strips), which isolates the discretisation error along x; with strips = 0 the y
+// integral is done with 200000 midpoint strips (relative quadrature error < 1e-9), the full continuum
+// reference. Works for pure lateral creep as well with L2 in place of L1 (no coupling without spin).
 double strip_analytic_force(const wrc::CreepPatch& p, double flexibility, double xi, int strips) {
   const int m = strips > 0 ? strips : 200000;
   const double k = p.friction * 2 * p.normal_force / (kPi * p.a * p.b) / (p.a * p.a);
@@ -95,7 +96,7 @@ TEST(FastsimLinearLimit, MatchesLinearTheoryAt20x20) {
 
 // Verifies pure longitudinal (and pure lateral) creep against the strip-analytic formula summed over the
 // same 20 strips, the exact reference for the discretisation error along x. In the partial-slip regime
-// (xi = 1e-3, 3e-3, 1e-2; physics notes: <= 0.3 % measured at 20x20 for 1e-3 and 3e-3) we assert 0.3 %.
+// (xi = 1e-3, 3e-3, 1e-2; docs/contact-mechanics.md: <= 0.3 % at 20x20 for 1e-3 and 3e-3) we assert 0.3 %.
 // At the onset of slip (xi = 1e-4: the slip zone at the trailing edge is t_j ~ 1.6 % of the central strip,
 // shorter than half an element) the discrete scheme cannot resolve the slip zone: no element is capped
 // until t_j > 1/(2 m_x), so FASTSIM returns the linear value, which lies a relative t_j above the
@@ -122,7 +123,7 @@ TEST(FastsimPureCreep, MatchesStripAnalyticFormula) {
 }
 
 // Verifies saturation: for large creepage the force magnitude tends to mu N. The discrete bound sums to
-// mu N within the midpoint-rule error (~0.15 % at 20x20), so 1 % is the brief's bound with margin. With
+// mu N within the midpoint-rule error (~0.15 % at 20x20), so a 1 % bound leaves margin. With
 // combined creepage and no spin every element's increment has the same direction (xi_x/L1, xi_y/L2), so
 // the force is exactly opposite to (C11 xi_x, C22 xi_y) (1e-9 rad), not to (xi_x, xi_y). With large spin on top the magnitude
 // still cannot exceed the bound's total (mu N + 1 %), and the slip fraction is close to 1.
@@ -209,12 +210,12 @@ TEST(FastsimConvergence, ErrorDecreasesWithGrid) {
 
 // The large-spin case (flange contact, phi_s = 2 1/m, phi_s a = 0.013, ten times the creepages 1e-3):
 // FASTSIM converges only to first order in the number of elements per strip, and the number of strips
-// hardly matters (physics notes 4.3). Verified here: (1) successive differences of Fy halve when m_x
-// doubles (ratio in 1.6 .. 2.4 from m_x = 40 on; second order would give 4); (2) m_y from 10 to 160 at
-// m_x = 20 changes Fy by < 0.5 %; (3) with the first-order extrapolated limit from m_x = 320 and 640 as
-// reference, 20 elements per strip are off by more than 1.5 % (measured 3.2 %), while 160 elements
-// (and 20 strips) are within 1 % (measured 0.6 %). So for flange-contact spin the adequate grid is
-// 160 x 20 (m_x x m_y), or 80 x 20 within ~1.1 %; 20x20 is adequate for tread contact (small spin).
+// hardly matters (docs/contact-mechanics.md, "FASTSIM"). Verified here: (1) successive differences of Fy
+// halve when m_x doubles (ratio in 1.6 .. 2.4 from m_x = 40 on; second order would give 4); (2) m_y from 10
+// to 160 at m_x = 20 changes Fy by < 0.5 %; (3) with the first-order extrapolated limit from m_x = 320 and
+// 640 as reference, 20 elements per strip are off by more than 1.5 % (measured 3.2 %), while 160 elements
+// (and 20 strips) are within 1 % (measured 0.6 %). So for flange-contact spin the adequate grid is 160 x 20
+// (m_x x m_y), or 80 x 20 within ~1.1 %; 20x20 is adequate for tread contact (small spin).
 TEST(FastsimConvergence, LargeSpinConvergesSlowlyInRollingDirection) {
   const auto p = example_patch();
   const auto k = wrc::kalker_coefficients(p.a / p.b, p.poisson);

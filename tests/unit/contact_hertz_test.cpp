@@ -65,9 +65,9 @@ TEST(HertzContact, SphereLimit) {
   EXPECT_DOUBLE_EQ(c.shape.eccentricity, 0.0);
 }
 
-// Verifies m, n and a/b against the physics notes' table of Hertz coefficients versus theta
+// Verifies m, n and a/b against the table of Hertz coefficients versus theta (docs/contact-mechanics.md)
 // (cos theta = (B - A)/(A + B)), B > A. The table has 4 significant digits (rounding <= 0.05 %), so
-// 0.2 % is the brief's tolerance with margin; theta = 1 deg (a/b = 281) is beyond a/b = 50 and included.
+// a 0.2 % tolerance leaves margin; theta = 1 deg (a/b = 281) is beyond a/b = 50 and included.
 TEST(HertzContact, CoefficientsMatchTable) {
   struct Row { double theta_deg, m, n, a_over_b; };
   const Row rows[] = {{1, 36.93, 0.1313, 281.3}, {2, 22.24, 0.1692, 131.5}, {5, 11.24, 0.2381, 47.19},
@@ -89,9 +89,10 @@ TEST(HertzContact, CoefficientsMatchTable) {
   }
 }
 
-// Verifies the physics notes' order-of-magnitude example: N = 80 kN on a 0.46 m wheel and an R300 rail
-// crown gives a = 6.68 mm, b = 5.02 mm, p0 = 1.14 GPa, delta = 90 um. Tolerances are half a unit of the
-// last printed digit plus margin: 0.1 % for a and b (3 digits), 0.5 % for p0, 0.7 % for delta (2 digits).
+// Verifies the order-of-magnitude example of docs/contact-mechanics.md, "Hertz": N = 80 kN on a 0.46 m
+// wheel and an R300 rail crown gives a = 6.68 mm, b = 5.02 mm, p0 = 1.14 GPa, delta = 90 um. Tolerances are
+// half a unit of the last printed digit plus margin: 0.1 % for a and b (3 digits), 0.5 % for p0, 0.7 % for
+// delta (2 digits).
 TEST(HertzContact, OrderOfMagnitudeExample) {
   const auto c = wrc::hertz_from_force(0.5 / 0.46, 0.5 / 0.30, kEstar, 80e3);
   EXPECT_NEAR(c.a, 6.68e-3, 1e-3 * 6.68e-3);

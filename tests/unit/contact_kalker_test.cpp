@@ -14,10 +14,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Verifies the interpolation to nu = 0.28 against the values printed in the physics notes (Part B 4.2),
-// which were computed with CONTACT's rule (quadratic Lagrange in 1/C). They have 4 significant digits:
-// rounding is <= 5e-4, so an absolute tolerance of 1e-3 detects any different rule (linear interpolation
-// of C in nu would give e.g. C11(a/b = 1) = 4.249, off by 0.023).
+// Verifies the interpolation to nu = 0.28 against the reference values of docs/contact-mechanics.md
+// ("Kalker's linear theory and coefficients"), which were computed with CONTACT's rule (quadratic Lagrange
+// in 1/C). They have 4 significant digits: rounding is <= 5e-4, so an absolute tolerance of 1e-3 detects
+// any different rule (linear interpolation of C in nu would give e.g. C11(a/b = 1) = 4.249, off by 0.023).
 TEST(KalkerCoefficients, InterpolatedToNu028MatchesReference) {
   struct Row { double a_over_b, c11, c22, c23; };
   const Row rows[] = {{1.0, 4.226, 3.705, 1.488},

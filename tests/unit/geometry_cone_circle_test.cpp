@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "core/geometry/conicity.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
 #include "core/profile/profile_factory.hpp"
 
@@ -59,6 +60,23 @@ ClosedForm closed_form(WheelSide side, double y, double z, double roll) {
   }
   f.radius = r0 - kLambda * f.s;
   return f;
+}
+
+// Small shifts, to first order in y and roll (derivation: the left contact moves along the cone by
+// s_L = -rho sin(gamma) - y - K roll and the right by s_R = -rho sin(gamma) + y + K roll, with
+// K = rho cos(gamma) + r0 the lever of roll about the rail head centre; equal distances of both
+// wheels give 2 a roll = 2 lambda (y + K roll), a = taping half distance):
+//   roll = lambda y / (a - lambda K),   delta_r = -lambda (s_L - s_R) = 2 lambda y a / (a - lambda K).
+double small_shift_lever() {
+  return kRho * std::cos(std::atan(kLambda)) + cone_track().nominal_radius;
+}
+double small_shift_roll_per_y() {
+  const double a = cone_track().taping_half_distance();
+  return kLambda / (a - kLambda * small_shift_lever());
+}
+double small_shift_delta_r_per_y() {
+  const double a = cone_track().taping_half_distance();
+  return 2 * kLambda * a / (a - kLambda * small_shift_lever());
 }
 
 // One potential common point per wheel, at the closed-form position to 1e-10 m (root tolerance
@@ -118,9 +136,13 @@ TEST(GeometryConeOnCircle, RigidWheelsetMatchesClosedForm) {
     EXPECT_NEAR(c.right().rolling_radius, closed_form(WheelSide::kRight, y, z, roll).radius, 1e-10);
     EXPECT_NEAR(c.left().distance, 0.0, 1e-11);
     EXPECT_NEAR(c.right().distance, 0.0, 1e-11);
-    // Small-shift limit: delta_r is odd in y and about 2*lambda*y times the contact-shift factor.
+    // Small-shift limit (small_shift_* above): delta_r = 2 lambda y a / (a - lambda K) = 0.10388 y
+    // and roll = lambda y / (a - lambda K) = 0.06925 y, to 1e-4 relative. The formulas are first
+    // order; what they neglect are products of two small quantities (lambda roll <= 2.5e-5,
+    // lambda rho sin(gamma) / a = 3.3e-4 before the two wheels' terms cancel); observed: 1.7e-5.
     if (y != 0.0) {
-      EXPECT_GT(c.delta_r() / y, 0.0);
+      EXPECT_NEAR(c.delta_r() / y, small_shift_delta_r_per_y(), 1e-4 * small_shift_delta_r_per_y()) << y;
+      EXPECT_NEAR(c.pose.roll / y, small_shift_roll_per_y(), 1e-4 * small_shift_roll_per_y()) << y;
     }
   }
 }
@@ -136,6 +158,28 @@ TEST(GeometryConeOnCircle, WarmStartEqualsColdStart) {
   EXPECT_NEAR(warm.pose.roll, cold.pose.roll, 2e-12);
   EXPECT_NEAR(warm.pose.z, cold.pose.z, 1e-12);
   EXPECT_NEAR(warm.left().s, cold.left().s, 1e-10);
+}
+
+// Equivalent conicity of the cone: delta_r is linear in y to 1e-7 relative over +-7 mm (see
+// above), and the harmonic linearisation of a linear delta_r = k y gives exactly k / 2, so
+// lambda_e = lambda a / (a - lambda K) = 1.0388 lambda, to the 1e-4 of the small-shift formula.
+// The factor above 1 is the roll: it carries each contact K roll further along the tread.
+// Knife-edge limit (circle:0.0001, K -> r0): lambda a / (a - lambda r0) = 1.0317 lambda; without
+// the roll's shift it would be lambda itself.
+TEST(GeometryConeOnCircle, EquivalentConicityMatchesClosedForm) {
+  const WheelsetGeometry g = cone_on_circle();  // the solver keeps a reference to it
+  const RigidWheelsetSolver solver(g);
+  for (double amplitude : {0.002, 0.006}) {
+    EXPECT_NEAR(equivalent_conicity(solver, amplitude), 0.5 * small_shift_delta_r_per_y(),
+                1e-4 * 0.5 * small_shift_delta_r_per_y())
+        << amplitude;
+  }
+  const WheelsetGeometry knife(make_profile("conic:0.05", ProfileSide::kWheel),
+                               make_profile("circle:0.0001", ProfileSide::kRail), cone_track());
+  const RigidWheelsetSolver knife_solver(knife);
+  const double a = cone_track().taping_half_distance(), r0 = cone_track().nominal_radius;
+  const double knife_edge = kLambda * a / (a - kLambda * r0);
+  EXPECT_NEAR(equivalent_conicity(knife_solver, 0.003), knife_edge, 1e-4 * knife_edge);
 }
 
 }  // namespace

@@ -13,9 +13,9 @@ namespace {
 
 ProfilePtr uic60() { return make_profile("UIC60", ProfileSide::kRail); }
 
-// EN 60E1 at 1:40 and gauge 1435 mm: physics.md Part A 2.1 derives the rail axis at |y| = 753.035 mm
-// and the top of rail at |y| = 760.53 mm (7.496 mm outward of the axis). Tolerance 1 um: the
-// reference numbers are given to 1 um.
+// EN 60E1 at 1:40 and gauge 1435 mm: docs/profiles.md ("Placement") derives the rail axis at
+// |y| = 753.035 mm and the top of rail at |y| = 760.53 mm (7.496 mm outward of the axis). Tolerance
+// 1 um: the reference numbers are given to 1 um.
 TEST(GeometryPlacement, Uic60AtOneInFortyMatchesReferencePlacement) {
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const double sigma = side_sign(side);

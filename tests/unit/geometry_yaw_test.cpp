@@ -71,10 +71,10 @@ TEST(GeometryYaw, CommonPointMatchesBruteForceOverTheWheelSurface) {
   }
 }
 
-// On the flange the contact point lies well ahead of or behind the wheel's centre: by about
-// -R*R'(s)*yaw (physics.md Part A 4), i.e. several millimetres at 10 mrad, while on the tread
-// (|R'| < 0.05) the lead stays below 0.25 mm. The lead is measured from the wheel-centre point of
-// the contact's cross-section, which the yaw itself moves by -sin(yaw)*(lateral arm).
+// On the flange the contact point lies well ahead of or behind the wheel's centre: by about -R*R'(s)*yaw
+// (docs/contact-mechanics.md, "Where contact can occur"), i.e. several millimetres at 10 mrad, while on the
+// tread (|R'| < 0.05) the lead stays below 0.25 mm. The lead is measured from the wheel-centre point of the
+// contact's cross-section, which the yaw itself moves by -sin(yaw)*(lateral arm).
 TEST(GeometryYaw, FlangeContactLeadsTheWheelCentre) {
   const WheelsetGeometry g(make_profile("S1002", ProfileSide::kWheel), make_profile("UIC60", ProfileSide::kRail));
   auto lead = [&](const ContactPoint& p, const WheelsetPose& pose) {

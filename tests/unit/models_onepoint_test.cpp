@@ -75,7 +75,7 @@ TEST(ModelsOnePoint, CentredWheelsetIsSymmetric) {
     EXPECT_GT(left.normal_force, 0.3 * kLoad);
     EXPECT_NEAR(left.creepages.longitudinal, 0.0, 1e-12);
     EXPECT_NEAR(right.creepages.longitudinal, 0.0, 1e-12);
-    // Spin -sin(delta)/r0 on the left, +sin(delta)/r0 on the right (physics.md Part B 2).
+    // Spin -sin(delta)/r0 on the left, +sin(delta)/r0 on the right (docs/contact-mechanics.md, "Creepages").
     EXPECT_LT(left.creepages.spin, 0.0);
     EXPECT_NEAR(left.creepages.spin, -right.creepages.spin, 1e-12 * std::fabs(left.creepages.spin));
     EXPECT_NEAR(left.creepages.spin, -std::sin(left.point.contact_angle) / r, 1e-3 * std::fabs(left.creepages.spin));

@@ -37,16 +37,15 @@ ContactQuery good_query() {
   return q;
 }
 
-// Expects std::invalid_argument whose message contains every one of the given fragments.
-void expect_invalid(const ContactModel& model, const ContactQuery& q, const std::string& field,
-                    const std::string& value) {
+// Expects std::invalid_argument whose message contains `expected` (field, value and rule in one
+// piece of text).
+void expect_invalid(const ContactModel& model, const ContactQuery& q, const std::string& expected) {
   try {
     model.evaluate(q);
-    ADD_FAILURE() << model.name() << ": no exception for " << field;
+    ADD_FAILURE() << model.name() << ": no exception, expected '" << expected << "'";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find(field), std::string::npos) << what;
-    EXPECT_NE(what.find(value), std::string::npos) << what;
+    EXPECT_NE(what.find(expected), std::string::npos) << model.name() << ": " << what;
   }
 }
 
@@ -59,30 +58,38 @@ TEST(ModelsValidation, BadQueriesThrowNamingTheField) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     struct Case {
       std::function<void(ContactQuery&)> spoil;
-      std::string field, value;
+      std::string expected;  // field [unit] = value rule
     };
+    // The library's message is "contact query: <field> [unit] = <value> <rule>"; each case matches
+    // the field with its unit, the value and the rule with its bounds, so a "0" or "1" elsewhere
+    // in the message cannot pass for the value.
     const Case cases[] = {
-        {[&](ContactQuery& q) { q.pose.y = nan; }, "pose.y", "nan"},
-        {[&](ContactQuery& q) { q.pose.roll = nan; }, "pose.roll", "nan"},
-        {[&](ContactQuery& q) { q.pose.yaw = 0.07; }, "pose.yaw", "0.07"},  // beyond the validated 0.06
-        {[&](ContactQuery& q) { q.pose.z = std::numeric_limits<double>::infinity(); }, "pose.z", "inf"},
-        {[&](ContactQuery& q) { q.yaw_dot = nan; }, "yaw_dot", "nan"},
-        {[&](ContactQuery& q) { q.spin_rate = nan; }, "spin_rate", "nan"},
-        {[](ContactQuery& q) { q.speed = 0.0; }, "speed", "0"},
-        {[](ContactQuery& q) { q.speed = -5.0; }, "speed", "-5"},
-        {[](ContactQuery& q) { q.normal_load[1] = -10.0; }, "normal_load[1]", "-10"},
-        {[&](ContactQuery& q) { q.normal_load[0] = nan; }, "normal_load[0]", "nan"},
-        {[](ContactQuery& q) { q.material.shear_modulus = 0.0; }, "shear_modulus", "0"},
-        {[](ContactQuery& q) { q.material.poisson_ratio = 0.5; }, "poisson_ratio", "0.5"},
-        {[](ContactQuery& q) { q.material.poisson_ratio = 0.0; }, "poisson_ratio", "0"},
-        {[](ContactQuery& q) { q.material.friction = -0.1; }, "friction", "-0.1"},
-        {[](ContactQuery& q) { q.fastsim_elements = 1; }, "fastsim_elements", "1"},
-        {[](ContactQuery& q) { q.fastsim_strips = 401; }, "fastsim_strips", "401"},
+        {[&](ContactQuery& q) { q.pose.y = nan; }, "pose.y [m] = nan must be finite"},
+        {[&](ContactQuery& q) { q.pose.roll = nan; }, "pose.roll [rad] = nan must be finite"},
+        {[&](ContactQuery& q) { q.pose.yaw = 0.07; },  // beyond the validated 0.06
+         "pose.yaw [rad] = 0.07 is beyond the validated range +-0.06 rad"},
+        {[&](ContactQuery& q) { q.pose.z = std::numeric_limits<double>::infinity(); }, "pose.z [m] = inf must be finite"},
+        {[&](ContactQuery& q) { q.yaw_dot = nan; }, "yaw_dot [rad/s] = nan must be finite"},
+        {[&](ContactQuery& q) { q.spin_rate = nan; }, "spin_rate [rad/s] = nan must be finite"},
+        {[](ContactQuery& q) { q.speed = 0.0; }, "speed [m/s] = 0 must be in (0, 1000]"},
+        {[](ContactQuery& q) { q.speed = -5.0; }, "speed [m/s] = -5 must be in (0, 1000]"},
+        {[](ContactQuery& q) { q.normal_load[1] = -10.0; },
+         "normal_load[1] (right) [N] = -10 must be non-negative and finite"},
+        {[&](ContactQuery& q) { q.normal_load[0] = nan; }, "normal_load[0] (left) [N] = nan must be non-negative"},
+        {[](ContactQuery& q) { q.material.shear_modulus = 0.0; },
+         "material.shear_modulus [Pa] = 0 must be in (0, 1e+13]"},
+        {[](ContactQuery& q) { q.material.poisson_ratio = 0.5; },
+         "material.poisson_ratio [-] = 0.5 must be in (0, 0.5)"},
+        {[](ContactQuery& q) { q.material.poisson_ratio = 0.0; },
+         "material.poisson_ratio [-] = 0 must be in (0, 0.5)"},
+        {[](ContactQuery& q) { q.material.friction = -0.1; }, "material.friction [-] = -0.1 must be in [0, 10]"},
+        {[](ContactQuery& q) { q.fastsim_elements = 1; }, "fastsim_elements = 1 must be in 2..400"},
+        {[](ContactQuery& q) { q.fastsim_strips = 401; }, "fastsim_strips = 401 must be in 2..400"},
     };
     for (const Case& c : cases) {
       ContactQuery q = good_query();
       c.spoil(q);
-      expect_invalid(*model, q, c.field, c.value);
+      expect_invalid(*model, q, c.expected);
     }
     // The unspoilt query works, also with a non-default FASTSIM grid (cached solver).
     EXPECT_EQ(model->evaluate(good_query()).patches.size() >= 2, true) << name;

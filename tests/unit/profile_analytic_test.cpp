@@ -18,7 +18,7 @@ TEST(ProfileConic, ClosedForm) {
   EXPECT_DOUBLE_EQ(p.evaluate(0.01).height, -0.00025);
   EXPECT_DOUBLE_EQ(p.evaluate(-0.02).height, 0.0005);
   EXPECT_DOUBLE_EQ(p.evaluate(0.0).slope, -0.025);
-  EXPECT_EQ(p.evaluate(0.03).curvature, 0.0);
+  EXPECT_EQ(p.evaluate(0.03).second_derivative, 0.0);
   EXPECT_DOUBLE_EQ(p.lower(), -0.06);
   EXPECT_DOUBLE_EQ(p.upper(), 0.06);
   EXPECT_EQ(p.side(), ProfileSide::kWheel);
@@ -33,7 +33,7 @@ TEST(ProfileCircle, ClosedForm) {
   const double root = std::sqrt(r * r - u * u);
   EXPECT_NEAR(p.evaluate(u).height, root - r, 1e-16);
   EXPECT_NEAR(p.evaluate(u).slope, -u / root, 1e-15);
-  EXPECT_NEAR(p.evaluate(u).curvature, -r * r / (root * root * root), 1e-12);
+  EXPECT_NEAR(p.evaluate(u).second_derivative, -r * r / (root * root * root), 1e-12);
   EXPECT_EQ(p.evaluate(0.0).height, 0.0);
   EXPECT_DOUBLE_EQ(p.upper(), 0.036);
   EXPECT_DOUBLE_EQ(CircleRailProfile(0.02).upper(), 0.018);

@@ -40,7 +40,7 @@ void check_derivatives(const Profile& p, double skip_near_breakpoint) {
     const double fd_slope = (8 * (r1.height - l1.height) - (r2.height - l2.height)) / (12 * h);
     const double fd_curv = (8 * (r1.slope - l1.slope) - (r2.slope - l2.slope)) / (12 * h);
     EXPECT_NEAR(c.slope, fd_slope, 1e-7 + 1e-6 * std::fabs(c.slope)) << p.name() << " s=" << s;
-    EXPECT_NEAR(c.curvature, fd_curv, 1e-2 + 1e-5 * std::fabs(c.curvature))
+    EXPECT_NEAR(c.second_derivative, fd_curv, 1e-2 + 1e-5 * std::fabs(c.second_derivative))
         << p.name() << " s=" << s;
     ++checked;
   }

@@ -75,7 +75,7 @@ TEST(ProfileFileFormats, SmallGoodFiles) {
   const ProfilePtr ban = read_profile_file(data("small_rail.ban"), ProfileSide::kRail);
   EXPECT_DOUBLE_EQ(ban->lower(), -0.004);
   EXPECT_NEAR(ban->evaluate(0.001).height, -0.0625e-3, 1e-15);
-  EXPECT_NEAR(ban->evaluate(0.003).curvature, -1.0 / 8.0 * 1e3, 1e-9);
+  EXPECT_NEAR(ban->evaluate(0.003).second_derivative, -1.0 / 8.0 * 1e3, 1e-9);
   EXPECT_EQ(ban->built_in_cant(), 0.0);
   ProfileFileOptions options;
   options.built_in_cant = 0.025;

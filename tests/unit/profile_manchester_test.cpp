@@ -71,8 +71,8 @@ TEST(ProfileManchester, S1002FileMatchesAnalytic) {
 }
 
 // Maps a point (u, v) of the untilted rail (origin at the crown top) into the frame of the canted
-// Manchester file: rotate by the cant towards the gauge side (Y = u cos a - v sin a,
-// Z = u sin a + v cos a, physics.md 2.3), origin moved to the highest point of the canted crown.
+// Manchester file: rotate by the cant towards the gauge side (Y = u cos a - v sin a, Z = u sin a + v cos a,
+// docs/profiles.md, "Placement"), origin moved to the highest point of the canted crown.
 void to_canted(double cant, double u, double v, double& y, double& z) {
   const double c = std::cos(cant);
   const double s = std::sin(cant);
@@ -87,7 +87,7 @@ void to_canted(double cant, double u, double v, double& y, double& z) {
 // |u| = 25 mm and 5.13 um at u = -34 mm (gauge corner), and the same at the file points
 // themselves, so it is a real (small) difference between the file and the tangent-arc
 // construction, not spline error. Bounds: 1.5 um for |u| <= 25 mm (the running band), 6 um on the
-// whole head (physics.md 2.2: the construction reproduces the file's delta-r to <= 5e-4 mm).
+// whole head (docs/profiles.md: the construction reproduces the file's delta-r to <= 5e-4 mm).
 void check_rail_file(const ProfilePtr& file, double* worst_out) {
   const Uic60Profile analytic(Uic60Variant::kManchester);
   const double cant = file->built_in_cant();

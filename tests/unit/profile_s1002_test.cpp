@@ -1,4 +1,4 @@
-// Tests of the analytic S1002 wheel profile against the checks of physics.md Part A 1.2.
+// Tests of the analytic S1002 wheel profile against the properties in docs/profiles.md ("S1002 wheel").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,11 +39,12 @@ TEST(ProfileS1002, FlangeHeight) {
   const ProfileSample tip = p.evaluate(-55 * kMm);
   EXPECT_NEAR(tip.height, 28 * kMm, 1e-12);
   EXPECT_NEAR(tip.slope, 0.0, 1e-12);
-  EXPECT_NEAR(tip.curvature, -1.0 / (12 * kMm), 1e-6);
+  EXPECT_NEAR(tip.second_derivative, -1.0 / (12 * kMm), 1e-6);
 }
 
-// Flange thickness 32.5 mm: F = 10 mm reached at s = -37.500 mm (on the R13 root arc); physics.md
-// gives -37.5001, so 0.5 um tolerance. qR = s(F=10) - s(F=26) = 10.79 mm (value to 0.01 mm).
+// Flange thickness 32.5 mm: F = 10 mm reached at s = -37.500 mm (on the R13 root arc); an independent
+// evaluation of the published form gives -37.5001, so 0.5 um tolerance. qR = s(F=10) - s(F=26) = 10.79 mm
+// (value to 0.01 mm).
 TEST(ProfileS1002, FlangeThicknessAndQr) {
   const S1002Profile p;
   const double s10 = solve_height(p, 10 * kMm, -38.4 * kMm, -35 * kMm);
@@ -58,10 +59,10 @@ TEST(ProfileS1002, FlankAngle) {
   const S1002Profile p;
   const double s = -39.0 * kMm;
   EXPECT_NEAR(std::atan(-p.evaluate(s).slope) * 180.0 / M_PI, 70.0, 1e-3);
-  EXPECT_EQ(p.evaluate(s).curvature, 0.0);
+  EXPECT_EQ(p.evaluate(s).second_derivative, 0.0);
 }
 
-// Continuity at the breakpoints: physics.md measures jumps of 1.18e-4 mm (C/D, -35 mm) and
+// Continuity at the breakpoints (docs/profiles.md): the published data jump by 1.18e-4 mm (C/D, -35 mm) and
 // 3.7e-5 mm (B/C, -26 mm) and below 1e-7 mm elsewhere. We require <= 1.3e-7 m at those two and
 // <= 2e-10 m elsewhere; the slope may jump by 2.5e-4 at -35/-26 and 1e-6 elsewhere.
 TEST(ProfileS1002, ContinuityAtBreakpoints) {
@@ -88,7 +89,7 @@ TEST(ProfileS1002, DomainAndEnds) {
   EXPECT_EQ(p.breakpoints().size(), 7u);
   const ProfileSample back = p.evaluate(p.lower());
   EXPECT_TRUE(std::isfinite(back.height) && std::isfinite(back.slope) &&
-              std::isfinite(back.curvature));
+              std::isfinite(back.second_derivative));
   // Outer tread 1:15.
   EXPECT_NEAR(p.evaluate(0.05).slope, -1.0 / 15.0, 1e-9);
 }

@@ -22,7 +22,7 @@ TEST(ProfileSpline, ReproducesParabola) {
   for (double t = -2.0; t <= 3.0; t += 0.01) {
     EXPECT_NEAR(s.evaluate(t).height, 0.5 * t * t - t + 2, 1e-12);
     EXPECT_NEAR(s.evaluate(t).slope, t - 1, 1e-11);
-    EXPECT_NEAR(s.evaluate(t).curvature, 1.0, 1e-10);
+    EXPECT_NEAR(s.evaluate(t).second_derivative, 1.0, 1e-10);
   }
 }
 
@@ -42,7 +42,7 @@ TEST(ProfileSpline, InterpolatesAndIsC2) {
     const ProfileSample r = s.evaluate(x[i] + 1e-12);
     EXPECT_NEAR(l.height, r.height, 1e-10);
     EXPECT_NEAR(l.slope, r.slope, 1e-9);
-    EXPECT_NEAR(l.curvature, r.curvature, 1e-8);
+    EXPECT_NEAR(l.second_derivative, r.second_derivative, 1e-8);
   }
   EXPECT_THROW(CubicSpline({0.0, 1.0}, {0.0, 1.0}), std::invalid_argument);
   EXPECT_THROW(CubicSpline({0.0, 1.0, 1.0}, {0.0, 1.0, 2.0}), std::invalid_argument);

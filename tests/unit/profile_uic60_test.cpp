@@ -11,7 +11,8 @@ namespace {
 
 constexpr double kMm = 1e-3;
 
-// The construction reproduces the published EN 60E1 centres (physics.md 2.1, given to 1e-6 mm).
+// The construction reproduces the published EN 60E1 centres (docs/profiles.md, "UIC60 / 60E1 rail head";
+// given to 1e-6 mm).
 TEST(ProfileUic60, En60E1Centres) {
   const Uic60Profile p(Uic60Variant::kEn60E1);
   const Uic60Geometry& g = p.geometry();
@@ -24,9 +25,9 @@ TEST(ProfileUic60, En60E1Centres) {
   EXPECT_NEAR(g.flank_v, -14.300 * kMm, 1e-6);
 }
 
-// The Manchester variant: R80 centre at 7.7 mm; physics.md 2.2 item 3 fitted the file and found
-// the R80 centre v = -80.1348 mm, R13 centre (23.0162, -14.9089) mm, junction at 10.5 mm (values
-// given to 1e-4 mm, so tolerance 1e-7 m).
+// The Manchester variant: R80 centre at 7.7 mm; a circle fit of the un-canted file (docs/profiles.md,
+// "The Manchester variant") found the R80 centre v = -80.1348 mm, R13 centre (23.0162, -14.9089) mm,
+// junction at 10.5 mm (values given to 1e-4 mm, so tolerance 1e-7 m).
 TEST(ProfileUic60, ManchesterCentres) {
   const Uic60Profile p(Uic60Variant::kManchester);
   const Uic60Geometry& g = p.geometry();
@@ -50,15 +51,15 @@ TEST(ProfileUic60, TangentAtEveryJunction) {
       const ProfileSample r = p.evaluate(b + 1e-13);
       const double h = 1e-13;
       EXPECT_NEAR(l.height, r.height, 1e-15 + 2 * h * std::fabs(l.slope)) << p.name() << " u=" << b;
-      EXPECT_NEAR(l.slope, r.slope, 1e-10 + 2 * h * std::max(std::fabs(l.curvature),
-                                                             std::fabs(r.curvature)))
+      EXPECT_NEAR(l.slope, r.slope, 1e-10 + 2 * h * std::max(std::fabs(l.second_derivative),
+                                                             std::fabs(r.second_derivative)))
           << p.name() << " at u = " << b;
-      EXPECT_GT(std::fabs(l.curvature - r.curvature), 1.0) << p.name() << " at u = " << b;
+      EXPECT_GT(std::fabs(l.second_derivative - r.second_derivative), 1.0) << p.name() << " at u = " << b;
     }
   }
 }
 
-// Half-width 35.981 mm at 14 mm below the crown (physics.md 2.1, to 1e-3 mm), symmetric head,
+// Half-width 35.981 mm at 14 mm below the crown (docs/profiles.md, to 1e-3 mm), symmetric head,
 // crown top at the origin, domain reaches at least 20 mm below the crown on both sides.
 TEST(ProfileUic60, HalfWidthSymmetryDomain) {
   const Uic60Profile p(Uic60Variant::kEn60E1);
@@ -80,7 +81,7 @@ TEST(ProfileUic60, HalfWidthSymmetryDomain) {
   EXPECT_DOUBLE_EQ(p.lower(), -p.upper());
 }
 
-// The MB variant differs from EN 60E1 by at most about 0.040 mm in height (physics.md 2.2), and
+// The MB variant differs from EN 60E1 by at most about 0.040 mm in height (docs/profiles.md), and
 // the difference is real (> 0.03 mm somewhere): a max over a 1 um grid of the common domain.
 TEST(ProfileUic60, ManchesterDiffersByAtMost40um) {
   const Uic60Profile en(Uic60Variant::kEn60E1);

@@ -3,9 +3,11 @@
 /// Kalker's creepage coefficients C11, C22, C23, C33 of the linear theory of rolling contact, for an
 /// elliptic contact of semi-axes a (rolling) and b (lateral) between bodies of identical material.
 ///
-/// Source: Kalker 1990, Table E.3, as printed in shared physics notes Part B 4.2 (values also in the
-/// public CONTACT code). C11, C22, C23 are verified there; C33 is of LOWER CONFIDENCE (unverified
-/// table; FASTSIM does not use it, only the linear theory's spin moment does).
+/// Source: Kalker 1990, Table E.3 (values also in the public CONTACT code); the table, its known
+/// printing error and the reference values at nu = 0.28 are described in docs/contact-mechanics.md,
+/// "Kalker's linear theory and coefficients". C11, C22, C23 are cross-checked against CONTACT; C33 is
+/// of LOWER CONFIDENCE (no second source; FASTSIM does not use it, only the linear theory's spin
+/// moment does).
 ///
 /// Interpolation (CONTACT's approach):
 ///  - the table parameter is g = a/b for a <= b and g = b/a for a > b; linear in g between rows;

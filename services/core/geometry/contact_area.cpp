@@ -52,6 +52,8 @@ double nearest_root(G&& g, double tolerance, double max_lambda) {
     if ((next.value > 0) != (v.value > 0) && next.value != 0) {
       auto value = [&](double l) { return g(l).value; };
       const RootResult r = brent_root(value, lambda, candidate, v.value, next.value, tolerance);
+      // NaN stands for a missing surface; a root not located to the tolerance is an error.
+      require_converged(r, "contact area: surface along the normal line");
       return std::isfinite(r.x) && !std::isnan(r.fx) ? r.x : kNaN;
     }
     lambda = candidate;

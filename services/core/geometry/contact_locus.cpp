@@ -48,7 +48,7 @@ LocusPoint ContactLocus::at(double s) const {
   const double q = std::clamp(-sigma_ * a12_ * f.slope / rho_, -1.0, 1.0);
   const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
   const double st = q * cos_beta_ - cq * sin_beta_, ct = cq * cos_beta_ + q * sin_beta_;
-  const double dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
+  const double dtheta = -sigma_ * a12_ * f.second_derivative / (rho_ * cq);
   const Eigen::Vector3d body(-radius * st, sigma_ * (taping_ + s), -radius * ct);
   const Eigen::Vector3d body_ds(-f.slope * st - radius * ct * dtheta, sigma_, -f.slope * ct + radius * st * dtheta);
   p.sin_theta = st;
@@ -104,7 +104,7 @@ ContactLocus::LeanPoint ContactLocus::lean_at(double s) const {
     const double cq = std::sqrt(std::max(1e-300, 1 - q * q));
     st = q * cos_beta_ - cq * sin_beta_;
     ct = cq * cos_beta_ + q * sin_beta_;
-    dtheta = -sigma_ * a12_ * f.curvature / (rho_ * cq);
+    dtheta = -sigma_ * a12_ * f.second_derivative / (rho_ * cq);
   }
   const double bx = -radius * st, by = sigma_ * (taping_ + s), bz = -radius * ct;
   const double dx = -f.slope * st - radius * ct * dtheta, dy = sigma_, dz = -f.slope * ct + radius * st * dtheta;

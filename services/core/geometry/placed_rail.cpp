@@ -51,7 +51,10 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
   {
     const double a = std::max(lo, u_top_ - du), b = std::min(hi, u_top_ + du);
     const double fa = dz_du(a), fb = dz_du(b);
-    if (fa > 0 && fb < 0) u_top_ = brent_root(dz_du, a, b, fa, fb, 1e-13).x;
+    if (fa > 0 && fb < 0) {
+      u_top_ = require_converged(brent_root(dz_du, a, b, fa, fb, 1e-13),
+                                 "rail profile '" + rail_->name() + "': highest point");
+    }
   }
   z0_ = -z_raw(u_top_);
 
@@ -74,7 +77,8 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
           << " m below its top on the gauge side: no gauge point";
       throw std::invalid_argument(msg.str());
     }
-    u_gauge = brent_root(depth, u_gauge_side, u_top_, depth(u_gauge_side), depth(u_top_), 1e-13).x;
+    u_gauge = require_converged(brent_root(depth, u_gauge_side, u_top_, depth(u_gauge_side), depth(u_top_), 1e-13),
+                                "rail profile '" + rail_->name() + "': gauge point");
   }
   double inner = u_gauge * cos_ - rail_->evaluate(u_gauge).height * sin_;
   for (int i = 0; i <= 200; ++i) {
@@ -143,11 +147,11 @@ bool PlacedRail::height_and_slope_at(double y, double& z, double& slope) const {
   const ProfileSample p = rail_->evaluate(u);
   const double inverse_stretch = 1.0 / (cos_ - p.slope * sin_);
   const double du = -(local_y(u, p.height) - ly) * inverse_stretch;
-  const double v1 = p.slope + p.curvature * du;
-  const double v = p.height + du * (p.slope + 0.5 * p.curvature * du);
+  const double v1 = p.slope + p.second_derivative * du;
+  const double v = p.height + du * (p.slope + 0.5 * p.second_derivative * du);
   z = local_z(u + du, v);
   // 1/(cos - v1 sin) to first order in du (v1 - p.slope is of order 1e-9): saves a division.
-  const double stretch_correction = 1.0 + p.curvature * du * sin_ * inverse_stretch;
+  const double stretch_correction = 1.0 + p.second_derivative * du * sin_ * inverse_stretch;
   slope = side_sign_ * (sin_ + v1 * cos_) * inverse_stretch * stretch_correction;
   return true;
 }
@@ -191,13 +195,13 @@ RailSample PlacedRail::at(double y) const {
   r.valid = true;
   r.z = local_z(r.u, p.height);
   r.slope = side_sign_ * (sin_ + p.slope * cos_) / stretch;
-  r.d2 = p.curvature / (stretch * stretch * stretch);
+  r.d2 = p.second_derivative / (stretch * stretch * stretch);
   return r;
 }
 
 double PlacedRail::curvature_at(double u) const {
   const ProfileSample p = rail_->evaluate(u);
-  return -p.curvature / std::pow(1 + p.slope * p.slope, 1.5);
+  return -p.second_derivative / std::pow(1 + p.slope * p.slope, 1.5);
 }
 
 }  // namespace wrc

@@ -52,7 +52,7 @@ ContactPoint make_contact_point(const ContactLocus& locus, double s, bool is_min
   c.contact_angle = std::atan(sigma * p.rail.slope);
   c.rolling_radius = p.radius;
   const double w = 1 + f.slope * f.slope;
-  c.wheel_curvature_lateral = -f.curvature / (w * std::sqrt(w));
+  c.wheel_curvature_lateral = -f.second_derivative / (w * std::sqrt(w));
   c.wheel_curvature_rolling = 1.0 / (p.radius * std::sqrt(w));
   c.rail_curvature_lateral = locus.rail().curvature_at(p.rail.u);
   c.rail_curvature_rolling = 0.0;
@@ -182,6 +182,9 @@ std::vector<ContactPoint> roots_of(const ContactLocus& locus, const std::vector<
     const bool minimum = fa < fb;
     if (only_minima && !minimum) return;
     const RootResult r = brent_root(slope, a, b, fa, fb, search.tolerance);
+    // A zero not located to the tolerance would be a potential point in the wrong place or a
+    // missed one: the search fails loudly rather than return an uncertified set.
+    require_converged(r, "potential points: zero of d(distance)/ds");
     // With yaw, d(distance)/ds jumps at wheel curvature breakpoints (theta' follows F''); a sign
     // change across such a jump is no zero. A true root located to the tolerance leaves
     // |slope| <= tolerance * max|d2 distance/ds2|, far below 1e-6.
@@ -291,6 +294,9 @@ std::optional<LocusPoint> track_minimum(const ContactLocus& locus, double s_gues
   // The bracket may hold several roots after growing; Brent returns one of them. Accept it only if
   // the distance is a local minimum there.
   const RootResult r = brent_root(slope, a, b, fa, fb, tolerance);
+  // Not located to the tolerance: no tracked minimum (RigidWheelsetSolver then drops this seed,
+  // re-scans when none is left, and its final certifying scan finds any minimum missed).
+  if (!r.converged) return std::nullopt;
   const double step = 1e-7;
   const double left = slope(r.x - step), right = slope(r.x + step);
   if (!(left <= 0 && right >= 0)) return std::nullopt;

@@ -24,7 +24,7 @@ WheelsetGeometry::WheelsetGeometry(ProfilePtr wheel, ProfilePtr rail, const Trac
       wheel_envelope_(wheel_->lower(), wheel_->upper(), 1e-3, 32, 1.25, [this](double s, double& d1, double& d2) {
         const ProfileSample f = wheel_->evaluate(s);
         d1 = f.slope;
-        d2 = f.curvature;
+        d2 = f.second_derivative;
       }) {
   // Flange apex: the highest point of the profile on the flange side (s <= 0).
   const double lo = wheel_->lower(), hi = std::min(0.0, wheel_->upper());

@@ -45,7 +45,7 @@ LoadDivision divide_load(double load, const std::vector<DivisionPoint>& points) 
   const double lo = c.gap;
   const RootResult root =
       brent_root([&](double d) { return total(d) - load; }, lo, d1, -load, total(d1) - load, 1e-14 * d1, 200);
-  out.approach = root.x;
+  out.approach = require_converged(root, "load division: common approach for a load of " + std::to_string(load) + " N");
 
   double sum = 0;
   for (size_t k = 0; k < points.size(); ++k) {

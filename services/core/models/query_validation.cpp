@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "core/geometry/wheelset_geometry.hpp"
 
@@ -13,6 +14,12 @@ namespace {
   std::ostringstream msg;
   msg << "contact query: " << field << " = " << value << " " << rule;
   throw std::invalid_argument(msg.str());
+}
+
+std::string text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
 }
 
 void require_finite(double value, const char* field) {
@@ -34,7 +41,7 @@ void validate_contact_query(const ContactQuery& q) {
   require_finite(q.roll_dot, "roll_dot [rad/s]");
   require_finite(q.yaw_dot, "yaw_dot [rad/s]");
   require_finite(q.spin_rate, "spin_rate [rad/s]");
-  if (!(q.speed > 0.0) || !std::isfinite(q.speed)) reject("speed [m/s]", q.speed, "must be positive and finite");
+  if (!(q.speed > 0.0 && q.speed <= kMaxSpeed)) reject("speed [m/s]", q.speed, ("must be in (0, " + text(kMaxSpeed) + "]").c_str());
   if (!(q.normal_load[0] >= 0.0) || !std::isfinite(q.normal_load[0]))
     reject("normal_load[0] (left) [N]", q.normal_load[0], "must be non-negative and finite");
   if (!(q.normal_load[1] >= 0.0) || !std::isfinite(q.normal_load[1]))
@@ -42,16 +49,19 @@ void validate_contact_query(const ContactQuery& q) {
   if (q.formulation != ContactFormulation::kRigid && q.formulation != ContactFormulation::kElastic)
     reject("formulation", static_cast<double>(q.formulation), "is not kRigid or kElastic");
   const ContactMaterial& m = q.material;
-  if (!(m.shear_modulus > 0.0) || !std::isfinite(m.shear_modulus))
-    reject("material.shear_modulus [Pa]", m.shear_modulus, "must be positive and finite");
-  if (!(m.poisson_ratio > 0.0 && m.poisson_ratio < 0.5))
-    reject("material.poisson_ratio [-]", m.poisson_ratio, "must be in (0, 0.5)");
-  if (!(m.friction >= 0.0) || !std::isfinite(m.friction))
-    reject("material.friction [-]", m.friction, "must be non-negative and finite");
-  if (q.fastsim_elements < kMinFastsimGrid || q.fastsim_elements > kMaxFastsimGrid)
-    reject("fastsim_elements", q.fastsim_elements, "must be in 2..400");
-  if (q.fastsim_strips < kMinFastsimGrid || q.fastsim_strips > kMaxFastsimGrid)
-    reject("fastsim_strips", q.fastsim_strips, "must be in 2..400");
+  if (!(m.shear_modulus > 0.0 && m.shear_modulus <= kMaxShearModulus))
+    reject("material.shear_modulus [Pa]", m.shear_modulus, ("must be in (0, " + text(kMaxShearModulus) + "]").c_str());
+  if (!(m.poisson_ratio > kMinPoissonRatio && m.poisson_ratio < kMaxPoissonRatio))
+    reject("material.poisson_ratio [-]", m.poisson_ratio,
+           ("must be in (" + text(kMinPoissonRatio) + ", " + text(kMaxPoissonRatio) + ")").c_str());
+  if (!(m.friction >= 0.0 && m.friction <= kMaxFriction))
+    reject("material.friction [-]", m.friction, ("must be in [0, " + text(kMaxFriction) + "]").c_str());
+  auto check_grid = [](const char* field, int count) {
+    if (count >= kMinFastsimGrid && count <= kMaxFastsimGrid) return;
+    reject(field, count, ("must be in " + std::to_string(kMinFastsimGrid) + ".." + std::to_string(kMaxFastsimGrid)).c_str());
+  };
+  check_grid("fastsim_elements", q.fastsim_elements);
+  check_grid("fastsim_strips", q.fastsim_strips);
 }
 
 }  // namespace wrc

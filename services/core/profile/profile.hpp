@@ -1,7 +1,8 @@
 #pragma once
 /// @file
-/// The profile abstraction: a wheel or rail cross-section as a C2 function of one lateral
-/// coordinate, in SI units (metres).
+/// The profile abstraction: a wheel or rail cross-section as a piecewise smooth (C1, C2 inside each
+/// piece) function of one lateral coordinate, in SI units (metres). Coordinates and signs:
+/// docs/conventions.md.
 ///
 /// Wheel profiles: lateral coordinate s [m] from the taping line (70 mm from the inner face),
 /// positive towards the field side (flange at s < 0); height F(s) [m] = radius above the nominal
@@ -23,13 +24,21 @@ enum class ProfileSide { kWheel, kRail };
 
 /// Height and its first two derivatives at one lateral coordinate.
 struct ProfileSample {
-  double height = 0;     ///< F(s) or v(u) [m]
-  double slope = 0;      ///< dF/ds or dv/du [-]
-  double curvature = 0;  ///< d2F/ds2 or d2v/du2 [1/m] (second derivative, not the geometric curvature)
+  double height = 0;             ///< F(s) or v(u) [m]
+  double slope = 0;              ///< dF/ds or dv/du [-]
+  /// d2F/ds2 or d2v/du2 [1/m]: the plain second derivative, not the geometric curvature
+  /// -F'' / (1 + F'^2)^{3/2} of ContactPoint (docs/conventions.md, "Profile coordinates").
+  double second_derivative = 0;
 };
 
-/// A wheel or rail profile function, continuous with continuous first and second derivatives
-/// inside [lower(), upper()].
+/// A wheel or rail profile function on [lower(), upper()]. Smoothness of the implementations:
+/// the height and slope are continuous (C1) over the whole domain, and inside each piece of its
+/// definition (between consecutive breakpoints()) the function is C2, usually analytic. At a
+/// breakpoint the second derivative may jump: arcs, lines and polynomials joined tangentially
+/// (UIC60, S1002) meet with equal slope but different curvature. Interpolating file splines are
+/// C2 everywhere and list no breakpoints; cones and circular heads are a single piece. The one
+/// exception to C1 is the published S1002 data, whose height and slope jump very slightly at two
+/// section joints (s1002.hpp, docs/profiles.md).
 class Profile {
  public:
   virtual ~Profile() = default;
@@ -42,8 +51,9 @@ class Profile {
   virtual double lower() const = 0;
   virtual double upper() const = 0;
 
-  /// Lateral coordinates [m] where the definition changes piece (arc ends, polynomial ends,
-  /// spline knots are not listed): root scanners use them as extra sample points.
+  /// Lateral coordinates [m] where the definition changes piece (arc ends, polynomial ends; the
+  /// knots of an interpolating spline are not listed, it is C2 across them): the second
+  /// derivative may jump there, so root scanners use them as extra sample points.
   virtual std::vector<double> breakpoints() const { return {}; }
 
   /// Wheel or rail.

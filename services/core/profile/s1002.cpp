@@ -6,7 +6,7 @@
 namespace wrc {
 namespace {
 
-// Section boundaries [mm] from the field side to the flange back (physics.md Part A 1.1).
+// Section boundaries [mm] from the field side to the flange back (docs/profiles.md, "S1002 wheel").
 constexpr double kSAB = 32.15796;
 constexpr double kSBC = -26.0;
 constexpr double kSCD = -35.0;
@@ -78,7 +78,7 @@ ProfileSample s1002_evaluate_mm(double s) {
 
 ProfileSample S1002Profile::evaluate(double s) const {
   const ProfileSample mm = s1002_evaluate_mm(s * 1e3);
-  return {mm.height * 1e-3, mm.slope, mm.curvature * 1e3};
+  return {mm.height * 1e-3, mm.slope, mm.second_derivative * 1e3};
 }
 
 double S1002Profile::lower() const { return kSLow * 1e-3; }

@@ -16,7 +16,8 @@ enum class Uic60Variant {
 };
 
 /// Geometry of the symmetric UIC60 head in rail-local coordinates [m]: u lateral (positive to the
-/// field side), v up, origin at the crown top. All arcs are mutually tangent by construction.
+/// field side), v up, origin at the crown top. Neighbouring pieces are tangent by construction
+/// (equal slope at each joint), which makes the head C1 but not C2.
 struct Uic60Geometry {
   double crown_radius = 0;     ///< R300 [m], centre (0, -crown_radius)
   double shoulder_radius = 0;  ///< R80 [m]
@@ -41,8 +42,12 @@ struct Uic60Geometry {
 Uic60Geometry make_uic60_geometry(double shoulder_centre_u, double depth);
 
 /// UIC60 rail head as a function v(u) [m]. Domain: the flanks are continued down to 25 mm below the
-/// crown on both sides (|u| <= 36.54 mm). The head is symmetric. The function is C1 everywhere
-/// (tangent arcs) and C-infinity between the six breakpoints; the second derivative jumps there.
+/// crown on both sides (|u| <= 36.54 mm). The head is symmetric. Smoothness: C1 everywhere (the
+/// arcs and the flank are joined tangentially, so height and slope are continuous), C2 and indeed
+/// analytic inside each piece, but NOT C2 at the six joints that breakpoints() lists: there the
+/// second derivative jumps with the curvature (1/R300 to 1/R80 at the crown end, 1/R80 to 1/R13,
+/// 1/R13 to 0 where the flank begins). Construction and sources: docs/profiles.md, "UIC60 / 60E1
+/// rail head".
 class Uic60Profile final : public Profile {
  public:
   /// Builds the EN 60E1 construction or the Manchester variant.

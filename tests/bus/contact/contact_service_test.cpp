@@ -28,56 +28,61 @@ namespace {
 constexpr double kBuildDeadline = 240.0;  // [s] until a started contact service is READY
 using ContactClient = RequestClient<wrc::contact_query_t, wrc::contact_reply_t>;
 
-wrc::wheelset_configuration_t configuration(double y, double roll, double yaw, double z) {
-  wrc::wheelset_configuration_t c{};
-  c.y = y;
-  c.roll = roll;
-  c.yaw = yaw;
-  c.z = z;
-  c.y_dot = 0.01;
-  c.yaw_dot = -0.002;
-  c.spin_rate = 30.0 / 0.46;
-  c.normal_load_left = 154715.0 / 2.0 + 3000.0;
-  c.normal_load_right = 154715.0 / 2.0 - 3000.0;
-  return c;
-}
-
-wrc::contact_query_t make_query(const std::string& model, std::vector<wrc::wheelset_configuration_t> configs,
-                                std::int8_t formulation = wrc::contact_query_t::RIGID) {
-  wrc::contact_query_t q{};
-  q.model = model;
-  q.formulation = formulation;
-  q.shear_modulus = 8.2e10;
-  q.poisson_ratio = 0.28;
-  q.friction = 0.3;
-  q.fastsim_nx = 20;
-  q.fastsim_ny = 20;
+// The expectation comes first: the library query of one test configuration, in which every field
+// has a value of its own (no two rates, loads or FASTSIM counts equal, none zero), so a message
+// mapping that drops or swaps fields cannot reproduce the in-process result.
+ContactQuery library_query(double y, double roll, double yaw, double z,
+                           ContactFormulation formulation = ContactFormulation::kRigid) {
+  ContactQuery q;
+  q.pose.y = y;
+  q.pose.z = z;
+  q.pose.roll = roll;
+  q.pose.yaw = yaw;
+  q.y_dot = 0.01;
+  q.z_dot = -0.004;
+  q.roll_dot = 0.0017;
+  q.yaw_dot = -0.002;
   q.speed = 30.0;
-  q.num_configurations = static_cast<std::int32_t>(configs.size());
-  q.configurations = std::move(configs);
+  q.spin_rate = 30.0 / 0.46;
+  q.normal_load = {154715.0 / 2.0 + 3000.0, 154715.0 / 2.0 - 3000.0};
+  q.formulation = formulation;
+  q.material = {8.2e10, 0.28, 0.3};
+  q.fastsim_elements = 24;
+  q.fastsim_strips = 16;
   return q;
 }
 
-// The library query built field by field from the message (independently of the service's adapter).
-ContactQuery library_query(const wrc::contact_query_t& q, const wrc::wheelset_configuration_t& c) {
-  ContactQuery out;
-  out.pose.y = c.y;
-  out.pose.z = c.z;
-  out.pose.roll = c.roll;
-  out.pose.yaw = c.yaw;
-  out.y_dot = c.y_dot;
-  out.z_dot = c.z_dot;
-  out.roll_dot = c.roll_dot;
-  out.yaw_dot = c.yaw_dot;
-  out.spin_rate = c.spin_rate;
-  out.speed = q.speed;
-  out.normal_load = {c.normal_load_left, c.normal_load_right};
-  out.formulation = q.formulation == wrc::contact_query_t::ELASTIC ? ContactFormulation::kElastic
-                                                                   : ContactFormulation::kRigid;
-  out.material = {q.shear_modulus, q.poisson_ratio, q.friction};
-  out.fastsim_elements = q.fastsim_nx;
-  out.fastsim_strips = q.fastsim_ny;
-  return out;
+// The message of a batch, written by hand from the library queries (library -> message, the
+// opposite direction of the adapter under test). Batch-wide fields come from the first query.
+wrc::contact_query_t make_query(const std::string& model, const std::vector<ContactQuery>& batch) {
+  const ContactQuery& first = batch.at(0);
+  wrc::contact_query_t q{};
+  q.model = model;
+  q.formulation = first.formulation == ContactFormulation::kElastic ? wrc::contact_query_t::ELASTIC
+                                                                    : wrc::contact_query_t::RIGID;
+  q.shear_modulus = first.material.shear_modulus;
+  q.poisson_ratio = first.material.poisson_ratio;
+  q.friction = first.material.friction;
+  q.fastsim_nx = first.fastsim_elements;
+  q.fastsim_ny = first.fastsim_strips;
+  q.speed = first.speed;
+  q.num_configurations = static_cast<std::int32_t>(batch.size());
+  for (const ContactQuery& l : batch) {
+    wrc::wheelset_configuration_t c{};
+    c.y = l.pose.y;
+    c.z = l.pose.z;
+    c.roll = l.pose.roll;
+    c.yaw = l.pose.yaw;
+    c.y_dot = l.y_dot;
+    c.z_dot = l.z_dot;
+    c.roll_dot = l.roll_dot;
+    c.yaw_dot = l.yaw_dot;
+    c.spin_rate = l.spin_rate;
+    c.normal_load_left = l.normal_load[0];
+    c.normal_load_right = l.normal_load[1];
+    q.configurations.push_back(c);
+  }
+  return q;
 }
 
 void expect_close(double service, double local, const std::string& what) {
@@ -140,18 +145,22 @@ TEST_P(EveryModel, AnswersLikeTheInProcessModel) {
   EXPECT_EQ(heartbeat.model_hash.size(), model == "interp" ? 64u : 0u) << heartbeat.model_hash;
 
   // A rigid batch (centred, shifted both ways, yawed, rolled), then an elastic one.
-  auto rigid = make_query(model, {configuration(0.0, 0.0, 0.0, 0.46), configuration(0.003, 0.0, 0.001, 0.46),
-                                  configuration(-0.004, 0.0005, -0.002, 0.46), configuration(0.006, 0.0, 0.0, 0.46)});
-  auto elastic = make_query(model, {configuration(0.0, 0.0, 0.0, 0.0), configuration(0.002, 0.0, 0.0, 0.0)},
-                            wrc::contact_query_t::ELASTIC);
-  for (auto& c : elastic.configurations) {  // lower the touching wheelset by 0.1 mm
-    WheelsetPose pose{c.y, 0.46, c.roll, c.yaw, 0.0};
+  const std::vector<ContactQuery> rigid_batch = {library_query(0.0, 0.0, 0.0, 0.46), library_query(0.003, 0.0, 0.001, 0.46),
+                                                 library_query(-0.004, 0.0005, -0.002, 0.46),
+                                                 library_query(0.006, 0.0, 0.0, 0.46)};
+  std::vector<ContactQuery> elastic_batch = {library_query(0.0, 0.0, 0.0, 0.0, ContactFormulation::kElastic),
+                                             library_query(0.002, 0.0, 0.0, 0.0, ContactFormulation::kElastic)};
+  for (ContactQuery& c : elastic_batch) {  // lower the touching wheelset by 0.1 mm
+    WheelsetPose pose{c.pose.y, 0.46, c.pose.roll, c.pose.yaw, 0.0};
     double gap = 1e300;
     for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) gap = std::min(gap, geometry->common_point(side, pose)->distance);
-    c.z = 0.46 - gap - 1e-4;
+    c.pose.z = 0.46 - gap - 1e-4;
   }
+  const auto rigid = make_query(model, rigid_batch);
+  const auto elastic = make_query(model, elastic_batch);
   int patches_compared = 0;
   for (auto* query : {&rigid, &elastic}) {
+    const std::vector<ContactQuery>& batch = query == &rigid ? rigid_batch : elastic_batch;
     const wrc::contact_reply_t reply = ask(model, *query);
     EXPECT_EQ(reply.model, model);
     EXPECT_EQ(reply.instance, "t");
@@ -165,7 +174,7 @@ TEST_P(EveryModel, AnswersLikeTheInProcessModel) {
       ContactResult want;
       std::int8_t want_status = wrc::contact_reply_t::OK;
       try {
-        want = local->evaluate(library_query(*query, query->configurations[static_cast<std::size_t>(i)]));
+        want = local->evaluate(batch[static_cast<std::size_t>(i)]);
       } catch (const OutsideModelError&) {
         want_status = wrc::contact_reply_t::OUTSIDE_MODEL;
       } catch (const ContactConfigurationError&) {
@@ -235,7 +244,7 @@ TEST_P(EveryModel, FlangeClimbIsImpossibleConfiguration) {
   const std::string log = temp_path("contactd.log");
   auto service = start_contactd(model, "i", log);
   ASSERT_TRUE(wait_ready_while(model, "i", *service)) << read_text(log);
-  const auto reply = ask(model, make_query(model, {configuration(0.001, 0.0, 0.0, 0.46), configuration(0.05, 0.0, 0.0, 0.46)}));
+  const auto reply = ask(model, make_query(model, {library_query(0.001, 0.0, 0.0, 0.46), library_query(0.05, 0.0, 0.0, 0.46)}));
   const std::int8_t expected =
       model == "interp" ? wrc::contact_reply_t::OUTSIDE_MODEL : wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION;
   EXPECT_EQ(reply.status, expected) << reply.message;
@@ -276,7 +285,7 @@ TEST_F(ContactServiceTest, InvalidQueriesGetBadRequestNamingTheField) {
       {[&](auto& q) { q.geometry_key = "0123456789abcdef"; }, "geometry_key = '0123456789abcdef'"},
   };
   for (const auto& c : cases) {
-    auto q = make_query("onepoint", {configuration(0.0, 0.0, 0.0, 0.46), configuration(0.001, 0.0, 0.0, 0.46)});
+    auto q = make_query("onepoint", {library_query(0.0, 0.0, 0.0, 0.46), library_query(0.001, 0.0, 0.0, 0.46)});
     c.spoil(q);
     const auto reply = ask("onepoint", q);
     EXPECT_EQ(reply.status, wrc::contact_reply_t::BAD_REQUEST) << c.expected;
@@ -284,7 +293,7 @@ TEST_F(ContactServiceTest, InvalidQueriesGetBadRequestNamingTheField) {
     EXPECT_EQ(reply.num_configurations, 0);
   }
   // still answering
-  EXPECT_EQ(ask("onepoint", make_query("onepoint", {configuration(0.0, 0.0, 0.0, 0.46)})).status, wrc::contact_reply_t::OK);
+  EXPECT_EQ(ask("onepoint", make_query("onepoint", {library_query(0.0, 0.0, 0.0, 0.46)})).status, wrc::contact_reply_t::OK);
 }
 
 // Wrong type, truncated and garbage bytes on CONTACT_QUERY.onepoint are rejected and counted (in
@@ -296,7 +305,7 @@ TEST_F(ContactServiceTest, MalformedMessagesRejectedAndCounted) {
   const std::string channel = names_.name(channel::kContactQuery, "onepoint");
   wrc::heartbeat_t other_type{};
   lcm_->publish(channel, &other_type);
-  auto q = make_query("onepoint", {configuration(0.0, 0.0, 0.0, 0.46)});
+  auto q = make_query("onepoint", {library_query(0.0, 0.0, 0.0, 0.46)});
   q.request_id = 99;
   q.reply_channel = "CONTACT_REPLY.nobody";
   std::vector<unsigned char> bytes(static_cast<std::size_t>(q.getEncodedSize()));
@@ -305,7 +314,7 @@ TEST_F(ContactServiceTest, MalformedMessagesRejectedAndCounted) {
   const unsigned char garbage[] = {0xde, 0xad, 0xbe, 0xef};
   lcm_->publish(channel, garbage, sizeof garbage);
 
-  const auto reply = ask("onepoint", make_query("onepoint", {configuration(0.001, 0.0, 0.0, 0.46)}));
+  const auto reply = ask("onepoint", make_query("onepoint", {library_query(0.001, 0.0, 0.0, 0.46)}));
   EXPECT_EQ(reply.status, wrc::contact_reply_t::OK) << reply.message;
   ASSERT_TRUE(handle_until(
       [&] {
@@ -345,7 +354,7 @@ TEST_F(ContactServiceTest, OneAnswerPerQueryWithTwoInstances) {
   for (const std::string instance : {"b", "a", ""}) {
     for (int i = 0; i < 5; ++i) {
       counter.instances.clear();
-      auto q = make_query("onepoint", {configuration(0.0005 * i, 0.0, 0.0, 0.46)});
+      auto q = make_query("onepoint", {library_query(0.0005 * i, 0.0, 0.0, 0.46)});
       q.request_id = 100 + i + (instance.empty() ? 50 : instance == "a" ? 20 : 0);
       q.reply_channel = reply_channel;
       q.instance = instance;
@@ -386,8 +395,9 @@ TEST_F(ContactServiceTest, SplineServiceGetsItsModelFromALateGeometryService) {
   const std::string hash = model->data_hash();
   EXPECT_EQ(monitor_->find("spline", "s", monotonic_seconds())->last.model_hash, hash);
 
-  const auto query = make_query("spline", {configuration(0.003, 0.0002, 0.001, 0.46), configuration(-0.0045, -0.0004, 0.0, 0.46),
-                                           configuration(0.0065, 0.0, 0.0, 0.46)});
+  const std::vector<ContactQuery> batch = {library_query(0.003, 0.0002, 0.001, 0.46),
+                                          library_query(-0.0045, -0.0004, 0.0, 0.46), library_query(0.0065, 0.0, 0.0, 0.46)};
+  const auto query = make_query("spline", batch);
   const auto reply = ask("spline", query);
   EXPECT_EQ(reply.model_hash, hash);
   ASSERT_EQ(reply.num_configurations, 3);
@@ -395,7 +405,7 @@ TEST_F(ContactServiceTest, SplineServiceGetsItsModelFromALateGeometryService) {
                                         ContactModelOptions{}, ContactModelData{model});
   for (int i = 0; i < 2; ++i) {
     ASSERT_EQ(reply.results[static_cast<size_t>(i)].status, wrc::contact_reply_t::OK) << reply.message;
-    const ContactResult want = local->evaluate(library_query(query, query.configurations[static_cast<size_t>(i)]));
+    const ContactResult want = local->evaluate(batch[static_cast<size_t>(i)]);
     const auto& got = reply.results[static_cast<size_t>(i)];
     ASSERT_EQ(got.patches.size(), want.patches.size());
     for (size_t k = 0; k < want.patches.size(); ++k) {

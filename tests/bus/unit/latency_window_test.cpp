@@ -1,6 +1,9 @@
 // Latency window: mean, 95th percentile and maximum over the most recent samples only.
 #include <gtest/gtest.h>
 
+#include <vector>
+
+#include "bus/percentile.hpp"
 #include "bus/service_load.hpp"
 
 namespace {
@@ -16,6 +19,23 @@ TEST(LatencyWindow, Statistics) {
   EXPECT_NEAR(load.latency_mean, 50.5e-3, 1e-12);
   EXPECT_NEAR(load.latency_p95, 95e-3, 1e-12);
   EXPECT_NEAR(load.latency_max, 100e-3, 1e-12);
+}
+
+// The window's p95 is bus::percentile(samples, 0.95), the one p95 rule (rank round(0.95 (n - 1))).
+// With 13 samples 1..13 ms that is rank round(11.4) = 11, i.e. 12 ms; a nearest-rank rule
+// (ceil(0.95 n) - 1 = 12) would give 13 ms, so this case tells the two apart.
+TEST(LatencyWindow, P95IsTheSharedPercentile) {
+  LatencyWindow window(1000);
+  std::vector<double> samples;
+  for (int i = 13; i >= 1; --i) {  // added in descending order: the window must sort
+    window.add(i * 1e-3);
+    samples.push_back(i * 1e-3);
+  }
+  ServiceLoad load;
+  window.summarise(load);
+  EXPECT_DOUBLE_EQ(load.latency_p95, wrc::bus::percentile(samples, 0.95));
+  EXPECT_NEAR(load.latency_p95, 12e-3, 1e-15);
+  EXPECT_NEAR(load.latency_max, 13e-3, 1e-15);
 }
 
 // Only the last `capacity` samples count.

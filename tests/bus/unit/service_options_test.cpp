@@ -24,15 +24,25 @@ TEST(ServiceOptions, ParsesAndPassesThrough) {
   EXPECT_TRUE(parse({"--help"}).help);
 }
 
-// Bad values are refused and named.
-TEST(ServiceOptions, RefusesBadValues) {
+// Expects parse(args) to throw std::invalid_argument whose message contains `expected`.
+void expect_refused(std::vector<const char*> args, const std::string& expected) {
   try {
-    parse({"--heartbeat-period", "-1"});
-    FAIL();
+    parse(std::move(args));
+    ADD_FAILURE() << "accepted, expected '" << expected << "'";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("'-1'"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
   }
-  EXPECT_THROW(parse({"--instance", "a b"}), std::invalid_argument);
-  EXPECT_THROW(parse({"--lcm-url"}), std::invalid_argument);
+}
+
+// Bad values are refused with the option, the value and the rule named. Options that are not the
+// services' own are not refused here: they pass through to the service (ContactdOptions names an
+// unknown one, contactd_options_test.cpp).
+TEST(ServiceOptions, RefusesBadValues) {
+  expect_refused({"--heartbeat-period", "-1"}, "--heartbeat-period: '-1' is not a number in (0, 60] s");
+  expect_refused({"--heartbeat-period=61"}, "--heartbeat-period: '61' is not a number in (0, 60] s");
+  expect_refused({"--heartbeat-period", "fast"}, "--heartbeat-period: 'fast' is not a number");
+  expect_refused({"--instance", "a b"}, "--instance: 'a b' must be 1-24 letters, digits, '_' or '-'");
+  expect_refused({"--instance", "abcdefghijklmnopqrstuvwxy"}, "--instance: 'abcdefghijklmnopqrstuvwxy' must be 1-24");
+  expect_refused({"--lcm-url"}, "option --lcm-url needs a value");
 }
 }  // namespace

@@ -1,0 +1,58 @@
+/// @file
+/// wrc-contactd's own options (services/contactd/contactd_options.hpp): a full command line lands
+/// in the model and geometry fields; a bad value, a missing value, an unknown option or model and
+/// a missing --model are refused with one line naming the option and the value.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "contactd/contactd_options.hpp"
+
+namespace wrc::contactd {
+namespace {
+
+// Expects parse(args) to throw std::invalid_argument whose message contains `expected`.
+void expect_refused(const std::vector<std::string>& args, const std::string& expected) {
+  try {
+    ContactdOptions::parse(args);
+    ADD_FAILURE() << "accepted, expected '" << expected << "'";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
+// Every option lands in its own field (distinct values; both `--x v` and `--x=v`).
+TEST(ContactdOptions, ParsesEveryOption) {
+  const ContactdOptions o = ContactdOptions::parse({"--model", "interp", "--wheel=conic:0.05", "--rail", "circle:0.1",
+                                                    "--gauge", "1.5", "--gauge-depth=0.012", "--flange-back", "1.36",
+                                                    "--taping-line-offset", "0.071", "--r0", "0.45",
+                                                    "--inclination", "1:20"});
+  EXPECT_EQ(o.model, "interp");
+  EXPECT_EQ(o.geometry.wheel, "conic:0.05");
+  EXPECT_EQ(o.geometry.rail, "circle:0.1");
+  EXPECT_DOUBLE_EQ(o.geometry.track.gauge, 1.5);
+  EXPECT_DOUBLE_EQ(o.geometry.track.gauge_depth, 0.012);
+  EXPECT_DOUBLE_EQ(o.geometry.track.flange_back_spacing, 1.36);
+  EXPECT_DOUBLE_EQ(o.geometry.track.taping_line_offset, 0.071);
+  EXPECT_DOUBLE_EQ(o.geometry.track.nominal_radius, 0.45);
+  EXPECT_NEAR(o.geometry.track.inclination, std::atan(1.0 / 20.0), 1e-6);  // 1:20 as an angle [rad]
+}
+
+TEST(ContactdOptions, RefusesNamingOptionAndValue) {
+  expect_refused({"--model", "onepoint", "--gauge", "3"}, "--gauge: '3' is not a number in [0.500000, 2.500000]");
+  expect_refused({"--model", "onepoint", "--r0", "abc"}, "--r0: 'abc' is not a number in [0.100000, 1.500000]");
+  expect_refused({"--model", "onepoint", "--gauge-depth=-0.001"}, "--gauge-depth: '-0.001' is not a number");
+  expect_refused({"--model", "onepoint", "--frobnicate", "1"}, "unknown option '--frobnicate' (see --help)");
+  expect_refused({"--model", "onepoint", "stray"}, "unexpected argument 'stray'");
+  expect_refused({"--model", "onepoint", "--gauge"}, "option --gauge needs a value");
+  expect_refused({"--model", "twopoint"}, "--model: ");
+  expect_refused({"--model", "twopoint"}, "twopoint");
+  expect_refused({"--model", "onepoint", "--inclination", "1:0"}, "--inclination: ");
+  expect_refused({"--gauge", "1.435"}, "--model is required (onepoint, interp, multipoint, spline)");
+}
+
+}  // namespace
+}  // namespace wrc::contactd

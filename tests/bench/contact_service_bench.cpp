@@ -13,7 +13,7 @@
 // Every iteration runs the measurements in a new random order (fixed seed): a process that has
 // just answered is warmer (caches, scheduler) than one that has waited, and no round trip may
 // profit from always coming right after its own process's last answer.
-// Goal (issue 4): median(service) <= median(bare) + median(in_process) + 0.1 median(bare), checked
+// Goal: median(service) <= median(bare) + median(in_process) + 0.1 median(bare), checked
 // against both bare floors (goal_ping, goal_contact; 1 = met). PerModel/<i> measures each of the
 // four services against bare_contact the same way (service_over_bare: the spline model's goal is
 // at most 1.2; wrc-geometryd is started for it with a cache directory of its own).
@@ -322,7 +322,7 @@ void run_shuffled(benchmark::State& state, const std::vector<std::function<void(
   }
 }
 
-// The one-point service against every floor (issue 4's goal).
+// The one-point service against every floor (the goal above).
 void Interleaved(benchmark::State& state) {
   ModelService* started = started_service(state, 0);
   if (started == nullptr) return;

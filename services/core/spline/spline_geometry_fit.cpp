@@ -57,7 +57,7 @@ void for_each_line(int lines, int threads, Work work, const FitProgress& progres
   for (int t = 0; t < std::max(1, threads); ++t) pool.emplace_back(worker);
   while (progress && done.load() < lines) {
     progress(offset + done.load(), total, stage);
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   for (std::thread& t : pool) t.join();
   if (progress) progress(offset + lines, total, stage);

@@ -61,7 +61,6 @@ int run_creep(const std::vector<std::string>& args) {
     std::cout << o.help();
     return 0;
   }
-  if (!o.positional().empty()) throw UsageError("unexpected argument '" + o.positional().front() + "'");
   CreepPatch patch;
   patch.a = positive(o, "--a");
   patch.b = positive(o, "--b");

@@ -140,7 +140,6 @@ int run_fit(const std::vector<std::string>& args) {
                  "the continuous region (the report says what is left out around each jump).\n";
     return 0;
   }
-  if (!opt.positional().empty()) throw UsageError("fit: unexpected argument '" + opt.positional().front() + "'");
   const std::string report_path = opt.required_text("--report");
   const SplineFitOptions options = fit_options_from(opt);
   const GeometrySpec spec = geometry_spec_from_options(opt);

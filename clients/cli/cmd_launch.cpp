@@ -31,7 +31,7 @@ int run_launch(const std::vector<std::string>& args) {
                    {"--backoff-min", true, "first restart delay [s], doubles per quick failure", "0.25"},
                    {"--backoff-max", true, "largest restart delay [s]", "8"},
                    {"--list", false, "print the profile's services and whether they are built, then exit", ""}},
-                  args);
+                  args, Positional::kAllowed);
   if (options.help_requested()) {
     std::cout << options.help()
               << "\nStarts the named services of the profile (all when none is named), restarts a\n"

@@ -19,7 +19,7 @@ double parse_finite(const std::string& text, const std::string& what) {
 }
 
 Options::Options(std::string command, std::string synopsis, std::vector<OptionSpec> specs,
-                 const std::vector<std::string>& args)
+                 const std::vector<std::string>& args, Positional positional)
     : command_(std::move(command)), synopsis_(std::move(synopsis)), specs_(std::move(specs)) {
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
@@ -51,6 +51,12 @@ Options::Options(std::string command, std::string synopsis, std::vector<OptionSp
       if (i + 1 >= args.size()) throw UsageError("option " + name + " needs a value");
       values_.emplace_back(name, args[++i]);
     }
+  }
+  if (positional == Positional::kRejected && !positional_.empty() && !help_) {
+    const std::string& stray = positional_.front();
+    throw UsageError(command_ + ": unexpected argument '" + stray + "'" +
+                     (stray.size() > 1 && stray[0] == '-' ? " (options start with --)" : "") + " (see wrc " + command_ +
+                     " --help)");
   }
 }
 

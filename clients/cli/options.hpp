@@ -24,13 +24,17 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Whether a command takes arguments that are not options (`wrc launch [services...]`).
+enum class Positional { kRejected, kAllowed };
+
 /// Parsed options of one subcommand.
 class Options {
  public:
   /// Parses args against specs. Unknown options, missing values and repeated options throw
-  /// UsageError. `--help` is always accepted (see help_requested()).
+  /// UsageError, and so does any argument not starting with -- (a stray word, a mistyped
+  /// `-yaw`) unless positional is kAllowed. `--help` is always accepted (see help_requested()).
   Options(std::string command, std::string synopsis, std::vector<OptionSpec> specs,
-          const std::vector<std::string>& args);
+          const std::vector<std::string>& args, Positional positional = Positional::kRejected);
 
   /// True when --help was given; print help() and exit 0 then.
   bool help_requested() const { return help_; }

@@ -63,7 +63,7 @@ int run_geometry(const std::vector<std::string>& args) {
     if (csv) {
       std::printf("%.9g,%.12g,%.9e,%.12g,%.12g,%.9e,%.9g,%.9g,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%zu,%zu,%d,%d\n", y,
                   c.pose.z, c.pose.roll, l.rolling_radius, r.rolling_radius, c.delta_r(), l.contact_angle,
-                  r.contact_angle, l.s, r.s, l.rail_u, r.rail_u, l.wheel_point.x(), r.wheel_point.x(),
+                  r.contact_angle, l.s, r.s, l.s_rail, r.s_rail, l.wheel_point.x(), r.wheel_point.x(),
                   c.potential[0].size(), c.potential[1].size(), minima(c.potential[0]), minima(c.potential[1]));
     } else {
       const double deg = 180.0 / M_PI;

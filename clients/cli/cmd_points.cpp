@@ -47,12 +47,12 @@ int run_points(const std::vector<std::string>& args) {
   for (const auto& p : points) {
     const bool is_common = common && std::fabs(common->s - p.s) < 1e-12;
     if (csv) {
-      std::printf("%.12e,%.12e,%.12e,%.12e,%.12e,%.12e,%.12e,%.12e,%.9e,%.9e,%d,%d\n", p.s, p.rail_u,
+      std::printf("%.12e,%.12e,%.12e,%.12e,%.12e,%.12e,%.12e,%.12e,%.9e,%.9e,%d,%d\n", p.s, p.s_rail,
                   p.wheel_point.x(), p.wheel_point.y(), p.wheel_point.z(), p.distance, p.contact_angle,
                   p.rolling_radius, p.wheel_curvature_lateral, p.rail_curvature_lateral, p.is_minimum, is_common);
     } else {
       std::printf("%10.4f %10.4f %9.4f %10.4f %10.4f %12.3f %9.4f %10.4f %10.3f %10.3f %4d %4d\n", p.s * 1e3,
-                  p.rail_u * 1e3, p.wheel_point.x() * 1e3, p.wheel_point.y() * 1e3, p.wheel_point.z() * 1e3,
+                  p.s_rail * 1e3, p.wheel_point.x() * 1e3, p.wheel_point.y() * 1e3, p.wheel_point.z() * 1e3,
                   p.distance * 1e6, p.contact_angle * 180 / M_PI, p.rolling_radius * 1e3, p.wheel_curvature_lateral,
                   p.rail_curvature_lateral, p.is_minimum, is_common);
     }

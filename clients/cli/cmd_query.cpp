@@ -312,8 +312,8 @@ int run_query(const std::vector<std::string>& args) {
   query.shear_modulus = o.number("--shear-modulus", 8.2e10, 1.0, 1e13);
   query.poisson_ratio = o.number("--poisson", 0.28, 0.0, 0.5);
   query.friction = o.number("--friction", 0.3, 0.0, 10.0);
-  query.fastsim_nx = static_cast<std::int16_t>(elements);
-  query.fastsim_ny = static_cast<std::int16_t>(strips);
+  query.fastsim_elements = static_cast<std::int16_t>(elements);
+  query.fastsim_strips = static_cast<std::int16_t>(strips);
   query.speed = speed;
   query.num_configurations = 1;
   query.configurations = {c};

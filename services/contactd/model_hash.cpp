@@ -19,7 +19,7 @@ void put(std::vector<unsigned char>& out, double value) {
 }
 
 void put(std::vector<unsigned char>& out, const ContactPoint& p) {
-  for (double v : {p.s, p.rail_u, p.theta, p.wheel_point.x(), p.wheel_point.y(), p.wheel_point.z(), p.rail_point.x(),
+  for (double v : {p.s, p.s_rail, p.theta, p.wheel_point.x(), p.wheel_point.y(), p.wheel_point.z(), p.rail_point.x(),
                    p.rail_point.y(), p.rail_point.z(), p.normal.x(), p.normal.y(), p.normal.z(), p.distance,
                    p.contact_angle, p.rolling_radius, p.wheel_curvature_lateral, p.wheel_curvature_rolling,
                    p.rail_curvature_lateral, p.rail_curvature_rolling, p.distance_curvature}) {

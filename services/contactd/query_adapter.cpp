@@ -107,8 +107,8 @@ std::string validate_query(const wrc::contact_query_t& q) {
   }
   if (std::string why = check_range("friction", q.friction, 0.0, wrc::kMaxFriction, "[-]"); !why.empty()) return why;
   if (std::string why = check_positive("speed", q.speed, wrc::kMaxSpeed, "m/s"); !why.empty()) return why;
-  if (std::string why = check_grid("fastsim_nx", q.fastsim_nx); !why.empty()) return why;
-  if (std::string why = check_grid("fastsim_ny", q.fastsim_ny); !why.empty()) return why;
+  if (std::string why = check_grid("fastsim_elements", q.fastsim_elements); !why.empty()) return why;
+  if (std::string why = check_grid("fastsim_strips", q.fastsim_strips); !why.empty()) return why;
   if (q.num_configurations < 1 || q.num_configurations > kMaxConfigurations) {
     return "num_configurations = " + std::to_string(q.num_configurations) + " is outside [1, " +
            std::to_string(kMaxConfigurations) + "]";
@@ -146,8 +146,8 @@ ContactQuery to_contact_query(const wrc::contact_query_t& q, int index) {
   out.material.shear_modulus = q.shear_modulus;
   out.material.poisson_ratio = q.poisson_ratio;
   out.material.friction = q.friction;
-  out.fastsim_elements = q.fastsim_nx;
-  out.fastsim_strips = q.fastsim_ny;
+  out.fastsim_elements = q.fastsim_elements;
+  out.fastsim_strips = q.fastsim_strips;
   return out;
 }
 
@@ -160,7 +160,7 @@ void to_result_message(const ContactResult& result, wrc::contact_result_t& messa
     wrc::contact_patch_t& m = message.patches[i];
     m.wheel = p.point.side == WheelSide::kLeft ? wrc::contact_patch_t::LEFT : wrc::contact_patch_t::RIGHT;
     m.s_wheel = p.point.s;
-    m.s_rail = p.point.rail_u;
+    m.s_rail = p.point.s_rail;
     copy3(p.point.wheel_point, m.wheel_point);
     copy3(p.point.rail_point, m.rail_point);
     copy3(p.point.normal, m.normal);

@@ -77,8 +77,8 @@ wrc::contact_query_t bench_query() {
   q.shear_modulus = 8.2e10;
   q.poisson_ratio = 0.28;
   q.friction = 0.3;
-  q.fastsim_nx = 20;
-  q.fastsim_ny = 20;
+  q.fastsim_elements = 20;
+  q.fastsim_strips = 20;
   q.speed = 30.0;
   wrc::wheelset_configuration_t c{};
   c.y = 0.002;
@@ -103,8 +103,8 @@ wrc::ContactQuery library_query(const wrc::contact_query_t& q) {
   out.spin_rate = c.spin_rate;
   out.speed = q.speed;
   out.normal_load = {c.normal_load_left, c.normal_load_right};
-  out.fastsim_elements = q.fastsim_nx;
-  out.fastsim_strips = q.fastsim_ny;
+  out.fastsim_elements = q.fastsim_elements;
+  out.fastsim_strips = q.fastsim_strips;
   return out;
 }
 

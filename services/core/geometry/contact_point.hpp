@@ -13,7 +13,7 @@ namespace wrc {
 struct ContactPoint {
   WheelSide side = WheelSide::kLeft;
   double s = 0;        ///< wheel profile coordinate (from the taping line, > 0 field side) [m]
-  double rail_u = 0;   ///< rail profile coordinate (from the profile origin, > 0 field side) [m]
+  double s_rail = 0;   ///< rail profile coordinate (from the profile origin, > 0 field side) [m]
   double theta = 0;    ///< angular position on the wheel from its lowest point [rad] (non-zero with yaw)
   Eigen::Vector3d wheel_point{0, 0, 0};  ///< point on the wheel surface, track frame [m]
   Eigen::Vector3d rail_point{0, 0, 0};   ///< rail surface point vertically below it, track frame [m]

@@ -43,7 +43,7 @@ ContactPoint make_contact_point(const ContactLocus& locus, double s, bool is_min
   ContactPoint c;
   c.side = locus.side();
   c.s = p.s;
-  c.rail_u = p.rail.u;
+  c.s_rail = p.rail.u;
   c.theta = std::atan2(p.sin_theta, p.cos_theta);
   c.wheel_point = p.wheel;
   c.rail_point = Eigen::Vector3d(p.wheel.x(), p.wheel.y(), p.rail.z);

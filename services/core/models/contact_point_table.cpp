@@ -12,7 +12,7 @@ namespace wrc {
 namespace {
 
 enum Field {
-  kS, kRailU, kTheta, kRx, kRy, kRz, kRailZ, kDistance0, kAngle, kRadius, kNx, kNy, kNz,
+  kS, kSRail, kTheta, kRx, kRy, kRz, kRailZ, kDistance0, kAngle, kRadius, kNx, kNy, kNz,
   kWheelLateral, kWheelRolling, kRailLateral, kRailRolling, kDistanceCurvature, kFieldCount
 };
 
@@ -80,7 +80,7 @@ ContactPointTable::ContactPointTable(const WheelsetGeometry& geometry, const Int
                                             " (reduce the table's y_max, roll_max or yaw_max)");
           }
           const Eigen::Vector3d r = p.wheel_point - Eigen::Vector3d(pose.x, pose.y, pose.z);
-          const double fields[kFields] = {p.s, p.rail_u, p.theta, r.x(), r.y(), r.z(), p.rail_point.z(),
+          const double fields[kFields] = {p.s, p.s_rail, p.theta, r.x(), r.y(), r.z(), p.rail_point.z(),
                                           p.distance - z_ref, p.contact_angle, p.rolling_radius,
                                           p.normal.x(), p.normal.y(), p.normal.z(), p.wheel_curvature_lateral,
                                           p.wheel_curvature_rolling, p.rail_curvature_lateral,
@@ -126,7 +126,7 @@ ContactPoint ContactPointTable::at(WheelSide side, const WheelsetPose& pose) con
   ContactPoint p;
   p.side = side;
   p.s = out[kS];
-  p.rail_u = out[kRailU];
+  p.s_rail = out[kSRail];
   p.theta = out[kTheta];
   p.wheel_point = Eigen::Vector3d(pose.x + out[kRx], pose.y + out[kRy], pose.z + out[kRz]);
   p.rail_point = Eigen::Vector3d(p.wheel_point.x(), p.wheel_point.y(), out[kRailZ]);

@@ -15,7 +15,7 @@ namespace wrc {
 
 /// Common-point parameters tabulated over (y, roll, yaw) and interpolated: in y linearly or by a
 /// natural cubic spline (InterpolationGrid::y_method), in roll and yaw linearly.
-/// Interpolated per wheel: s, rail_u, theta, the wheel point relative to the wheelset centre
+/// Interpolated per wheel: s, s_rail, theta, the wheel point relative to the wheelset centre
 /// (3 components), the rail height, the distance at z = 0 (the distance is affine in z with unit
 /// slope, so distance(z) = distance(0) + z exactly), contact angle, rolling radius, the normal
 /// (3 components, renormalised), the four principal curvatures and distance_curvature.

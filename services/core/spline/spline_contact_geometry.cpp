@@ -92,7 +92,7 @@ ContactPoint SplineContactGeometry::contact_point(WheelSide side, const Wheelset
   ContactPoint p;
   p.side = side;
   p.s = v[kFieldSWheel];
-  p.rail_u = v[kFieldSRail];
+  p.s_rail = v[kFieldSRail];
   p.theta = v[kFieldTheta];
   p.wheel_point = Eigen::Vector3d(pose.x + v[kFieldWheelX], pose.y + v[kFieldWheelY], pose.z + v[kFieldWheelZ]);
   p.distance = pose.z - v[kFieldZ];

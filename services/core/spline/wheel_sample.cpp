@@ -57,7 +57,7 @@ WheelSample sample_wheel(const WheelsetGeometry& geometry, WheelSide side, const
   auto& f = out.fields;
   f[kFieldZ] = pose.z - p.distance;
   f[kFieldSWheel] = p.s;
-  f[kFieldSRail] = p.rail_u;
+  f[kFieldSRail] = p.s_rail;
   f[kFieldTheta] = p.theta;
   f[kFieldWheelX] = p.wheel_point.x() - pose.x;
   f[kFieldWheelY] = p.wheel_point.y() - pose.y;

@@ -63,8 +63,8 @@ wrc::contact_query_t make_query(const std::string& model, const std::vector<Cont
   q.shear_modulus = first.material.shear_modulus;
   q.poisson_ratio = first.material.poisson_ratio;
   q.friction = first.material.friction;
-  q.fastsim_nx = first.fastsim_elements;
-  q.fastsim_ny = first.fastsim_strips;
+  q.fastsim_elements = first.fastsim_elements;
+  q.fastsim_strips = first.fastsim_strips;
   q.speed = first.speed;
   q.num_configurations = static_cast<std::int32_t>(batch.size());
   for (const ContactQuery& l : batch) {
@@ -189,7 +189,7 @@ TEST_P(EveryModel, AnswersLikeTheInProcessModel) {
         const std::string pw = where + " patch " + std::to_string(k);
         EXPECT_EQ(m.wheel, p.point.side == WheelSide::kLeft ? wrc::contact_patch_t::LEFT : wrc::contact_patch_t::RIGHT);
         expect_close(m.s_wheel, p.point.s, pw + " s");
-        expect_close(m.s_rail, p.point.rail_u, pw + " s_rail");
+        expect_close(m.s_rail, p.point.s_rail, pw + " s_rail");
         for (int j = 0; j < 3; ++j) {
           expect_close(m.wheel_point[j], p.point.wheel_point[j], pw + " wheel_point");
           expect_close(m.rail_point[j], p.point.rail_point[j], pw + " rail_point");
@@ -276,7 +276,7 @@ TEST_F(ContactServiceTest, InvalidQueriesGetBadRequestNamingTheField) {
       {[&](auto& q) { q.configurations[1].normal_load_left = -5.0; }, "configurations[1].normal_load_left = -5"},
       {[&](auto& q) { q.speed = 0.0; }, "speed = 0 is not positive"},
       {[&](auto& q) { q.poisson_ratio = nan; }, "poisson_ratio = nan"},
-      {[&](auto& q) { q.fastsim_nx = 0; }, "fastsim_nx = 0"},
+      {[&](auto& q) { q.fastsim_elements = 0; }, "fastsim_elements = 0"},
       {[&](auto& q) { q.formulation = 7; }, "formulation = 7 is neither RIGID (0) nor ELASTIC (1)"},
       {[&](auto& q) { q.num_configurations = 0; q.configurations.clear(); }, "num_configurations = 0 is outside [1, 32]"},
       {[&](auto& q) { q.num_configurations = 33; q.configurations.resize(33, q.configurations[0]); },

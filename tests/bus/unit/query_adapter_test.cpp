@@ -32,8 +32,8 @@ wrc::contact_query_t distinct_query() {
   q.shear_modulus = 8.1e10;
   q.poisson_ratio = 0.27;
   q.friction = 0.33;
-  q.fastsim_nx = 23;
-  q.fastsim_ny = 17;
+  q.fastsim_elements = 23;
+  q.fastsim_strips = 17;
   q.speed = 31.5;
   q.num_configurations = 2;
   for (int i = 0; i < 2; ++i) {
@@ -92,7 +92,7 @@ TEST(QueryAdapter, EveryResultFieldLandsInItsMessageField) {
     const double k = i + 1.0;
     p.point.side = i == 0 ? WheelSide::kLeft : WheelSide::kRight;
     p.point.s = 0.001 * k;
-    p.point.rail_u = 0.002 * k;
+    p.point.s_rail = 0.002 * k;
     p.point.wheel_point = {0.003 * k, 0.004 * k, 0.005 * k};
     p.point.rail_point = {0.006 * k, 0.007 * k, 0.008 * k};
     p.point.normal = {0.009 * k, 0.010 * k, 0.011 * k};
@@ -163,8 +163,8 @@ TEST(QueryAdapter, EachInvalidFieldIsNamed) {
       {[](auto& q) { q.friction = -0.1; }, "friction = -0.1 is outside [0, 10] [-]"},
       {[](auto& q) { q.speed = 0.0; }, "speed = 0 is not positive"},
       {[](auto& q) { q.speed = 1500.0; }, "speed = 1500 is outside [0, 1000] m/s"},
-      {[](auto& q) { q.fastsim_nx = 1; }, "fastsim_nx = 1 is outside [2, 400]"},
-      {[](auto& q) { q.fastsim_ny = 401; }, "fastsim_ny = 401 is outside [2, 400]"},
+      {[](auto& q) { q.fastsim_elements = 1; }, "fastsim_elements = 1 is outside [2, 400]"},
+      {[](auto& q) { q.fastsim_strips = 401; }, "fastsim_strips = 401 is outside [2, 400]"},
       {[](auto& q) { q.num_configurations = 0; }, "num_configurations = 0 is outside [1, 32]"},
       {[](auto& q) { q.num_configurations = 3; }, "num_configurations = 3 but 2 configurations"},
       {[&](auto& q) { q.configurations[0].y = nan; }, "configurations[0].y = nan is not a finite number"},
@@ -207,8 +207,8 @@ TEST(QueryAdapter, AcceptsWhatTheLibraryAccepts) {
       {"shear_modulus", [](auto& q, double v) { q.shear_modulus = v; }, {-1.0, 0.0, 1.0, 8.2e10, 1e13, 1.0001e13}},
       {"friction", [](auto& q, double v) { q.friction = v; }, {-1e-9, 0.0, 0.3, 10.0, 10.0 + 1e-9, 20.0}},
       {"speed", [](auto& q, double v) { q.speed = v; }, {-1.0, 0.0, 1e-6, 30.0, 1000.0, 1000.001}},
-      {"fastsim_nx", [](auto& q, double v) { q.fastsim_nx = static_cast<std::int32_t>(v); }, {0, 1, 2, 20, 400, 401}},
-      {"fastsim_ny", [](auto& q, double v) { q.fastsim_ny = static_cast<std::int32_t>(v); }, {0, 1, 2, 20, 400, 401}},
+      {"fastsim_elements", [](auto& q, double v) { q.fastsim_elements = static_cast<std::int32_t>(v); }, {0, 1, 2, 20, 400, 401}},
+      {"fastsim_strips", [](auto& q, double v) { q.fastsim_strips = static_cast<std::int32_t>(v); }, {0, 1, 2, 20, 400, 401}},
   };
   for (const Probe& p : probes) {
     for (double v : p.values) {

@@ -38,8 +38,8 @@ struct SplineFitOptions {
   double grading = 3.0;     ///< kGraded: knot density where jumps sweep, relative to elsewhere, minus 1 [-], >= 0
 
   double sample_step_y = 1e-4;  ///< spacing of the exact-geometry samples in y [m]
-  int roll_samples = 9;     ///< samples in roll [-], >= degree + 1 ... at least intervals + degree
-  int yaw_samples = 9;      ///< samples in yaw [-], likewise
+  int roll_samples = 9;     ///< samples in roll [-], at least the basis size in roll (intervals + degree)
+  int yaw_samples = 9;      ///< samples in yaw [-], at least the basis size in yaw
 
   /// Weight of samples within jump_band of a jump of the common point on the tread (an artefact
   /// of the rigid one-point view, smoothed by the fit) [-], in (0, 1]; elsewhere 1.

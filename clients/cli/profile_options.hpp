@@ -7,16 +7,14 @@
 #include "cli/options.hpp"
 #include "core/geometry/geometry_spec.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
+#include "core/options/geometry_options.hpp"
 
 namespace wrc::cli {
 
-/// Option specs: --wheel, --rail, --rail-cant, --gauge, --gauge-depth, --flange-back,
-/// --taping-line-offset, --inclination, --r0.
-std::vector<OptionSpec> profile_option_specs();
+/// The profile and track option specs, the table wrc-contactd uses too (core/options/geometry_options.hpp).
+inline std::vector<OptionSpec> profile_option_specs() { return geometry_option_specs(); }
 
-/// The geometry input named by parsed options (defaults: S1002 on UIC60, standard track); throws
-/// UsageError naming the option for a bad value, std::invalid_argument for an invalid track.
-GeometrySpec geometry_spec_from_options(const Options& options);
+using wrc::geometry_spec_from_options;
 
 /// Builds the wheelset geometry of geometry_spec_from_options(options).
 WheelsetGeometry geometry_from_options(const Options& options);

@@ -13,19 +13,19 @@
 
 namespace wrc::bus {
 
-/// Options: a type with static Options parse(const std::vector<std::string>&) and static
-/// std::string help_text(). run(const ServiceOptions&, const Options&) returns the exit code.
+/// OwnOptions: a type with static OwnOptions parse(const std::vector<std::string>&) and static
+/// std::string help_text(). run(const ServiceOptions&, const OwnOptions&) returns the exit code.
 /// @param usage the first lines of --help (what the service does, its channels).
-template <class Options, class Run>
+template <class OwnOptions, class Run>
 int service_main(int argc, char** argv, const std::string& program, const std::string& usage, Run run) {
   make_stderr_line_atomic();  // one log shared with other processes: whole lines only
   try {
     const auto service = ServiceOptions::parse(argc, argv);
     if (service.help) {
-      std::cout << usage << "\n" << Options::help_text() << ServiceOptions::help_text();
+      std::cout << usage << "\n" << OwnOptions::help_text() << ServiceOptions::help_text();
       return 0;
     }
-    const auto options = Options::parse(service.rest);
+    const auto options = OwnOptions::parse(service.rest);
     return run(service, options);
   } catch (const std::exception& e) {
     std::cerr << program << ": " << e.what() << "\n";

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "core/options/options.hpp"
+
 namespace wrc::bus {
 
 namespace {
@@ -26,52 +28,47 @@ void check_instance(const std::string& name) {
                                 "' must be 1-24 letters, digits, '_' or '-'");
   }
 }
+
+/// The options every service shares, in the order --help lists them.
+std::vector<OptionSpec> service_option_specs() {
+  return {
+      {"--lcm-url", true, "LCM URL", "LCM's own, udpm ttl=0, or $LCM_DEFAULT_URL"},
+      {"--channel-prefix", true, "prefix of every channel, P.HEARTBEAT etc.", "none"},
+      {"--instance", true, "instance name, unique per model on the bus", "0"},
+      {"--heartbeat-period", true, "heartbeat period [s]", "0.5"},
+  };
+}
 }  // namespace
 
 ServiceOptions ServiceOptions::parse(int argc, const char* const* argv) {
+  const std::vector<std::string> args(argv + (argc > 0 ? 1 : 0), argv + (argc > 0 ? argc : 0));
+  // The service's own options are not known here: they, and every argument not starting with --,
+  // pass on to the service's parser. Given twice, the last one wins (`wrc launch --lcm-url U`
+  // appends to the launch profile's line).
+  ParseRules rules;
+  rules.unknown = Unknown::kPassedOn;
+  rules.repeated = Repeated::kLastWins;
+  const std::string program = argc > 0 && argv[0] != nullptr ? std::string(argv[0]) : std::string("service");
+  const Options parsed = [&] {
+    try {
+      return Options::for_program(program, "[options]", service_option_specs(), args, rules);
+    } catch (const UsageError& e) {
+      throw std::invalid_argument(e.what());
+    }
+  }();
   ServiceOptions options;
-  for (int i = 1; i < argc; ++i) {
-    std::string arg = argv[i];
-    std::string value;
-    bool has_inline = false;
-    if (auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
-      value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-      has_inline = true;
-    }
-    const bool ours = arg == "--lcm-url" || arg == "--channel-prefix" || arg == "--instance" ||
-                      arg == "--heartbeat-period";
-    if (arg == "--help" || arg == "-h") {
-      options.help = true;
-      continue;
-    }
-    if (!ours) {
-      options.rest.push_back(argv[i]);
-      continue;
-    }
-    if (!has_inline) {
-      if (i + 1 >= argc) throw std::invalid_argument("option " + arg + " needs a value");
-      value = argv[++i];
-    }
-    if (arg == "--lcm-url") {
-      options.lcm_url = value;
-    } else if (arg == "--channel-prefix") {
-      options.channel_prefix = value;
-    } else if (arg == "--instance") {
-      check_instance(value);
-      options.instance = value;
-    } else {
-      options.heartbeat_period = parse_period(value);
-    }
+  options.help = parsed.help_requested();
+  options.lcm_url = parsed.text("--lcm-url");
+  options.channel_prefix = parsed.text("--channel-prefix");
+  if (parsed.has("--instance")) {
+    options.instance = parsed.text("--instance");
+    check_instance(options.instance);
   }
+  if (parsed.has("--heartbeat-period")) options.heartbeat_period = parse_period(parsed.text("--heartbeat-period"));
+  options.rest = parsed.passed_on();
   return options;
 }
 
-std::string ServiceOptions::help_text() {
-  return "  --lcm-url URL           LCM URL (default: LCM's own, udpm ttl=0, or $LCM_DEFAULT_URL)\n"
-         "  --channel-prefix P      prefix of every channel, P.HEARTBEAT etc. (default none)\n"
-         "  --instance NAME         instance name, unique per model on the bus (default 0)\n"
-         "  --heartbeat-period S    heartbeat period [s] (default 0.5)\n";
-}
+std::string ServiceOptions::help_text() { return Options::option_lines(service_option_specs()); }
 
 }  // namespace wrc::bus

@@ -2,7 +2,9 @@
 /// @file
 /// The command-line options every service process shares:
 /// `--lcm-url URL`, `--channel-prefix P`, `--instance NAME`, `--heartbeat-period S`, `--help`.
-/// Options a service defines itself (e.g. `--model`) are passed through in `rest`.
+/// Options a service defines itself (e.g. `--model`) are passed through in `rest`. Parsed by the
+/// one option parser of wrc (core/options/options.hpp, Unknown::kPassedOn); given twice, the last
+/// one wins (`wrc launch --lcm-url U` appends to a launch profile's line).
 
 #include <string>
 #include <vector>
@@ -21,7 +23,7 @@ struct ServiceOptions {
   /// Parses argv[1..]. Throws std::invalid_argument with a one-line message naming the bad
   /// option or value (missing value, period not in (0, 60], bad instance name).
   static ServiceOptions parse(int argc, const char* const* argv);
-  /// Help text of the common options, one line each.
+  /// Help text of the common options, one line each (from the table).
   static std::string help_text();
 };
 

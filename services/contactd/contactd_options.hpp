@@ -4,8 +4,10 @@
 ///   --model M   (required; a name of core/models/contact_model_factory.hpp's registry)
 ///   --wheel W --rail R --rail-cant C --gauge G --gauge-depth D --flange-back F
 ///   --taping-line-offset T --inclination I --r0 R0
-/// with the same meaning and defaults as the geometry commands of the `wrc` front end
-/// (core/identity/geometry_key.hpp: geometry_arguments writes them).
+/// parsed by the one option parser (core/options/options.hpp) from the one table and reader of the
+/// profile and track options the geometry commands of the `wrc` front end use
+/// (core/options/geometry_options.hpp; core/identity/geometry_key.hpp: geometry_arguments writes
+/// them). Given twice, the last one wins.
 
 #include <string>
 #include <vector>
@@ -22,7 +24,7 @@ struct ContactdOptions {
   /// Parses the arguments ServiceOptions left over. Throws std::invalid_argument with one line
   /// naming the option and value (unknown option, missing value, bad number, unknown model).
   static ContactdOptions parse(const std::vector<std::string>& args);
-  /// Help text of these options, one line each.
+  /// Help text of these options, one line each (from the table).
   static std::string help_text();
 };
 

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "core/options/options.hpp"
+
 namespace wrc::geometryd {
 
 namespace {
@@ -11,38 +13,35 @@ std::string environment(const char* name) {
   const char* value = std::getenv(name);
   return value == nullptr ? std::string() : std::string(value);
 }
+
+std::vector<OptionSpec> geometryd_option_specs() {
+  return {{"--cache-dir", true,
+           "model files <DIR>/<model_key>.splinemodel, created 0700 if missing",
+           "$WRC_CACHE_DIR, else $XDG_CACHE_HOME/wrc/models, else $HOME/.cache/wrc/models"}};
+}
 }  // namespace
 
 GeometrydOptions GeometrydOptions::parse(const std::vector<std::string>& args) {
+  ParseRules rules;
+  rules.repeated = Repeated::kLastWins;  // as the options every service shares (bus/service_options.hpp)
+  const Options parsed = [&] {
+    try {
+      return Options::for_program("wrc-geometryd", "[options]", geometryd_option_specs(), args, rules);
+    } catch (const UsageError& e) {
+      throw std::invalid_argument(e.what());
+    }
+  }();
   GeometrydOptions options;
-  bool cache_dir_given = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    std::string option = args[i];
-    std::string value;
-    if (auto eq = option.find('='); option.rfind("--", 0) == 0 && eq != std::string::npos) {
-      value = option.substr(eq + 1);
-      option = option.substr(0, eq);
-    } else if (option == "--cache-dir") {
-      if (i + 1 >= args.size()) throw std::invalid_argument("option --cache-dir needs a value");
-      value = args[++i];
-    }
-    if (option != "--cache-dir") {
-      throw std::invalid_argument(std::string(option.rfind("--", 0) == 0 ? "unknown option '" : "unexpected argument '") +
-                                  option + "' (see --help)");
-    }
-    if (value.empty()) throw std::invalid_argument("--cache-dir: the directory name is empty");
-    options.cache_dir = value;
-    cache_dir_given = true;
+  if (!parsed.has("--cache-dir")) {
+    options.cache_dir = default_cache_dir();
+    return options;
   }
-  if (!cache_dir_given) options.cache_dir = default_cache_dir();
+  options.cache_dir = parsed.text("--cache-dir");
+  if (options.cache_dir.empty()) throw std::invalid_argument("--cache-dir: the directory name is empty");
   return options;
 }
 
-std::string GeometrydOptions::help_text() {
-  return "  --cache-dir DIR         model files <DIR>/<model_key>.splinemodel, created 0700 if missing\n"
-         "                          (default $WRC_CACHE_DIR, else $XDG_CACHE_HOME/wrc/models,\n"
-         "                          else $HOME/.cache/wrc/models)\n";
-}
+std::string GeometrydOptions::help_text() { return Options::option_lines(geometryd_option_specs()); }
 
 std::string default_cache_dir() {
   if (std::string dir = environment("WRC_CACHE_DIR"); !dir.empty()) return dir;

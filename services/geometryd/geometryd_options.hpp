@@ -15,7 +15,7 @@ struct GeometrydOptions {
   /// Parses the arguments ServiceOptions left over. Throws std::invalid_argument with one line
   /// naming the option (unknown option, missing or empty value).
   static GeometrydOptions parse(const std::vector<std::string>& args);
-  /// Help text of these options, one line each.
+  /// Help text of these options, one line each (from the table; core/options/options.hpp parses).
   static std::string help_text();
 };
 

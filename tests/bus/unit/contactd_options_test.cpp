@@ -42,10 +42,10 @@ TEST(ContactdOptions, ParsesEveryOption) {
 }
 
 TEST(ContactdOptions, RefusesNamingOptionAndValue) {
-  expect_refused({"--model", "onepoint", "--gauge", "3"}, "--gauge: '3' is not a number in [0.500000, 2.500000]");
-  expect_refused({"--model", "onepoint", "--r0", "abc"}, "--r0: 'abc' is not a number in [0.100000, 1.500000]");
-  expect_refused({"--model", "onepoint", "--gauge-depth=-0.001"}, "--gauge-depth: '-0.001' is not a number");
-  expect_refused({"--model", "onepoint", "--frobnicate", "1"}, "unknown option '--frobnicate' (see --help)");
+  expect_refused({"--model", "onepoint", "--gauge", "3"}, "--gauge: 3 is outside [0.5, 2.5]");
+  expect_refused({"--model", "onepoint", "--r0", "abc"}, "--r0: 'abc' is not a finite number");
+  expect_refused({"--model", "onepoint", "--gauge-depth=-0.001"}, "--gauge-depth: -0.001 is outside [0, 0.05]");
+  expect_refused({"--model", "onepoint", "--frobnicate", "1"}, "unknown option --frobnicate (see wrc-contactd --help)");
   expect_refused({"--model", "onepoint", "stray"}, "unexpected argument 'stray'");
   expect_refused({"--model", "onepoint", "--gauge"}, "option --gauge needs a value");
   expect_refused({"--model", "twopoint"}, "--model: ");

@@ -24,6 +24,18 @@ TEST(ServiceOptions, ParsesAndPassesThrough) {
   EXPECT_TRUE(parse({"--help"}).help);
 }
 
+// Given twice, the last one wins (`wrc launch --lcm-url U` appends to the profile's line); an
+// unknown option's `=value` form passes through verbatim; --help lists every option.
+TEST(ServiceOptions, LastWinsAndHelpFromTheTable) {
+  auto o = parse({"--instance", "a", "--model=spline", "--lcm-url", "udpm://", "--instance", "b", "--lcm-url=memq://"});
+  EXPECT_EQ(o.instance, "b");
+  EXPECT_EQ(o.lcm_url, "memq://");
+  EXPECT_EQ(o.rest, (std::vector<std::string>{"--model=spline"}));
+  const std::string help = ServiceOptions::help_text();
+  for (const char* name : {"--lcm-url", "--channel-prefix", "--instance", "--heartbeat-period"})
+    EXPECT_NE(help.find(name), std::string::npos) << name;
+}
+
 // Expects parse(args) to throw std::invalid_argument whose message contains `expected`.
 void expect_refused(std::vector<const char*> args, const std::string& expected) {
   try {

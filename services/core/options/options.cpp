@@ -1,4 +1,4 @@
-#include "cli/options.hpp"
+#include "core/options/options.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <sstream>
 
-namespace wrc::cli {
+namespace wrc {
 
 double parse_finite(const std::string& text, const std::string& what) {
   errno = 0;
@@ -20,7 +20,18 @@ double parse_finite(const std::string& text, const std::string& what) {
 
 Options::Options(std::string command, std::string synopsis, std::vector<OptionSpec> specs,
                  const std::vector<std::string>& args, Positional positional)
-    : command_(std::move(command)), synopsis_(std::move(synopsis)), specs_(std::move(specs)) {
+    : Options("wrc " + command, command + ": ", std::move(synopsis), std::move(specs), args,
+              ParseRules{positional, Unknown::kRejected, Repeated::kRejected}) {}
+
+Options Options::for_program(std::string program, std::string synopsis, std::vector<OptionSpec> specs,
+                             const std::vector<std::string>& args, ParseRules rules) {
+  return Options(std::move(program), "", std::move(synopsis), std::move(specs), args, rules);
+}
+
+Options::Options(std::string program, std::string label, std::string synopsis, std::vector<OptionSpec> specs,
+                 const std::vector<std::string>& args, ParseRules rules)
+    : program_(std::move(program)), label_(std::move(label)), synopsis_(std::move(synopsis)), specs_(std::move(specs)) {
+  const bool pass_on = rules.unknown == Unknown::kPassedOn;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg == "--help" || arg == "-h") {
@@ -28,7 +39,7 @@ Options::Options(std::string command, std::string synopsis, std::vector<OptionSp
       continue;
     }
     if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
-      positional_.push_back(arg);
+      (pass_on ? passed_on_ : positional_).push_back(arg);
       continue;
     }
     std::string name = arg;
@@ -38,8 +49,18 @@ Options::Options(std::string command, std::string synopsis, std::vector<OptionSp
       inline_value = arg.substr(eq + 1);
     }
     auto spec = std::find_if(specs_.begin(), specs_.end(), [&](const auto& s) { return s.name == name; });
-    if (spec == specs_.end()) throw UsageError("unknown option " + name + " (see wrc " + command_ + " --help)");
-    if (find(name)) throw UsageError("option " + name + " given twice");
+    if (spec == specs_.end()) {
+      if (pass_on) {
+        passed_on_.push_back(arg);
+        continue;
+      }
+      throw UsageError("unknown option " + name + " (see " + program_ + " --help)");
+    }
+    if (find(name)) {
+      if (rules.repeated == Repeated::kRejected) throw UsageError("option " + name + " given twice");
+      values_.erase(std::remove_if(values_.begin(), values_.end(), [&](const auto& kv) { return kv.first == name; }),
+                    values_.end());
+    }
     if (!spec->takes_value) {
       if (inline_value) throw UsageError("option " + name + " takes no value");
       values_.emplace_back(name, "1");
@@ -52,24 +73,29 @@ Options::Options(std::string command, std::string synopsis, std::vector<OptionSp
       values_.emplace_back(name, args[++i]);
     }
   }
-  if (positional == Positional::kRejected && !positional_.empty() && !help_) {
+  if (!pass_on && rules.positional == Positional::kRejected && !positional_.empty() && !help_) {
     const std::string& stray = positional_.front();
-    throw UsageError(command_ + ": unexpected argument '" + stray + "'" +
-                     (stray.size() > 1 && stray[0] == '-' ? " (options start with --)" : "") + " (see wrc " + command_ +
+    throw UsageError(label_ + "unexpected argument '" + stray + "'" +
+                     (stray.size() > 1 && stray[0] == '-' ? " (options start with --)" : "") + " (see " + program_ +
                      " --help)");
   }
 }
 
-std::string Options::help() const {
+std::string Options::option_lines(const std::vector<OptionSpec>& specs) {
   std::ostringstream out;
-  out << "usage: wrc " << command_ << " " << synopsis_ << "\n";
-  if (!specs_.empty()) out << "\noptions:\n";
-  for (const auto& s : specs_) {
+  for (const auto& s : specs) {
     std::string left = "  " + s.name + (s.takes_value ? " V" : "");
     out << left << std::string(left.size() < 26 ? 26 - left.size() : 1, ' ') << s.help;
     if (!s.default_text.empty()) out << " (default " << s.default_text << ")";
     out << "\n";
   }
+  return out.str();
+}
+
+std::string Options::help() const {
+  std::ostringstream out;
+  out << "usage: " << program_ << " " << synopsis_ << "\n";
+  if (!specs_.empty()) out << "\noptions:\n" << option_lines(specs_);
   return out.str();
 }
 
@@ -130,4 +156,4 @@ std::string Options::choice(const std::string& name, const std::vector<std::stri
   throw UsageError(name + ": '" + *v + "' is not one of " + list);
 }
 
-}  // namespace wrc::cli
+}  // namespace wrc

@@ -107,6 +107,12 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   std::string model_hash;
   std::shared_ptr<const wrc::WheelsetGeometry> geometry;
   std::unique_ptr<wrc::contactd::SplineModelSource> splines;
+  // Builds the spline model from newly received splines and publishes its hash (loop thread only).
+  auto adopt = [&](std::shared_ptr<const wrc::SplineContactGeometry> fitted) {
+    model = wrc::make_contact_model(model_name, geometry, wrc::ContactModelOptions{}, {std::move(fitted)});
+    model_hash = wrc::contactd::model_hash(*model);
+    heartbeat.set_model_hash(model_hash);
+  };
   if (!entry.needs_data) {
     // Build in a worker thread so that STARTING heartbeats keep coming while the model is built
     // (the interpolated model takes a while); LCM is only used from this thread.
@@ -162,8 +168,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
       }
       heartbeat.tick();
       if (auto fitted = splines->take()) {
-        model = wrc::make_contact_model(model_name, geometry, wrc::ContactModelOptions{}, {fitted});
-        model_hash = wrc::contactd::model_hash(*model);
+        adopt(std::move(fitted));
         std::cerr << sender << ": got spline model " << splines->model_key().substr(0, 12) << ", model hash "
                   << model_hash << " after " << splines->requests_sent() << " request(s)\n";
       }
@@ -213,9 +218,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     loop.set_idle_hook([&] {
       auto fitted = splines->take();
       if (!fitted) return;
-      model = wrc::make_contact_model(model_name, geometry, wrc::ContactModelOptions{}, {fitted});
-      model_hash = wrc::contactd::model_hash(*model);
-      heartbeat.set_model_hash(model_hash);
+      adopt(std::move(fitted));
       std::cerr << sender << ": replaced the spline model, model hash now " << model_hash << "\n";
     });
   }

@@ -78,8 +78,7 @@ std::vector<geometry_table_t> ModelCache::find_tables(const std::string& model_k
 }
 
 spline_model_t answer_message(const spline_model_t& full, const std::string& path) {
-  spline_model_t copy = full;
-  if (!too_large_for_inline(copy)) return copy;
+  if (!too_large_for_inline(full)) return full;
   return file_reference(full, path);
 }
 

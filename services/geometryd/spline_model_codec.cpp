@@ -234,14 +234,15 @@ std::shared_ptr<const SplineContactGeometry> decode_model(const spline_model_t& 
   return model;
 }
 
-bool too_large_for_inline(spline_model_t& message) { return message.getEncodedSize() > kMaxInlineModelBytes; }
+bool too_large_for_inline(const spline_model_t& message) { return message.getEncodedSize() > kMaxInlineModelBytes; }
 
 namespace {
 
 // The file form of a message: M with its header, request id and file fields cleared, LCM-encoded,
-// written atomically (temporary file, then rename). what names the kind in errors.
+// written atomically (temporary file, then rename); returns the bytes written. what names the kind
+// in errors.
 template <class M>
-void write_message_file(M stored, const std::string& path, const char* what) {
+std::vector<char> write_message_file(M stored, const std::string& path, const char* what) {
   stored.header = header_t{};
   stored.request_id = 0;
   stored.file_path.clear();
@@ -260,6 +261,7 @@ void write_message_file(M stored, const std::string& path, const char* what) {
   std::filesystem::rename(temporary, path, ec);
   if (ec)
     throw std::runtime_error(std::string(what) + ": cannot rename " + temporary + " to " + path + ": " + ec.message());
+  return bytes;
 }
 
 std::vector<char> read_bytes(const std::string& path, const char* what) {
@@ -310,15 +312,8 @@ std::string values_hash(const std::vector<double>& values) {
   return sha256_hex(values.data(), values.size() * sizeof(double));
 }
 
-}  // namespace
-
-spline_model_t write_model_file(const spline_model_t& message, const std::string& path) {
-  write_message_file(message, path, kModelFile);
-  return file_reference(message, path);
-}
-
-spline_model_t file_reference(const spline_model_t& full, const std::string& path) {
-  const std::vector<char> bytes = read_bytes(path, kModelFile);
+// The reference to the file holding bytes (full without its coefficients, with the file fields).
+spline_model_t model_reference(const spline_model_t& full, const std::string& path, const std::vector<char>& bytes) {
   spline_model_t reference = full;
   for (spline_wheel_t& w : reference.wheels) {
     w.num_coefficients = 0;
@@ -326,6 +321,26 @@ spline_model_t file_reference(const spline_model_t& full, const std::string& pat
   }
   set_file_fields(reference, path, bytes);
   return reference;
+}
+
+// The same for a table (full without its values).
+geometry_table_t table_reference_to(const geometry_table_t& full, const std::string& path,
+                                    const std::vector<char>& bytes) {
+  geometry_table_t reference = full;
+  reference.num_values = 0;
+  reference.values.clear();
+  set_file_fields(reference, path, bytes);
+  return reference;
+}
+
+}  // namespace
+
+spline_model_t write_model_file(const spline_model_t& message, const std::string& path) {
+  return model_reference(message, path, write_message_file(message, path, kModelFile));
+}
+
+spline_model_t file_reference(const spline_model_t& full, const std::string& path) {
+  return model_reference(full, path, read_bytes(path, kModelFile));
 }
 
 spline_model_t read_model_file(const std::string& path) {
@@ -391,17 +406,11 @@ geometry_table_t encode_table(const WheelSampleGrid& grid, const GeometrySpec& s
 }
 
 geometry_table_t write_table_file(const geometry_table_t& table, const std::string& path) {
-  write_message_file(table, path, kTableFile);
-  return table_reference(table, path);
+  return table_reference_to(table, path, write_message_file(table, path, kTableFile));
 }
 
 geometry_table_t table_reference(const geometry_table_t& full, const std::string& path) {
-  const std::vector<char> bytes = read_bytes(path, kTableFile);
-  geometry_table_t reference = full;
-  reference.num_values = 0;
-  reference.values.clear();
-  set_file_fields(reference, path, bytes);
-  return reference;
+  return table_reference_to(full, path, read_bytes(path, kTableFile));
 }
 
 geometry_table_t read_table_file(const std::string& path) {

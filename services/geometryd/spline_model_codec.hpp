@@ -80,6 +80,6 @@ geometry_table_t read_table_file(const std::string& path);
 geometry_table_t resolve_table(const geometry_table_t& reference);
 
 /// An encoded message larger than kMaxInlineModelBytes?
-bool too_large_for_inline(spline_model_t& message);
+bool too_large_for_inline(const spline_model_t& message);
 
 }  // namespace wrc::geometryd

@@ -45,7 +45,7 @@ SplineContactGeometry::SplineContactGeometry(std::vector<TensorSplineSet> wheels
 
 SplineBox SplineContactGeometry::box(WheelSide side) const {
   if (side == WheelSide::kLeft) return left_box_;
-  return SplineBox{-left_box_.y_max, -left_box_.y_min, left_box_.roll_max, left_box_.yaw_max};
+  return left_box_.mirrored();
 }
 
 bool SplineContactGeometry::inside(WheelSide side, const WheelsetPose& pose) const {

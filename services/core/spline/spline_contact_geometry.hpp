@@ -19,6 +19,8 @@ namespace wrc {
 /// |yaw| <= yaw_max. The right wheel's box is the left one's mirror image.
 struct SplineBox {
   double y_min = 0, y_max = 0, roll_max = 0, yaw_max = 0;
+  /// The box of the other wheel: y in [-y_max, -y_min], the same roll and yaw ranges.
+  SplineBox mirrored() const { return {-y_max, -y_min, roll_max, yaw_max}; }
 };
 
 /// One wheel's spline evaluation at one configuration.

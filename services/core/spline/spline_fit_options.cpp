@@ -107,6 +107,10 @@ std::array<int, 3> SplineFitOptions::parse_triple(const std::string& text, const
   return out;
 }
 
+int SplineFitOptions::y_samples() const {
+  return static_cast<int>(std::lround((y_max - y_min) / sample_step_y)) + 1;
+}
+
 std::string SplineFitOptions::canonical_text() const {
   std::ostringstream t;
   t << "spline-fit-v1|box " << num(y_min) << ' ' << num(y_max) << ' ' << num(roll_max) << ' ' << num(yaw_max)

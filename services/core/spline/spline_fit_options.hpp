@@ -70,6 +70,9 @@ struct SplineFitOptions {
   /// std::invalid_argument "<what>: '<text>' ..." otherwise.
   static std::array<int, 3> parse_triple(const std::string& text, const std::string& what, int lo, int hi);
 
+  /// Samples of each line in y: (y_max - y_min) / sample_step_y, rounded, + 1 [-].
+  int y_samples() const;
+
   /// Canonical text of every option (numbers with 17 digits): part of the model's cache key.
   std::string canonical_text() const;
 };

@@ -200,15 +200,13 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
   const double s_split = flange_split(geometry.wheel_profile(), options.flange_angle);
   const int threads = thread_count(options.threads);
   const SplineBox left_box{options.y_min, options.y_max, options.roll_max, options.yaw_max};
-  const int ny = static_cast<int>(std::lround((options.y_max - options.y_min) / options.sample_step_y)) + 1;
+  const int ny = options.y_samples();
   const long lines = static_cast<long>(options.roll_samples) * options.yaw_samples;
   std::vector<TensorSplineSet> sets;
 
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const int w = static_cast<int>(side);
-    const SplineBox box = side == WheelSide::kLeft
-                              ? left_box
-                              : SplineBox{-left_box.y_max, -left_box.y_min, left_box.roll_max, left_box.yaw_max};
+    const SplineBox box = side == WheelSide::kLeft ? left_box : left_box.mirrored();
     auto start = std::chrono::steady_clock::now();
     WheelSampleGrid grid = sample_wheel_grid(
         geometry, side, sample_values(box.y_min, box.y_max, ny),

@@ -28,7 +28,7 @@ SplineAccuracy validate_spline_geometry(const WheelsetGeometry& geometry, const 
   out.excluded_band = options.jump_band;
   const double inf = std::numeric_limits<double>::infinity();
   const std::vector<double> edges{0.0, 1e-4, 2.5e-4, 5e-4, 1e-3, 2e-3, inf};
-  const int ny = static_cast<int>(std::lround((options.y_max - options.y_min) / options.sample_step_y)) + 1;
+  const int ny = options.y_samples();
   const long lines = static_cast<long>(options.roll_samples - 1) * (options.yaw_samples - 1);
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const int w = static_cast<int>(side);

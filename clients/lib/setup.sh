@@ -6,7 +6,7 @@
 WRC_PACKAGES=(
   build-essential cmake       # compiler and build
   libeigen3-dev               # linear algebra (spline fits, wheelset equations)
-  libsundials-dev             # CVODE integrator for the wheelset dynamics
+  libsundials-dev             # IDA/CVODE integrators for the wheelset dynamics
   liblcm-dev liblcm-bin       # LCM message bus and lcm-gen
   libssl-dev                  # OpenSSL's SHA-256 for geometry keys and model hashes (not a home-made hash)
   nlohmann-json3-dev          # JSON reports (wrc fit) and run summaries, written by a well-kept library

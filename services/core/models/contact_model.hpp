@@ -5,6 +5,7 @@
 /// the models are interchangeable in-process and behind wrc-contactd on the bus.
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -46,6 +47,38 @@ struct ContactQuery {
   ContactMaterial material;
   int fastsim_elements = 20;  ///< FASTSIM elements per strip (rolling direction)
   int fastsim_strips = 20;    ///< FASTSIM strips (lateral)
+  /// The contact-point branch to follow on the left [0] and right [1] wheel: the wheel profile
+  /// coordinate s of the point the caller is on (its last accepted step, or the switch_s_wheel of
+  /// the event that put it there) [m]. NaN: the model's own choice (the lowest point). Models
+  /// whose contact point cannot jump ignore it (see WheelConstraint::switch_function).
+  std::array<double, 2> tracked_s_wheel{std::numeric_limits<double>::quiet_NaN(),
+                                        std::numeric_limits<double>::quiet_NaN()};
+};
+
+/// switch_function of a model whose contact point never jumps [m].
+constexpr double kNoSwitch = 1.0;
+
+/// The contact constraint of one wheel, present for both wheels whatever their load (lifted and
+/// unloaded wheels too): what a rigid-contact integrator needs (the gap, its gradient, the event
+/// function of the contact point's jumps).
+struct WheelConstraint {
+  /// Vertical distance of wheel and rail at the model's contact point at the query pose [m]
+  /// (< 0: the undeformed surfaces overlap). Rigid contact is gap = 0.
+  double gap = 0;
+  /// d gap / d(y, z, roll, yaw) [-, -, m/rad, m/rad]. The normal force N on the wheel along its
+  /// contact normal n acts on the coordinates as the generalised force N n_z gap_gradient.
+  Eigen::Vector4d gap_gradient{0, 1, 0, 0};
+  double normal_z = 1;  ///< vertical component of the unit contact normal n [-] (see gap_gradient)
+  double s_wheel = 0;   ///< wheel profile coordinate of the contact point the model used [m]
+  double contact_angle = 0;  ///< contact angle there [rad] (ContactPoint::contact_angle)
+  /// Event function of the model's branch [m]: > 0 while the contact point the model follows is
+  /// the one it should be on, continuous in the pose for that branch, decreasing through 0 where
+  /// the contact point jumps (another potential point becomes the lowest, or the followed one
+  /// ceases to exist) or the model changes regime (spline model: flange contact). kNoSwitch for a
+  /// model without jumps.
+  double switch_function = kNoSwitch;
+  /// The tracked_s_wheel to query with after the switch_function's root [m] (NaN: none).
+  double switch_s_wheel = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// One contact patch: the geometry at its centre, the Hertz ellipse, forces and creepages.
@@ -62,11 +95,15 @@ struct ContactPatch {
   bool lateral_curvature_floored = false;
 };
 
-/// Result of one configuration: every patch (left wheel first, then right) and the resultant.
+/// Result of one configuration: every patch (left wheel first, then right), both wheels'
+/// constraints and the resultant.
 struct ContactResult {
   std::vector<ContactPatch> patches;
+  std::array<WheelConstraint, 2> wheels;  ///< left [0] and right [1] wheel, always both
   Eigen::Vector3d force{0, 0, 0};   ///< resultant of normal and creep forces on the wheelset, track frame [N]
   Eigen::Vector3d moment{0, 0, 0};  ///< resultant moment about the wheelset centre, track frame [N m]
+  Eigen::Vector3d creep_force{0, 0, 0};   ///< resultant of the creep forces alone, track frame [N]
+  Eigen::Vector3d creep_moment{0, 0, 0};  ///< their moment (and the spin moments) about the centre [N m]
 };
 
 /// The configuration cannot be in contact as asked: a wheel far off its rail, beyond flange

@@ -11,27 +11,43 @@ namespace wrc {
 namespace {
 
 template <typename Model>
-ContactModelEntry plain(std::string name, std::string description) {
-  return {std::move(name), std::move(description), false,
-          [](std::shared_ptr<const WheelsetGeometry> g, const ContactModelOptions& o, const ContactModelData&) {
-            return std::unique_ptr<ContactModel>(std::make_unique<Model>(std::move(g), o));
-          }};
+ContactModelEntry plain(std::string name, std::string description, ContactFormulation formulation) {
+  ContactModelEntry entry;
+  entry.name = std::move(name);
+  entry.description = std::move(description);
+  entry.dynamics_formulation = formulation;
+  entry.build = [](std::shared_ptr<const WheelsetGeometry> g, const ContactModelOptions& o, const ContactModelData&) {
+    return std::unique_ptr<ContactModel>(std::make_unique<Model>(std::move(g), o));
+  };
+  return entry;
+}
+
+ContactModelEntry spline_entry() {
+  ContactModelEntry entry;
+  entry.name = "spline";
+  entry.description = "Arnold's unified approach: weighted least-squares tensor-product splines";
+  entry.needs_data = true;
+  entry.dynamics_formulation = ContactFormulation::kRigid;
+  entry.build = [](std::shared_ptr<const WheelsetGeometry> g, const ContactModelOptions& o, const ContactModelData& d) {
+    if (!d.splines)
+      throw std::invalid_argument(
+          "contact model 'spline' needs a fitted spline model (precomputed by wrc-geometryd or `wrc fit`)");
+    return std::unique_ptr<ContactModel>(std::make_unique<SplineModel>(std::move(g), d.splines, o));
+  };
+  return entry;
 }
 
 }  // namespace
 
 const std::vector<ContactModelEntry>& contact_model_registry() {
   static const std::vector<ContactModelEntry> registry{
-      plain<OnePointModel>("onepoint", "Hertzian one-point contact at the exact common point"),
-      plain<InterpolatedModel>("interp", "interpolated Hertzian contact (MEDYNA): a table of common points"),
-      plain<MultiPointModel>("multipoint", "Hertzian multi-point contact: an ellipse at every local minimum"),
-      {"spline", "Arnold's unified approach: weighted least-squares tensor-product splines", true,
-       [](std::shared_ptr<const WheelsetGeometry> g, const ContactModelOptions& o, const ContactModelData& d) {
-         if (!d.splines)
-           throw std::invalid_argument(
-               "contact model 'spline' needs a fitted spline model (precomputed by wrc-geometryd or `wrc fit`)");
-         return std::unique_ptr<ContactModel>(std::make_unique<SplineModel>(std::move(g), d.splines, o));
-       }},
+      plain<OnePointModel>("onepoint", "Hertzian one-point contact at the exact common point",
+                           ContactFormulation::kRigid),
+      plain<InterpolatedModel>("interp", "interpolated Hertzian contact (MEDYNA): a table of common points",
+                               ContactFormulation::kRigid),
+      plain<MultiPointModel>("multipoint", "Hertzian multi-point contact: an ellipse at every local minimum",
+                             ContactFormulation::kElastic),
+      spline_entry(),
   };
   return registry;
 }

@@ -26,6 +26,11 @@ struct ContactModelEntry {
   std::string name;         ///< "onepoint", "interp", "multipoint", "spline"
   std::string description;  ///< one line for help texts
   bool needs_data = false;  ///< built from ContactModelData (precomputed by the geometry service)
+  /// How the wheelset dynamics uses the model (docs/dynamics.md): kRigid, contact constraints
+  /// with the normal forces as unknowns (one common point per wheel: onepoint, interp, spline);
+  /// kElastic, normal forces from the penetration (multipoint: several points share a wheel's
+  /// load by their own approach, which a single constraint per wheel cannot express).
+  ContactFormulation dynamics_formulation = ContactFormulation::kRigid;
   std::function<std::unique_ptr<ContactModel>(std::shared_ptr<const WheelsetGeometry>, const ContactModelOptions&,
                                               const ContactModelData&)>
       build;

@@ -6,6 +6,7 @@
 #include "core/models/flange_climb.hpp"
 #include "core/models/one_point_model.hpp"
 #include "core/models/query_validation.hpp"
+#include "core/models/wheel_constraint.hpp"
 #include "core/models/wheelset_motion.hpp"
 
 namespace wrc {
@@ -24,7 +25,8 @@ ContactResult HertzianContactModel::evaluate(const ContactQuery& query) const {
   const PatchContext context{query, motion, fastsim_.get(query.fastsim_elements, query.fastsim_strips),
                              contact_modulus(query.material.shear_modulus, query.material.poisson_ratio)};
   ContactResult result;
-  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) add_wheel_patches(side, context, result);
+  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight})
+    result.wheels[static_cast<size_t>(side)] = add_wheel_patches(side, context, result);
   for (const ContactPatch& patch : result.patches) add_to_resultant(patch, motion.centre, result);
   return result;
 }

@@ -30,8 +30,10 @@ class HertzianContactModel : public ContactModel {
   HertzianContactModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options,
                        const std::string& model);
 
-  /// Appends the patches of one wheel (none when it carries no load or does not touch).
-  virtual void add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const = 0;
+  /// Appends the patches of one wheel (none when it carries no load or does not touch) and
+  /// returns the wheel's constraint (always).
+  virtual WheelConstraint add_wheel_patches(WheelSide side, const PatchContext& context,
+                                            ContactResult& result) const = 0;
 
   /// The exact common point of one wheel at pose, checked (require_common_point()).
   ContactPoint exact_common_point(WheelSide side, const WheelsetPose& pose) const;

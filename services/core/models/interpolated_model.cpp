@@ -1,10 +1,12 @@
 #include "core/models/interpolated_model.hpp"
 
 #include <chrono>
+#include <limits>
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
 #include "core/models/patch_builder.hpp"
+#include "core/models/wheel_constraint.hpp"
 
 namespace wrc {
 namespace {
@@ -24,10 +26,13 @@ InterpolatedModel::InterpolatedModel(std::shared_ptr<const WheelsetGeometry> geo
     : HertzianContactModel(std::move(geometry), options, "InterpolatedModel"),
       table_(timed_table(*geometry_, options_, precomputation_seconds_)) {}
 
-void InterpolatedModel::add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const {
-  std::optional<ContactPatch> patch =
-      one_point_patch(table_.at(side, context.query.pose), context, options_.lateral_curvature_floor);
+WheelConstraint InterpolatedModel::add_wheel_patches(WheelSide side, const PatchContext& context,
+                                                     ContactResult& result) const {
+  const ContactPoint point = table_.at(side, context.query.pose);
+  std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
   if (patch) result.patches.push_back(std::move(*patch));
+  // The interpolation is continuous: no jumps, no event.
+  return exact_point_constraint(point, context.query.pose, kNoSwitch, std::numeric_limits<double>::quiet_NaN());
 }
 
 }  // namespace wrc

@@ -32,7 +32,8 @@ class InterpolatedModel final : public HertzianContactModel {
   double precomputation_seconds() const { return precomputation_seconds_; }
 
  private:
-  void add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const override;
+  WheelConstraint add_wheel_patches(WheelSide side, const PatchContext& context,
+                                    ContactResult& result) const override;
   double precomputation_seconds_ = 0;
   ContactPointTable table_;
 };

@@ -1,6 +1,7 @@
 #include "core/models/multi_point_model.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
@@ -9,6 +10,7 @@
 #include "core/models/one_point_model.hpp"
 #include "core/models/patch_builder.hpp"
 #include "core/models/query_validation.hpp"
+#include "core/models/wheel_constraint.hpp"
 #include "core/models/wheelset_motion.hpp"
 
 namespace wrc {
@@ -16,7 +18,8 @@ namespace wrc {
 MultiPointModel::MultiPointModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options)
     : HertzianContactModel(std::move(geometry), options, "MultiPointModel") {}
 
-void MultiPointModel::add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const {
+WheelConstraint MultiPointModel::add_wheel_patches(WheelSide side, const PatchContext& context,
+                                                   ContactResult& result) const {
   const double floor = options_.lateral_curvature_floor;
   const ContactQuery& query = context.query;
   std::vector<ContactPoint> minima;
@@ -26,15 +29,18 @@ void MultiPointModel::add_wheel_patches(WheelSide side, const PatchContext& cont
   for (size_t k = 1; k < minima.size(); ++k)
     if (minima[k].distance < minima[closest].distance) closest = k;
   check_common_point(*geometry_, side, minima.empty() ? nullptr : &minima[closest], query.pose, steepest_flange_);
+  // Every minimum carries its own force, so nothing jumps: the constraint is the lowest point's.
+  const WheelConstraint constraint =
+      exact_point_constraint(minima[closest], query.pose, kNoSwitch, std::numeric_limits<double>::quiet_NaN());
   if (query.formulation == ContactFormulation::kElastic) {
     for (const ContactPoint& p : minima) {
       const double delta = normal_penetration(p);
       if (delta > 0.0) result.patches.push_back(patch_from_penetration(p, contact_shape(p, floor), delta, context));
     }
-    return;
+    return constraint;
   }
   const double load = query.normal_load[static_cast<int>(side)];
-  if (!(load > 0.0)) return;
+  if (!(load > 0.0)) return constraint;
   // The closest minimum alone carrying the load bounds the approach: minima farther away than
   // that cannot be reached and need no Hertz shape (their curvatures may not even be Hertzian).
   const PatchShape closest_shape = contact_shape(minima[closest], floor);
@@ -57,6 +63,7 @@ void MultiPointModel::add_wheel_patches(WheelSide side, const PatchContext& cont
     if (split.normal_force[j] > 0.0)
       result.patches.push_back(patch_from_force(minima[index[j]], shapes[j], split.normal_force[j], context));
   }
+  return constraint;
 }
 
 }  // namespace wrc

@@ -28,7 +28,8 @@ class MultiPointModel final : public HertzianContactModel {
   std::string name() const override { return "multipoint"; }
 
  private:
-  void add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const override;
+  WheelConstraint add_wheel_patches(WheelSide side, const PatchContext& context,
+                                    ContactResult& result) const override;
 };
 
 }  // namespace wrc

@@ -1,11 +1,13 @@
 #include "core/models/one_point_model.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
 #include "core/models/flange_climb.hpp"
 #include "core/models/patch_builder.hpp"
+#include "core/models/wheel_constraint.hpp"
 
 namespace wrc {
 
@@ -43,10 +45,18 @@ ContactPoint require_common_point(const WheelsetGeometry& geometry, WheelSide si
 OnePointModel::OnePointModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options)
     : HertzianContactModel(std::move(geometry), options, "OnePointModel") {}
 
-void OnePointModel::add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const {
-  const ContactPoint point = exact_common_point(side, context.query.pose);
+WheelConstraint OnePointModel::add_wheel_patches(WheelSide side, const PatchContext& context,
+                                                 ContactResult& result) const {
+  const WheelsetPose& pose = context.query.pose;
+  const std::vector<ContactPoint> points = geometry_->potential_points(side, pose, options_.search);
+  const bool any_minimum = std::any_of(points.begin(), points.end(), [](const ContactPoint& p) { return p.is_minimum; });
+  if (!any_minimum) check_common_point(*geometry_, side, nullptr, pose, steepest_flange_);
+  const TrackedBranch branch = track_branch(points, context.query.tracked_s_wheel[static_cast<size_t>(side)]);
+  const ContactPoint& point = points[branch.index];
+  check_common_point(*geometry_, side, &point, pose, steepest_flange_);
   std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
   if (patch) result.patches.push_back(std::move(*patch));
+  return exact_point_constraint(point, pose, branch.switch_function, branch.switch_s_wheel);
 }
 
 }  // namespace wrc

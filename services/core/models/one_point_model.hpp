@@ -27,7 +27,8 @@ class OnePointModel final : public HertzianContactModel {
   std::string name() const override { return "onepoint"; }
 
  private:
-  void add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const override;
+  WheelConstraint add_wheel_patches(WheelSide side, const PatchContext& context,
+                                    ContactResult& result) const override;
 };
 
 /// The common point of one wheel at pose, or ContactConfigurationError naming the wheel and the

@@ -107,10 +107,14 @@ double normal_penetration(const ContactPoint& point) { return -point.distance * 
 
 void add_to_resultant(const ContactPatch& patch, const Eigen::Vector3d& centre, ContactResult& result) {
   const ContactFrame frame = contact_frame(patch.point.normal);
-  const Eigen::Vector3d force =
-      patch.normal_force * frame.n + patch.forces.fx * frame.t1 + patch.forces.fy * frame.t2;
-  result.force += force;
-  result.moment += (patch.point.wheel_point - centre).cross(force) + patch.forces.mz * frame.n;
+  const Eigen::Vector3d lever = patch.point.wheel_point - centre;
+  const Eigen::Vector3d creep = patch.forces.fx * frame.t1 + patch.forces.fy * frame.t2;
+  const Eigen::Vector3d creep_moment = lever.cross(creep) + patch.forces.mz * frame.n;
+  const Eigen::Vector3d normal = patch.normal_force * frame.n;
+  result.creep_force += creep;
+  result.creep_moment += creep_moment;
+  result.force += normal + creep;
+  result.moment += lever.cross(normal) + creep_moment;
 }
 
 }  // namespace wrc

@@ -68,7 +68,8 @@ double normal_penetration(const ContactPoint& point);
 
 /// Adds a patch's normal force N n, creep forces fx t1 + fy t2 and spin moment mz n (contact
 /// frame of contact_frame(n)) to the resultant force on the wheelset and to its moment about the
-/// wheelset centre [m]; the lever arm is the wheel point minus the centre.
+/// wheelset centre [m]; the lever arm is the wheel point minus the centre. The creep part alone
+/// goes to creep_force and creep_moment as well.
 void add_to_resultant(const ContactPatch& patch, const Eigen::Vector3d& centre, ContactResult& result);
 
 }  // namespace wrc

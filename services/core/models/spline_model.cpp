@@ -1,7 +1,12 @@
 #include "core/models/spline_model.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
+
+#include "core/models/one_point_model.hpp"
+#include "core/models/wheel_constraint.hpp"
 
 namespace wrc {
 
@@ -17,18 +22,49 @@ SplineModel::SplineModel(std::shared_ptr<const WheelsetGeometry> geometry,
   }
 }
 
-void SplineModel::add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const {
+WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContext& context,
+                                               ContactResult& result) const {
   const WheelsetPose& pose = context.query.pose;
   if (!splines_->inside(side, pose)) throw OutsideModelError(splines_->outside_reason(side, pose));
   SplineEvaluation e;
-  splines_->evaluate(side, pose, SplineDerivatives::kValue, e);
-  std::optional<ContactPatch> patch;
-  if (e.value[kFieldFlangeClearance] > 0.0) {
-    patch = one_point_patch(splines_->contact_point(side, pose, e), splines_->patch_shape(e), context);
-  } else {
-    patch = one_point_patch(exact_common_point(side, pose), context, options_.lateral_curvature_floor);
+  splines_->evaluate(side, pose, SplineDerivatives::kGradient, e);
+  const double clearance = e.value[kFieldFlangeClearance];
+  const double tracked = context.query.tracked_s_wheel[static_cast<size_t>(side)];
+  const bool flange_contact = std::isnan(tracked) ? !(clearance > 0.0) : tracked <= splines_->s_split();
+  if (!flange_contact) {
+    const ContactPoint point = splines_->contact_point(side, pose, e);
+    std::optional<ContactPatch> patch = one_point_patch(point, splines_->patch_shape(e), context);
+    if (patch) result.patches.push_back(std::move(*patch));
+    WheelConstraint c;
+    c.gap = point.distance;  // z - z_touch(y, roll, yaw)
+    c.gap_gradient = Eigen::Vector4d(-e.z_gradient[0], 1.0, -e.z_gradient[1], -e.z_gradient[2]);
+    c.normal_z = point.normal.z();
+    c.s_wheel = point.s;
+    c.contact_angle = point.contact_angle;
+    c.switch_function = clearance;          // flange contact begins where it falls through 0
+    c.switch_s_wheel = splines_->s_split();  // a tracked s <= s_split selects flange contact
+    return c;
   }
+  // Flange contact: the exact geometry's minimum on the flange side of the split.
+  const std::vector<ContactPoint> points = geometry_->potential_points(side, pose, options_.search);
+  std::vector<ContactPoint> flange_side;
+  for (const ContactPoint& p : points)
+    if (p.s <= splines_->s_split()) flange_side.push_back(p);
+  const bool any_flange_minimum =
+      std::any_of(flange_side.begin(), flange_side.end(), [](const ContactPoint& p) { return p.is_minimum; });
+  const std::vector<ContactPoint>& candidates = any_flange_minimum ? flange_side : points;
+  if (!std::any_of(candidates.begin(), candidates.end(), [](const ContactPoint& p) { return p.is_minimum; }))
+    check_common_point(*geometry_, side, nullptr, pose, steepest_flange_);
+  const TrackedBranch branch = track_branch(candidates, tracked);
+  const ContactPoint& point = candidates[branch.index];
+  check_common_point(*geometry_, side, &point, pose, steepest_flange_);
+  std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
   if (patch) result.patches.push_back(std::move(*patch));
+  // Back to the fitted tread where the clearance rises through 0 again, to another flange point
+  // where the exact minima cross.
+  if (-clearance < branch.switch_function)
+    return exact_point_constraint(point, pose, -clearance, e.value[kFieldSWheel]);
+  return exact_point_constraint(point, pose, branch.switch_function, branch.switch_s_wheel);
 }
 
 }  // namespace wrc

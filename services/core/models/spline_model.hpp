@@ -30,7 +30,8 @@ class SplineModel final : public HertzianContactModel {
   const SplineContactGeometry& splines() const { return *splines_; }
 
  private:
-  void add_wheel_patches(WheelSide side, const PatchContext& context, ContactResult& result) const override;
+  WheelConstraint add_wheel_patches(WheelSide side, const PatchContext& context,
+                                    ContactResult& result) const override;
   std::shared_ptr<const SplineContactGeometry> splines_;
 };
 

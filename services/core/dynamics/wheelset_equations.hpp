@@ -1,0 +1,92 @@
+#pragma once
+/// @file
+/// The equations of motion of a rigid wheelset on straight track at constant speed (docs/dynamics.md)
+/// in the implicit form F(y, y') = 0 that IDA integrates, for both contact formulations:
+///  - rigid contact (a DAE, index 2 with Gear-Gupta-Leimkuhler stabilisation): unknowns
+///    q = (y, z, roll, yaw), their rates v, the spin rate Omega, the normal forces N_L, N_R
+///    (scaled) and the GGL multipliers mu_L, mu_R; equations q' = v - G^T mu, the Newton-Euler
+///    equations with the contact forces N_i n_z,i G_i, gap_i(q) = 0 and G_i v = 0, G_i the gap
+///    gradients of the contact reply;
+///  - elastic contact (an ODE in implicit form): q, v, Omega; the normal forces come from the
+///    penetration in the contact reply.
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "core/dynamics/wheelset_parameters.hpp"
+#include "core/models/contact_model.hpp"
+
+namespace wrc {
+
+/// Index of each unknown in the state vector.
+enum WheelsetUnknown : int {
+  kUnknownY = 0,      ///< lateral shift [m]
+  kUnknownZ,          ///< centre height above the top-of-rail plane [m]
+  kUnknownRoll,       ///< [rad]
+  kUnknownYaw,        ///< [rad]
+  kUnknownYDot,       ///< [m/s]
+  kUnknownZDot,       ///< [m/s]
+  kUnknownRollDot,    ///< [rad/s]
+  kUnknownYawDot,     ///< [rad/s]
+  kUnknownSpinRate,   ///< Omega [rad/s]
+  kUnknownNormalLeft,   ///< rigid only: N_L / force_scale [-]
+  kUnknownNormalRight,  ///< rigid only: N_R / force_scale [-]
+  kUnknownMuLeft,       ///< rigid only: GGL multiplier of the left gap [m/s]
+  kUnknownMuRight,      ///< rigid only: GGL multiplier of the right gap [m/s]
+};
+
+constexpr int kElasticUnknowns = 9;
+constexpr int kRigidUnknowns = 13;
+constexpr int kPoseUnknowns = 4;
+
+/// Number of unknowns of a formulation.
+constexpr int unknown_count(ContactFormulation f) {
+  return f == ContactFormulation::kRigid ? kRigidUnknowns : kElasticUnknowns;
+}
+
+/// The equations of one wheelset with fixed parameters.
+class WheelsetEquations {
+ public:
+  /// @param z_reference height of the centred wheelset in contact, where the vertical
+  ///        suspension is relaxed [m].
+  WheelsetEquations(WheelsetParameters parameters, double z_reference, double nominal_radius);
+
+  const WheelsetParameters& parameters() const { return parameters_; }
+  double force_scale() const { return force_scale_; }  ///< N per unit of the scaled normal forces [N]
+  double nominal_radius() const { return nominal_radius_; }
+  double z_reference() const { return z_reference_; }
+  void set_z_reference(double z) { z_reference_ = z; }  ///< [m]
+
+  /// The contact query at state y (formulation f): pose and rates, rigid loads N_i, the tracked
+  /// branches, material and grid.
+  ContactQuery query(ContactFormulation f, const double* y, const std::array<double, 2>& tracked_s) const;
+
+  /// F(y, y') with the contact result of query(f, y): writes unknown_count(f) values to residual.
+  void residual(ContactFormulation f, const double* y, const double* yp, const ContactResult& contact,
+                double* residual) const;
+
+  /// dF/dy' (constant, diagonal): the coefficient of each y'_k in row k [SI].
+  double derivative_coefficient(ContactFormulation f, int k) const;
+
+  /// The generalised forces (y, z, roll, yaw) and the axle moment of everything but the
+  /// constraint forces: external loads, suspension, contact (elastic: all of it; rigid: creep
+  /// only) [N, N, N m, N m] and [N m].
+  Eigen::Vector4d applied_forces(ContactFormulation f, const double* y, const ContactResult& contact,
+                                 double* axle_moment) const;
+
+  /// The normal force of wheel i at state y [N]: rigid, from the unknowns; elastic, the sum of the
+  /// wheel's patches in contact.
+  double normal_force(ContactFormulation f, const double* y, const ContactResult& contact, int wheel) const;
+
+  /// The mass matrix of (y, z, roll, yaw) [kg, kg, kg m^2, kg m^2].
+  Eigen::Vector4d mass_diagonal() const;
+
+ private:
+  WheelsetParameters parameters_;
+  double z_reference_;
+  double nominal_radius_;
+  double force_scale_;
+};
+
+}  // namespace wrc

@@ -1,0 +1,161 @@
+#pragma once
+/// @file
+/// A wheelset run: the equations of wheelset_equations.hpp integrated by SUNDIALS IDA step by
+/// step, with the contact from a ContactEvaluator, events where the contact point jumps, restarts
+/// with consistent initial values, and model swaps at step boundaries.
+
+#include <array>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/dynamics/contact_evaluator.hpp"
+#include "core/dynamics/run_counters.hpp"
+#include "core/dynamics/sundials_support.hpp"
+#include "core/dynamics/wheelset_equations.hpp"
+#include "core/dynamics/wheelset_parameters.hpp"
+
+namespace wrc {
+
+/// Contact of one wheel at an output time.
+struct WheelOutput {
+  double s_wheel = 0;        ///< wheel profile coordinate of the contact point [m]
+  double contact_angle = 0;  ///< [rad]
+  double normal_force = 0;   ///< [N] (elastic: sum over the wheel's patches)
+};
+
+/// The wheelset at one time, in the conventions of `wrc geometry` (z = height of the centre above
+/// the top-of-rail plane).
+struct WheelsetSnapshot {
+  double t = 0;          ///< simulated time [s]
+  double y = 0;          ///< [m]
+  double z = 0;          ///< [m]
+  double roll = 0;       ///< [rad]
+  double yaw = 0;        ///< [rad]
+  double y_dot = 0;      ///< [m/s]
+  double z_dot = 0;      ///< [m/s]
+  double roll_dot = 0;   ///< [rad/s]
+  double yaw_dot = 0;    ///< [rad/s]
+  double spin_rate = 0;  ///< [rad/s]
+  std::array<WheelOutput, 2> wheels;  ///< left [0], right [1]
+  std::string model;     ///< contact model in use
+};
+
+/// A model swap that took effect.
+struct SwapRecord {
+  double t = 0;        ///< simulated time of the step boundary where it took effect [s]
+  std::string from;    ///< model before
+  std::string to;      ///< model after
+};
+
+/// One located switch of a wheel's contact point (or regime).
+struct SwitchRecord {
+  double t = 0;        ///< [s]
+  int wheel = 0;       ///< 0 left, 1 right
+  double s_from = 0;   ///< wheel coordinate before [m]
+  double s_to = 0;     ///< after [m]
+};
+
+/// How a run ends.
+enum class RunState { kRunning, kFinished, kFailed, kStopped };
+
+class WheelsetSimulation {
+ public:
+  /// @param nominal_radius r0 of the wheel profile (nominal spin V / r0) [m].
+  /// @throws std::invalid_argument for an invalid spec or a null contact.
+  WheelsetSimulation(RunSpec spec, std::shared_ptr<ContactEvaluator> contact, double nominal_radius);
+  ~WheelsetSimulation();
+  WheelsetSimulation(const WheelsetSimulation&) = delete;
+  WheelsetSimulation& operator=(const WheelsetSimulation&) = delete;
+
+  /// Called with every output sample (t = 0, every output period, t_end).
+  void on_output(std::function<void(const WheelsetSnapshot&)> callback) { on_output_ = std::move(callback); }
+
+  /// Consistent initial values at t = 0 and the first output. Throws std::runtime_error when no
+  /// consistent state exists (the message says why).
+  void start();
+  /// One integrator step, with the outputs, events and restarts it passes. A pending swap takes
+  /// effect first. Returns false once the run is over (state() says how).
+  bool advance();
+  /// Runs advance() until the end.
+  void run();
+
+  /// Takes effect at the next step boundary (the next advance()).
+  void request_swap(std::shared_ptr<ContactEvaluator> next);
+  /// A swap to next at exactly time t (the integrator stops there): reproduces a swap recorded at t.
+  void schedule_swap(double t, std::shared_ptr<ContactEvaluator> next);
+  /// Ends the run at the next step boundary with RunState::kStopped.
+  void request_stop() { stop_requested_ = true; }
+
+  RunState state() const { return state_; }
+  const std::string& message() const { return message_; }
+  double time() const { return t_; }
+  std::string model() const { return contact_->model(); }
+  ContactFormulation formulation() const { return formulation_; }
+  /// The wheelset now (after the last step).
+  WheelsetSnapshot snapshot();
+  /// Counters summed over the whole run.
+  RunCounters counters() const;
+  const std::vector<SwapRecord>& swaps() const { return swaps_; }
+  const std::vector<SwitchRecord>& switches() const { return switch_log_; }
+  const RunSpec& spec() const { return spec_; }
+  const WheelsetEquations& equations() const { return equations_; }
+
+  /// IDA's residual, Jacobian and event callbacks (public for the C trampolines only).
+  int residual_callback(const double* y, const double* yp, double* r);
+  int jacobian_callback(double cj, const double* y, const double* yp, const double* r, SUNMatrix jac);
+  int root_callback(const double* y, double* g);
+
+ private:
+  struct CachedContact {
+    std::vector<double> key;
+    ContactResult result;
+  };
+  const ContactResult& contact_at(const double* y);
+  std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch);
+  int query_length() const;
+
+  void project_positions(std::vector<double>& y);
+  void project_velocities(std::vector<double>& y);
+  void settle_elastic(std::vector<double>& y, double target_vertical, double target_roll);
+  /// y' consistent with y (rigid: also the normal forces in y, the multipliers set to 0).
+  void consistent_derivatives(std::vector<double>& y, std::vector<double>& yp);
+  void begin_segment(std::vector<double> y, bool first);
+  void perform_swap(std::shared_ptr<ContactEvaluator> next);
+  void handle_roots();
+  void emit_outputs_until(double t);
+  WheelsetSnapshot snapshot_of(const std::vector<double>& y, double t);
+  RunCounters ida_counters() const;
+  std::vector<double> current_state() const;
+  void fail(const std::string& why);
+
+  RunSpec spec_;
+  WheelsetEquations equations_;
+  std::shared_ptr<ContactEvaluator> contact_;
+  ContactFormulation formulation_ = ContactFormulation::kRigid;
+  std::array<double, 2> tracked_s_;
+  std::function<void(const WheelsetSnapshot&)> on_output_;
+
+  SundialsContext ctx_;
+  std::unique_ptr<SerialVector> y_, yp_, id_, atol_;
+  IdaSolver ida_;
+  double t_ = 0;
+  double next_output_ = 0;
+  long output_index_ = 0;
+  RunState state_ = RunState::kRunning;
+  std::string message_;
+  std::string last_contact_error_;
+  bool stop_requested_ = false;
+  std::shared_ptr<ContactEvaluator> pending_swap_;
+  double scheduled_swap_time_ = -1;
+  std::shared_ptr<ContactEvaluator> scheduled_swap_;
+  RunCounters accumulated_;  // finished segments
+  RunCounters own_;          // counted here, not by IDA (queries, Jacobians, restarts, switches)
+  std::deque<CachedContact> cache_;
+  std::vector<SwapRecord> swaps_;
+  std::vector<SwitchRecord> switch_log_;
+};
+
+}  // namespace wrc

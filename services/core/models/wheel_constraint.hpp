@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// The constraint of one wheel (WheelConstraint) from a contact point of the exact geometry or of
+/// a model: the vertical gap, its gradient with respect to the pose, the branch's event function.
+
+#include <vector>
+
+#include "core/geometry/contact_point.hpp"
+#include "core/geometry/wheelset_pose.hpp"
+#include "core/models/contact_model.hpp"
+
+namespace wrc {
+
+/// The axes of the pose's rotations: roll about e_x' = Rz(yaw) e_x, yaw about e_z, spin about
+/// e_axle = Rz(yaw) Rx(roll) e_y (track frame) [-].
+struct PoseAxes {
+  Eigen::Vector3d roll;
+  Eigen::Vector3d yaw;
+  Eigen::Vector3d axle;
+  static PoseAxes at(const WheelsetPose& pose);
+};
+
+/// d distance / d(y, z, roll, yaw) of a contact point at pose [-, -, m/rad, m/rad]. The vertical
+/// distance of a potential point is stationary along the curve C, so to first order it changes
+/// only through the rigid motion of the wheel material at the point (envelope theorem): a
+/// displacement dr of the wheel point changes the vertical distance to the prismatic rail by
+/// n . dr / n_z, with dr = e_y dy, e_z dz, (e_x' x rho) droll, (e_z x rho) dyaw and rho the wheel
+/// point relative to the wheelset centre.
+Eigen::Vector4d vertical_gap_gradient(const ContactPoint& point, const WheelsetPose& pose);
+
+/// The WheelConstraint of a point of the exact geometry (or of an interpolation of it): gap =
+/// distance, gradient by vertical_gap_gradient(), with the given event function and switch target.
+WheelConstraint exact_point_constraint(const ContactPoint& point, const WheelsetPose& pose, double switch_function,
+                                       double switch_s_wheel);
+
+/// The branch of one wheel's potential points that a rigid one-point contact follows.
+struct TrackedBranch {
+  size_t index = 0;                 ///< index of the followed local minimum in the point list
+  double switch_function = kNoSwitch;  ///< see WheelConstraint::switch_function [m]
+  double switch_s_wheel = 0;        ///< s of the minimum to follow after the switch [m] (NaN: none)
+};
+
+/// Chooses the followed minimum among points (potential points of one wheel, ordered by s, at
+/// least one a minimum): the minimum nearest to tracked_s [m], or the lowest one when tracked_s is
+/// NaN. Its event function is the smallest of (distance of another minimum - distance of the
+/// followed one) and (distance of a neighbouring maximum - distance of the followed one): > 0
+/// while the followed point is the lowest, continuous, 0 where another minimum becomes as low
+/// (the one-point contact point jumps) or the followed minimum merges with a maximum and vanishes.
+/// The switch target is the other minimum that is lowest.
+/// @throws std::invalid_argument when points holds no minimum.
+TrackedBranch track_branch(const std::vector<ContactPoint>& points, double tracked_s);
+
+}  // namespace wrc

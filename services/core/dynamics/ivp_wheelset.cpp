@@ -2,18 +2,16 @@
 
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
-#include <sundials/sundials_context.h>
 #include <sundials/sundials_types.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+
+#include "core/dynamics/sundials_support.hpp"
 
 namespace wrc {
 namespace {
@@ -305,59 +303,16 @@ IvpWheelsetResidualStatus residual_into(const IvpWheelsetParameters& p, const do
 }
 
 // ---------------------------------------------------------------------------------------------
-// SUNDIALS plumbing: RAII owners and flag checks.
+// IDA glue (the RAII owners and the flag check are core/dynamics/sundials_support.hpp's).
 
 std::string flag_name(long flag) {
-  char* name = IDAGetReturnFlagName(flag);
+  char* name = IDAGetReturnFlagName(flag);  // malloc'ed by SUNDIALS
   std::string result = name != nullptr ? name : "unknown";
   std::free(name);
   return result;
 }
 
-void check_flag(int flag, const char* function) {
-  if (flag >= 0) return;
-  std::ostringstream msg;
-  msg << "ivp wheelset: " << function << " failed with flag " << flag << " (" << flag_name(flag) << ")";
-  throw std::runtime_error(msg.str());
-}
-
-template <typename T>
-T* check_created(T* object, const char* function) {
-  if (object == nullptr) throw std::runtime_error(std::string("ivp wheelset: ") + function + " returned NULL");
-  return object;
-}
-
-struct ContextDeleter {
-  void operator()(SUNContext ctx) const { SUNContext_Free(&ctx); }
-};
-struct VectorDeleter {
-  void operator()(N_Vector v) const { N_VDestroy(v); }
-};
-struct MatrixDeleter {
-  void operator()(SUNMatrix m) const { SUNMatDestroy(m); }
-};
-struct SolverDeleter {
-  void operator()(SUNLinearSolver s) const { SUNLinSolFree(s); }
-};
-struct IdaDeleter {
-  void operator()(void* mem) const { IDAFree(&mem); }
-};
-
-using ContextPtr = std::unique_ptr<std::remove_pointer_t<SUNContext>, ContextDeleter>;
-using VectorPtr = std::unique_ptr<std::remove_pointer_t<N_Vector>, VectorDeleter>;
-using MatrixPtr = std::unique_ptr<std::remove_pointer_t<SUNMatrix>, MatrixDeleter>;
-using SolverPtr = std::unique_ptr<std::remove_pointer_t<SUNLinearSolver>, SolverDeleter>;
-using IdaPtr = std::unique_ptr<void, IdaDeleter>;
-
-VectorPtr make_vector(SUNContext ctx) {
-  return VectorPtr(check_created(N_VNew_Serial(kIvpWheelsetDimension, ctx), "N_VNew_Serial"));
-}
-
-void copy_to(const IvpWheelsetVector& from, N_Vector to) { std::copy(from.begin(), from.end(), N_VGetArrayPointer(to)); }
-void copy_from(N_Vector from, IvpWheelsetVector& to) {
-  const sunrealtype* data = N_VGetArrayPointer(from);
-  std::copy(data, data + kIvpWheelsetDimension, to.begin());
-}
+void copy_from(const double* data, IvpWheelsetVector& to) { std::copy(data, data + kIvpWheelsetDimension, to.begin()); }
 
 struct ResidualData {
   const IvpWheelsetParameters* parameters = nullptr;
@@ -373,20 +328,20 @@ int ida_residual(sunrealtype, N_Vector yy, N_Vector yp, N_Vector rr, void* user_
   return 1;  // recoverable: IDA retries with a smaller step
 }
 
-IvpWheelsetCounters read_counters(void* mem) {
-  IvpWheelsetCounters c;
-  check_flag(IDAGetNumSteps(mem, &c.steps), "IDAGetNumSteps");
-  check_flag(IDAGetNumResEvals(mem, &c.residual_evaluations), "IDAGetNumResEvals");
-  check_flag(IDAGetNumLinResEvals(mem, &c.jacobian_residual_evaluations), "IDAGetNumLinResEvals");
-  check_flag(IDAGetNumJacEvals(mem, &c.jacobian_evaluations), "IDAGetNumJacEvals");
-  check_flag(IDAGetNumLinSolvSetups(mem, &c.linear_solver_setups), "IDAGetNumLinSolvSetups");
-  check_flag(IDAGetNumErrTestFails(mem, &c.error_test_failures), "IDAGetNumErrTestFails");
-  check_flag(IDAGetNumNonlinSolvIters(mem, &c.nonlinear_iterations), "IDAGetNumNonlinSolvIters");
-  check_flag(IDAGetNumNonlinSolvConvFails(mem, &c.nonlinear_convergence_failures), "IDAGetNumNonlinSolvConvFails");
-  check_flag(IDAGetLastOrder(mem, &c.last_order), "IDAGetLastOrder");
+RunCounters read_counters(void* mem) {
+  RunCounters c;
+  check_sundials(IDAGetNumSteps(mem, &c.steps), "IDAGetNumSteps");
+  check_sundials(IDAGetNumResEvals(mem, &c.residual_evals), "IDAGetNumResEvals");
+  check_sundials(IDAGetNumLinResEvals(mem, &c.jacobian_residual_evals), "IDAGetNumLinResEvals");
+  check_sundials(IDAGetNumJacEvals(mem, &c.jacobian_evals), "IDAGetNumJacEvals");
+  check_sundials(IDAGetNumLinSolvSetups(mem, &c.lin_setups), "IDAGetNumLinSolvSetups");
+  check_sundials(IDAGetNumErrTestFails(mem, &c.err_test_fails), "IDAGetNumErrTestFails");
+  check_sundials(IDAGetNumNonlinSolvIters(mem, &c.nonlin_iters), "IDAGetNumNonlinSolvIters");
+  check_sundials(IDAGetNumNonlinSolvConvFails(mem, &c.nonlin_conv_fails), "IDAGetNumNonlinSolvConvFails");
+  check_sundials(IDAGetLastOrder(mem, &c.last_order), "IDAGetLastOrder");
   sunrealtype h = 0;
-  check_flag(IDAGetLastStep(mem, &h), "IDAGetLastStep");
-  c.last_step_size = h;
+  check_sundials(IDAGetLastStep(mem, &h), "IDAGetLastStep");
+  c.last_step = h;
   return c;
 }
 
@@ -487,43 +442,34 @@ IvpWheelsetRun integrate_ivp_wheelset(const IvpWheelsetParameters& parameters, c
     }
   }
 
-  SUNContext raw_ctx = nullptr;
-  check_flag(SUNContext_Create(nullptr, &raw_ctx), "SUNContext_Create");
-  const ContextPtr ctx(raw_ctx);
-
-  const VectorPtr yy = make_vector(ctx.get());
-  const VectorPtr yp = make_vector(ctx.get());
-  const VectorPtr id = make_vector(ctx.get());
-  const VectorPtr atol = make_vector(ctx.get());
-  copy_to(initial.y, yy.get());
-  copy_to(initial.yp, yp.get());
-  sunrealtype* id_data = N_VGetArrayPointer(id.get());
-  sunrealtype* atol_data = N_VGetArrayPointer(atol.get());
+  const SundialsContext ctx;
+  const SerialVector yy(kIvpWheelsetDimension, ctx.get());
+  const SerialVector yp(kIvpWheelsetDimension, ctx.get());
+  const SerialVector id(kIvpWheelsetDimension, ctx.get());
+  const SerialVector atol(kIvpWheelsetDimension, ctx.get());
+  std::copy(initial.y.begin(), initial.y.end(), yy.data());
+  std::copy(initial.yp.begin(), initial.yp.end(), yp.data());
   for (int i = 0; i < kIvpWheelsetDimension; ++i) {
-    id_data[i] = i <= kIvpSpinRate ? 1.0 : 0.0;
-    atol_data[i] = options.absolute_tolerance;
+    id.data()[i] = i <= kIvpSpinRate ? 1.0 : 0.0;  // positions, velocities, spin rate are differential
+    atol.data()[i] = options.absolute_tolerance;
   }
   if (!options.suppress_algebraic_error_test) {
-    atol_data[kIvpLeftMultiplier] = 1e10;
-    atol_data[kIvpRightMultiplier] = 1e10;
+    atol.data()[kIvpLeftMultiplier] = 1e10;
+    atol.data()[kIvpRightMultiplier] = 1e10;
   }
 
-  const MatrixPtr matrix(
-      check_created(SUNDenseMatrix(kIvpWheelsetDimension, kIvpWheelsetDimension, ctx.get()), "SUNDenseMatrix"));
-  const SolverPtr solver(check_created(SUNLinSol_Dense(yy.get(), matrix.get(), ctx.get()), "SUNLinSol_Dense"));
-  // Declared after the objects it uses, so that it is freed first.
-  const IdaPtr mem(check_created(IDACreate(ctx.get()), "IDACreate"));
   ResidualData data;
   data.parameters = &parameters;
-  check_flag(IDAInit(mem.get(), ida_residual, initial.t, yy.get(), yp.get()), "IDAInit");
-  check_flag(IDASVtolerances(mem.get(), options.relative_tolerance, atol.get()), "IDASVtolerances");
-  check_flag(IDASetUserData(mem.get(), &data), "IDASetUserData");
-  check_flag(IDASetLinearSolver(mem.get(), solver.get(), matrix.get()), "IDASetLinearSolver");
-  check_flag(IDASetId(mem.get(), id.get()), "IDASetId");
-  check_flag(IDASetSuppressAlg(mem.get(), options.suppress_algebraic_error_test ? SUNTRUE : SUNFALSE),
-             "IDASetSuppressAlg");
-  check_flag(IDASetMaxNumSteps(mem.get(), options.max_steps), "IDASetMaxNumSteps");
-  check_flag(IDASetStopTime(mem.get(), t_end), "IDASetStopTime");
+  IdaSolver ida;  // IDACreate, IDAInit and the dense linear solver (difference-quotient Jacobian)
+  ida.create(ctx.get(), ida_residual, initial.t, yy.get(), yp.get());
+  void* mem = ida.mem();
+  check_sundials(IDASVtolerances(mem, options.relative_tolerance, atol.get()), "IDASVtolerances");
+  check_sundials(IDASetUserData(mem, &data), "IDASetUserData");
+  check_sundials(IDASetId(mem, id.get()), "IDASetId");
+  check_sundials(IDASetSuppressAlg(mem, options.suppress_algebraic_error_test ? SUNTRUE : SUNFALSE),
+                 "IDASetSuppressAlg");
+  check_sundials(IDASetMaxNumSteps(mem, options.max_steps), "IDASetMaxNumSteps");
+  check_sundials(IDASetStopTime(mem, t_end), "IDASetStopTime");
 
   IvpWheelsetState state = initial;
   sunrealtype t = initial.t;
@@ -534,26 +480,25 @@ IvpWheelsetRun integrate_ivp_wheelset(const IvpWheelsetParameters& parameters, c
           << t_end << " s";
       throw std::runtime_error(msg.str());
     }
-    const int flag = IDASolve(mem.get(), t_end, &t, yy.get(), yp.get(), IDA_ONE_STEP);
+    const int flag = IDASolve(mem, t_end, &t, yy.get(), yp.get(), IDA_ONE_STEP);
     if (flag < 0) {
       std::ostringstream msg;
-      msg << "ivp wheelset: IDASolve failed with flag " << flag << " (" << flag_name(flag) << ") at t = " << t
-          << " s";
+      msg << "IDASolve failed with flag " << flag << " (" << flag_name(flag) << ") at t = " << t << " s";
       if (data.last_failure != IvpWheelsetResidualStatus::kOk) {
         msg << "; last residual failure: " << to_string(data.last_failure);
       }
       throw std::runtime_error(msg.str());
     }
     state.t = t;
-    copy_from(yy.get(), state.y);
-    copy_from(yp.get(), state.yp);
+    copy_from(yy.data(), state.y);
+    copy_from(yp.data(), state.yp);
     if (observer) observer(state);
     if (flag == IDA_TSTOP_RETURN || t >= t_end) break;
   }
 
   IvpWheelsetRun run;
   run.final_state = state;
-  run.counters = read_counters(mem.get());
+  run.counters = read_counters(mem);
   return run;
 }
 

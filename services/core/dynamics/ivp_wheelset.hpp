@@ -20,6 +20,8 @@
 #include <array>
 #include <functional>
 
+#include "core/dynamics/run_counters.hpp"
+
 namespace wrc {
 
 /// Number of unknowns of the wheelset DAE.
@@ -147,24 +149,10 @@ struct IvpWheelsetIntegratorOptions {
   long max_steps = 2'000'000;         ///< bound on the internal steps to t_end [-]
 };
 
-/// Integrator statistics (IDA's counters) for one run.
-struct IvpWheelsetCounters {
-  long steps = 0;                           ///< internal steps taken [-]
-  long residual_evaluations = 0;            ///< F evaluations by the nonlinear solver [-]
-  long jacobian_residual_evaluations = 0;   ///< F evaluations of the difference-quotient Jacobian [-]
-  long jacobian_evaluations = 0;            ///< Jacobian evaluations [-]
-  long linear_solver_setups = 0;            ///< LU factorisations [-]
-  long error_test_failures = 0;             ///< steps rejected by the error test [-]
-  long nonlinear_iterations = 0;            ///< Newton iterations [-]
-  long nonlinear_convergence_failures = 0;  ///< steps rejected for Newton failures [-]
-  int last_order = 0;                       ///< BDF order of the last step [-]
-  double last_step_size = 0;                ///< size of the last step [s]
-};
-
 /// The end of a run.
 struct IvpWheelsetRun {
   IvpWheelsetState final_state;   ///< state at t_end (units per IvpWheelsetComponent)
-  IvpWheelsetCounters counters;   ///< IDA statistics
+  RunCounters counters;           ///< IDA statistics (one run, no restarts: the event fields stay 0)
 };
 
 /// Called after every internal step with the state there (for monitoring, e.g. constraint drift).

@@ -163,7 +163,8 @@ using IvpWheelsetStepObserver = std::function<void(const IvpWheelsetState&)>;
 /// time so that the last state is at t_end exactly. `initial` must be consistent (as
 /// ivp_wheelset_initial_state() is): IDACalcIC is not used, because with the wheelset at rest the
 /// index-2 constraint G v does not depend on the algebraic unknowns, so the system IDACalcIC would
-/// solve is singular; the consistency is checked instead (max |F| <= 1e-6 in the units of F).
+/// solve is singular (tried: on perturbed values it reports success and leaves |F| ~ 0.08 N); the
+/// consistency is checked instead (max |F| <= 1e-6 in the units of F).
 /// @param t_end end time [s], > initial.t.
 /// @throws std::invalid_argument for bad tolerances, t_end or an inconsistent initial state;
 /// std::runtime_error naming the SUNDIALS function and its flag when a call fails.

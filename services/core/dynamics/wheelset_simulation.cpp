@@ -278,7 +278,7 @@ void WheelsetSimulation::consistent_derivatives(std::vector<double>& y, std::vec
     y[kUnknownNormalLeft] += x[4];
     y[kUnknownNormalRight] += x[5];
     for (int k = 0; k < 4; ++k) yp[kPoseUnknowns + k] = x[k];
-    if (change < 1e-12) break;
+    if (change < 1e-10) break;
   }
   // The spin and the pose rows with the final N.
   std::vector<double> zero(static_cast<size_t>(n), 0.0);

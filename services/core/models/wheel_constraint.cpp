@@ -52,6 +52,16 @@ TrackedBranch track_branch(const std::vector<ContactPoint>& points, double track
   TrackedBranch branch;
   branch.index = followed;
   branch.switch_s_wheel = std::numeric_limits<double>::quiet_NaN();
+  if (!std::isnan(tracked_s) && std::abs(points[followed].s - tracked_s) > kBranchLostDistance) {
+    // The followed minimum has merged with a maximum and vanished: an event at once, onto the
+    // lowest minimum there is.
+    size_t lowest = followed;
+    for (size_t k = 0; k < points.size(); ++k)
+      if (points[k].is_minimum && points[k].distance < points[lowest].distance) lowest = k;
+    branch.switch_function = -kBranchLostDistance;
+    branch.switch_s_wheel = points[lowest].s;
+    return branch;
+  }
   const double d = points[followed].distance;
   for (size_t k = 0; k < points.size(); ++k) {
     if (k == followed || !points[k].is_minimum) continue;

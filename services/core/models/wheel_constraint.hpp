@@ -33,6 +33,10 @@ Eigen::Vector4d vertical_gap_gradient(const ContactPoint& point, const WheelsetP
 WheelConstraint exact_point_constraint(const ContactPoint& point, const WheelsetPose& pose, double switch_function,
                                        double switch_s_wheel);
 
+/// How far the nearest minimum may lie from the followed point's last position before the
+/// followed branch counts as vanished [m].
+constexpr double kBranchLostDistance = 3e-3;
+
 /// The branch of one wheel's potential points that a rigid one-point contact follows.
 struct TrackedBranch {
   size_t index = 0;                 ///< index of the followed local minimum in the point list
@@ -47,6 +51,11 @@ struct TrackedBranch {
 /// while the followed point is the lowest, continuous, 0 where another minimum becomes as low
 /// (the one-point contact point jumps) or the followed minimum merges with a maximum and vanishes.
 /// The switch target is the other minimum that is lowest.
+/// A followed minimum that has vanished (the nearest minimum lies more than kBranchLostDistance
+/// from tracked_s: beyond the fold the event function has no continuation) gives a negative event
+/// function, so that an integrator brackets the fold as the sign change, and the lowest minimum
+/// as the target. The caller updates tracked_s with every accepted step, along which a contact
+/// point moves much less than that.
 /// @throws std::invalid_argument when points holds no minimum.
 TrackedBranch track_branch(const std::vector<ContactPoint>& points, double tracked_s);
 

@@ -1,5 +1,7 @@
 // wrc launch [services...]: starts the services of a launch profile and supervises them until
-// Ctrl-C or SIGTERM (restart with back-off when one dies; every child stopped on exit).
+// Ctrl-C or SIGTERM: restart with back-off when one dies, kill and restart when its heartbeats
+// stop (hung or SIGSTOPped), every child stopped on exit. Creates the bus key on first use
+// (bus/bus_key.hpp) and hands its path to the services in $WRC_BUS_KEY.
 
 #include <chrono>
 #include <filesystem>
@@ -7,8 +9,13 @@
 #include <thread>
 
 #include "bus/build_paths.hpp"
+#include "bus/bus_auth.hpp"
+#include "bus/channels.hpp"
+#include "bus/clock.hpp"
+#include "bus/heartbeat_monitor.hpp"
 #include "bus/launch_profile.hpp"
 #include "bus/process_supervisor.hpp"
+#include "bus/service_loop.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
@@ -26,6 +33,8 @@ int run_launch(const std::vector<std::string>& args) {
                   {{"--profile", true, "launch profile file", "profiles/launch/default.txt"},
                    {"--channel-prefix", true, "channel prefix passed to every service", "none"},
                    {"--lcm-url", true, "LCM URL passed to every service", "LCM's default"},
+                   {"--bus-key", true, "bus key file, created when missing", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
+                   {"--hang-periods", true, "restart a service silent for this many of its heartbeat periods", "2"},
                    {"--build-dir", true, "build tree holding the service executables", "this build"},
                    {"--grace", true, "wait after SIGTERM before SIGKILL on stop [s]", "3"},
                    {"--backoff-min", true, "first restart delay [s], doubles per quick failure", "0.25"},
@@ -35,7 +44,8 @@ int run_launch(const std::vector<std::string>& args) {
   if (options.help_requested()) {
     std::cout << options.help()
               << "\nStarts the named services of the profile (all when none is named), restarts a\n"
-                 "service that dies, and stops them all on Ctrl-C or SIGTERM.\n";
+                 "service that dies or whose heartbeats stop, and stops them all on Ctrl-C or SIGTERM.\n"
+                 "The bus key is created on first use (mode 0600); copy it to the other machines of the bus.\n";
     return 0;
   }
   const std::string profile_path = options.text("--profile", default_profile());
@@ -44,6 +54,7 @@ int run_launch(const std::vector<std::string>& args) {
   policy.grace = options.number("--grace", 3.0, 0.0, 600.0);
   policy.backoff_min = options.number("--backoff-min", 0.25, 0.01, 600.0);
   policy.backoff_max = options.number("--backoff-max", 8.0, policy.backoff_min, 3600.0);
+  policy.hang_periods = options.number("--hang-periods", 2.0, 1.0, 100.0);
 
   const auto selected = bus::select_services(bus::read_launch_profile(profile_path), options.positional());
   std::vector<bus::ChildSpec> children;
@@ -75,12 +86,22 @@ int run_launch(const std::vector<std::string>& args) {
     return 1;
   }
 
+  bus::prepare_bus_key(options.text("--bus-key"), "launch");
+  auto lcm = bus::open_lcm(options.text("--lcm-url"));
+  const bus::ChannelNames names(options.text("--channel-prefix"));
+  bus::HeartbeatMonitor heartbeats(*lcm, names.name(bus::channel::kHeartbeat));
+
   bus::ShutdownSignal::install();
   bus::ProcessSupervisor supervisor(std::move(children), policy, std::cerr);
   supervisor.start_all();
   while (!bus::ShutdownSignal::requested()) {
+    lcm->handleTimeout(20);  // heartbeats of the children (and of everyone else)
+    while (lcm->handleTimeout(0) > 0) {
+    }
+    for (const bus::ServiceStatus& s : heartbeats.services(bus::monotonic_seconds())) {
+      supervisor.heartbeat_seen(s.last.pid, s.last.period, s.last_seen);
+    }
     supervisor.poll();
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   std::cerr << "launch: signal " << bus::ShutdownSignal::signal_number() << " received, stopping "
             << supervisor.children().size() << " services\n";

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "bus/build_paths.hpp"
+#include "bus/bus_auth.hpp"
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
 #include "bus/heartbeat_monitor.hpp"
@@ -249,6 +250,7 @@ int run_query(const std::vector<std::string>& args) {
       {"--start-timeout", true, "wait for a started service to be READY [s]", "300"},
       {"--channel-prefix", true, "channel prefix of the simulation", "none"},
       {"--lcm-url", true, "LCM URL", "LCM's default"},
+      {"--bus-key", true, "bus key file (created when missing)", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
       {"--build-dir", true, "build tree holding wrc-contactd", "this build"},
       {"--format", true, "csv or table", "csv"}};
   for (auto& spec : profile_option_specs()) specs.push_back(spec);
@@ -320,6 +322,7 @@ int run_query(const std::vector<std::string>& args) {
 
   // Find the service, or start one.
   const bus::ChannelNames names(o.text("--channel-prefix"));
+  bus::prepare_bus_key(o.text("--bus-key"), "query");  // it may start services: they use this key
   auto lcm = bus::open_lcm(o.text("--lcm-url"));
   bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
   const std::string wanted = o.text("--instance");

@@ -1,5 +1,7 @@
-// wrc status: lists the services on the bus from their heartbeats, with the first 12 hex digits
-// of the geometry key and of the model hash each computes with ("-" when none).
+// wrc status: lists the service processes on the bus from their heartbeats, with the first 12 hex
+// digits of the geometry key and of the model hash each computes with ("-" when none) and the
+// messages each dropped (unsigned/bad signature/replayed/malformed). Two processes claiming one
+// model and instance name show as two lines, the newer one DUPLICATE with its reason.
 
 #include <cmath>
 #include <iomanip>
@@ -8,6 +10,7 @@
 
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
+#include "bus/drop_counters.hpp"
 #include "bus/heartbeat_monitor.hpp"
 #include "bus/service_loop.hpp"
 #include "cli/command.hpp"
@@ -26,6 +29,7 @@ const char* state_name(std::int8_t state) {
     case wrc::heartbeat_t::STARTING: return "STARTING";
     case wrc::heartbeat_t::READY: return "READY";
     case wrc::heartbeat_t::DRAINING: return "DRAINING";
+    case wrc::heartbeat_t::DUPLICATE: return "DUPLICATE";
     default: return "UNKNOWN";
   }
 }
@@ -35,19 +39,22 @@ int run_status(const std::vector<std::string>& args) {
                   {{"--duration", true, "how long to listen for heartbeats [s]", "1.5"},
                    {"--channel-prefix", true, "channel prefix of the simulation", "none"},
                    {"--lcm-url", true, "LCM URL", "LCM's default"},
+                   {"--bus-key", true, "bus key file", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
                    {"--all", false, "also list services whose heartbeats stopped while listening", ""},
                    {"--format", true, "table or csv", "table"}},
                   args);
   if (options.help_requested()) {
     std::cout << options.help() << "\nOne line per live service: model, instance, pid, state, load, the\n"
                                    "first 12 hex digits of its geometry key and model hash (- when none)\n"
-                                   "and its request channel.\n";
+                                   "messages it dropped (DROPPED u/s/r/m: unsigned, bad signature, replayed\n"
+                                   "or stale, malformed) and its request channel; a DUPLICATE line is followed\n"
+                                   "by why it refuses to serve.\n";
     return 0;
   }
   const double duration = options.number("--duration", 1.5, 0.05, 3600.0);
   const std::string format = options.choice("--format", {"table", "csv"}, "table");
   const bus::ChannelNames names(options.text("--channel-prefix"));
-  auto lcm = bus::open_lcm(options.text("--lcm-url"));
+  auto lcm = bus::open_lcm(options.text("--lcm-url"), options.text("--bus-key"));
   bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
   const double end = bus::monotonic_seconds() + duration;
   for (double left = duration; left > 0.0; left = end - bus::monotonic_seconds()) {
@@ -57,12 +64,12 @@ int run_status(const std::vector<std::string>& args) {
   std::ostringstream out;
   if (format == "csv") {
     out << "model,instance,pid,state,alive,version,uptime,handled,rejected,latency_p95,geometry_key,model_hash,"
-           "request_channel\n";
+           "dropped_unsigned,dropped_bad_signature,dropped_replayed,dropped_malformed,state_reason,request_channel\n";
   } else {
     out << std::left << std::setw(12) << "MODEL" << std::setw(10) << "INSTANCE" << std::setw(8) << "PID"
         << std::setw(10) << "STATE" << std::setw(10) << "UPTIME[s]" << std::setw(10) << "HANDLED"
         << std::setw(9) << "REJECTED" << std::setw(14) << "P95[s]" << std::setw(14) << "GEOMETRY" << std::setw(14)
-        << "MODEL-HASH" << "CHANNEL\n";
+        << "MODEL-HASH" << std::setw(14) << "DROPPED" << "CHANNEL\n";
   }
   int shown = 0;
   for (const auto& s : monitor.services(now)) {
@@ -76,19 +83,30 @@ int run_status(const std::vector<std::string>& args) {
       out << hb.model << "," << hb.instance << "," << hb.pid << "," << state << "," << (s.alive ? 1 : 0)
           << "," << hb.interface_version << "," << hb.uptime << "," << hb.requests_handled << ","
           << hb.requests_rejected << "," << hb.latency_p95 << "," << short_hash(hb.geometry_key) << ","
-          << short_hash(hb.model_hash) << "," << hb.request_channel << "\n";
+          << short_hash(hb.model_hash) << "," << hb.dropped_unsigned << "," << hb.dropped_bad_signature << ","
+          << hb.dropped_replayed << "," << hb.dropped_malformed << ",\"" << hb.state_reason << "\","
+          << hb.request_channel << "\n";
     } else {
       std::ostringstream uptime;
       uptime << std::fixed << std::setprecision(1) << hb.uptime;
       out << std::left << std::setw(12) << hb.model << std::setw(10) << hb.instance << std::setw(8) << hb.pid
           << std::setw(10) << state << std::setw(10) << uptime.str() << std::setw(10) << hb.requests_handled
           << std::setw(9) << hb.requests_rejected << std::setw(14) << hb.latency_p95 << std::setw(14)
-          << short_hash(hb.geometry_key) << std::setw(14) << short_hash(hb.model_hash) << hb.request_channel << "\n";
+          << short_hash(hb.geometry_key) << std::setw(14) << short_hash(hb.model_hash) << std::setw(14)
+          << (std::to_string(hb.dropped_unsigned) + "/" + std::to_string(hb.dropped_bad_signature) + "/" +
+              std::to_string(hb.dropped_replayed) + "/" + std::to_string(hb.dropped_malformed))
+          << hb.request_channel << "\n";
+      if (!hb.state_reason.empty()) out << "  " << state << ": " << hb.state_reason << "\n";
     }
   }
   std::cout << out.str();
   if (shown == 0) std::cerr << "status: no live service heard within " << duration << " s\n";
-  if (monitor.rejected() > 0) std::cerr << "status: " << monitor.rejected() << " heartbeats did not decode\n";
+  if (monitor.rejected() > 0) {
+    const bus::DropCounts drops = bus::drop_counts();
+    std::cerr << "status: dropped " << monitor.rejected() << " heartbeats here (" << drops.unsigned_messages()
+              << " unsigned, " << drops.bad_signature() << " bad signature, " << drops.replayed()
+              << " replayed or stale, " << drops.malformed() << " malformed)\n";
+  }
   return 0;
 }
 

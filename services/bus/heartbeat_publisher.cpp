@@ -8,6 +8,8 @@
 #include <stdexcept>
 
 #include "bus/clock.hpp"
+#include "bus/drop_counters.hpp"
+#include "bus/signed_publish.hpp"
 
 namespace wrc::bus {
 
@@ -18,6 +20,7 @@ HeartbeatPublisher::HeartbeatPublisher(lcm::LCM& lcm, std::string channel, Servi
       identity_(std::move(identity)),
       period_(period),
       started_(monotonic_seconds()),
+      started_utime_(wall_utime()),
       last_sent_(-1e300),
       stamper_(sender_name(identity_.program, identity_.instance)) {
   if (!(period > 0.0) || !std::isfinite(period)) {
@@ -25,8 +28,9 @@ HeartbeatPublisher::HeartbeatPublisher(lcm::LCM& lcm, std::string channel, Servi
   }
 }
 
-void HeartbeatPublisher::set_state(std::int8_t state) {
+void HeartbeatPublisher::set_state(std::int8_t state, std::string reason) {
   state_ = state;
+  state_reason_ = std::move(reason);
   publish_now();
 }
 
@@ -61,7 +65,14 @@ void HeartbeatPublisher::publish_now() {
   hb.latency_max = load_.latency_max;
   hb.geometry_key = geometry_key_;
   hb.model_hash = model_hash_;
-  if (lcm_.publish(channel_, &hb) != 0) {
+  hb.started_utime = started_utime_;
+  hb.state_reason = state_reason_;
+  const DropCounts drops = drop_counts();
+  hb.dropped_unsigned = drops.unsigned_messages();
+  hb.dropped_bad_signature = drops.bad_signature();
+  hb.dropped_replayed = drops.replayed();
+  hb.dropped_malformed = drops.malformed();
+  if (publish_signed(lcm_, channel_, hb) != 0) {
     std::cerr << stamper_.sender() << ": publishing the heartbeat on " << channel_ << " failed\n";
   }
   last_sent_ = now;

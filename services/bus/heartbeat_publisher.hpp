@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// Periodic heartbeat of a service process: who it is (model, instance, pid, request channel),
-/// its state (STARTING, READY, DRAINING), its load, the geometry key and model hash it computes
-/// with, and the interface version it was built with.
+/// its state (STARTING, READY, DRAINING, DUPLICATE) and why, its load, the geometry key and model
+/// hash it computes with, the interface version it was built with, when it started, and the
+/// messages it dropped (bus/drop_counters.hpp). Signed like every message (bus/signed_publish.hpp).
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -30,8 +31,9 @@ class HeartbeatPublisher {
   /// std::invalid_argument naming the value otherwise). Starts in state STARTING.
   HeartbeatPublisher(lcm::LCM& lcm, std::string channel, ServiceIdentity identity, double period);
 
-  /// Changes the state and publishes at once (STARTING, READY, DRAINING of heartbeat_t).
-  void set_state(std::int8_t state);
+  /// Changes the state and publishes at once (STARTING, READY, DRAINING, DUPLICATE of
+  /// heartbeat_t); reason goes into state_reason (empty: nothing to say).
+  void set_state(std::int8_t state, std::string reason = "");
   /// Load figures for the next heartbeats.
   void set_load(const ServiceLoad& load) { load_ = load; }
   /// Geometry key (core/identity/geometry_key.hpp) of the geometry the service computes with
@@ -50,6 +52,12 @@ class HeartbeatPublisher {
 
   /// Current state.
   std::int8_t state() const { return state_; }
+  /// Full bus name of the heartbeat channel.
+  const std::string& channel() const { return channel_; }
+  /// Who this process is.
+  const ServiceIdentity& identity() const { return identity_; }
+  /// [us] wall clock at construction (heartbeat_t::started_utime).
+  std::int64_t started_utime() const { return started_utime_; }
   /// [s] heartbeat period.
   double period() const { return period_; }
   /// Heartbeats published so far.
@@ -61,8 +69,10 @@ class HeartbeatPublisher {
   ServiceIdentity identity_;
   double period_;
   double started_;      // [s] monotonic start time
+  std::int64_t started_utime_;  // [us] wall-clock start time
   double last_sent_;    // [s] monotonic time of the last heartbeat
   std::int8_t state_ = wrc::heartbeat_t::STARTING;
+  std::string state_reason_;
   ServiceLoad load_;
   std::string geometry_key_;
   std::string model_hash_;

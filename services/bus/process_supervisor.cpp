@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -83,17 +84,19 @@ void ProcessSupervisor::start(ChildState& child) {
   ::setpgid(pid, pid);  // also here, so that the group exists before we ever signal it
   child.pid = pid;
   child.started_at = monotonic_seconds();
+  child.last_heartbeat = -1.0;
   std::ostringstream command;
   for (const auto& w : words) command << (command.tellp() > 0 ? " " : "") << w;
   log_ << "launch: started " << child.spec.name << " (pid " << pid << "): " << command.str() << std::endl;
 }
 
-void ProcessSupervisor::on_exit(ChildState& child, int wait_status, double now) {
+void ProcessSupervisor::on_exit(ChildState& child, int wait_status, double now, bool hung) {
   const double ran = now - child.started_at;
   child.failures_in_row = ran >= policy_.stable_after ? 1 : child.failures_in_row + 1;
   double delay = policy_.backoff_min;
   for (int i = 1; i < child.failures_in_row && delay < policy_.backoff_max; ++i) delay *= 2.0;
   delay = std::min(delay, policy_.backoff_max);
+  if (hung && child.failures_in_row <= 1) delay = 0.0;  // its clients already wait: no back-off the first time
   ++child.restarts;
   child.restart_at = now + delay;
   log_ << "launch: " << child.spec.name << " (pid " << child.pid << ") " << describe_exit(wait_status)
@@ -102,13 +105,47 @@ void ProcessSupervisor::on_exit(ChildState& child, int wait_status, double now) 
   child.pid = -1;
 }
 
+void ProcessSupervisor::heartbeat_seen(pid_t pid, double period, double seen_at) {
+  if (pid <= 0 || !(period > 0.0)) return;
+  for (auto& child : children_) {
+    if (child.pid != pid || seen_at <= child.last_heartbeat || seen_at < child.started_at) continue;
+    child.last_heartbeat = seen_at;
+    child.heartbeat_period = period;
+  }
+}
+
+void ProcessSupervisor::kill_hung(ChildState& child, double now) {
+  ++child.hangs;
+  log_ << "launch: " << child.spec.name << " (pid " << child.pid << ") sent no heartbeat for " << std::fixed
+       << std::setprecision(2) << now - child.last_heartbeat << " s (" << std::setprecision(1)
+       << policy_.hang_periods << " periods of " << std::setprecision(2) << child.heartbeat_period
+       << " s): hung or stopped; killing it (SIGKILL)" << std::defaultfloat << std::endl;
+  ::kill(-child.pid, SIGKILL);
+  ::kill(child.pid, SIGKILL);
+  int status = 0;
+  pid_t r = 0;
+  for (int i = 0; i < 200 && (r = ::waitpid(child.pid, &status, WNOHANG)) == 0; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  if (r != child.pid) {
+    log_ << "launch: " << child.spec.name << " (pid " << child.pid << ") not reaped 1 s after SIGKILL" << std::endl;
+    return;  // reaped by a later poll()
+  }
+  on_exit(child, status, monotonic_seconds(), /*hung=*/true);
+}
+
 void ProcessSupervisor::poll() {
   const double now = monotonic_seconds();
   for (auto& child : children_) {
     if (child.pid > 0) {
       int status = 0;
       const pid_t r = ::waitpid(child.pid, &status, WNOHANG);
-      if (r == child.pid) on_exit(child, status, now);
+      if (r == child.pid) {
+        on_exit(child, status, now);
+      } else if (child.last_heartbeat >= 0.0 &&
+                 now - child.last_heartbeat > policy_.hang_periods * child.heartbeat_period) {
+        kill_hung(child, now);
+      }
     }
     if (child.pid < 0 && child.restart_at <= now) start(child);
   }

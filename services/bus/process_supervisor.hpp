@@ -2,7 +2,10 @@
 /// @file
 /// Starts and supervises child processes for `wrc launch`: a child that dies is restarted after
 /// an exponential back-off, with one log line saying which child, its pid, how it ended and when
-/// it restarts; stop_all() ends every child (SIGTERM, then SIGKILL after a grace period).
+/// it restarts; a child whose heartbeats stop (hung, or stopped by SIGSTOP) for hang_periods of
+/// its heartbeat period is killed with a line saying so and restarted at once (the back-off
+/// applies from its second failure in a row); stop_all() ends every child (SIGTERM, then
+/// SIGKILL after a grace period). The owner feeds heartbeats in with heartbeat_seen().
 /// Each child runs in its own process group (so that its own children are stopped with it) and
 /// gets SIGTERM when the supervisor dies (PR_SET_PDEATHSIG), so no process is left behind even
 /// if the supervisor is killed.
@@ -28,6 +31,9 @@ struct SupervisorPolicy {
   double backoff_max = 8.0;    ///< [s] largest delay (doubling from backoff_min)
   double stable_after = 10.0;  ///< [s] a child that ran this long restarts after backoff_min again
   double grace = 3.0;          ///< [s] wait after SIGTERM before SIGKILL
+  /// [-] heartbeat periods of silence after which a child that has sent heartbeats is hung.
+  /// 2 periods plus the restart stays within the 3 periods after which clients call it dead.
+  double hang_periods = 2.0;
 };
 
 /// State of one supervised child.
@@ -38,6 +44,9 @@ struct ChildState {
   int failures_in_row = 0;    ///< consecutive short-lived runs (drives the back-off)
   double started_at = 0.0;    ///< [s] monotonic start of the current run
   double restart_at = 0.0;    ///< [s] monotonic time of the pending restart
+  double last_heartbeat = -1.0;   ///< [s] monotonic arrival of its last heartbeat, < 0 = none yet
+  double heartbeat_period = 0.0;  ///< [s] period its heartbeats declare
+  int hangs = 0;                  ///< times it was killed for silence
 };
 
 /// "exited with status N" or "killed by signal N (NAME)" for a waitpid status.
@@ -57,6 +66,9 @@ class ProcessSupervisor {
   /// Reaps children that ended, logs why and schedules their restart; starts those whose
   /// back-off has passed. Call every few tens of milliseconds.
   void poll();
+  /// A heartbeat of process pid with the declared period [s] arrived at monotonic time seen_at
+  /// [s]; ignored when pid is not a running child or the heartbeat is older than one known.
+  void heartbeat_seen(pid_t pid, double period, double seen_at);
   /// SIGTERM to every child's process group, waits up to the grace period, SIGKILL to the rest,
   /// reaps all. Logs each stop. Safe to call twice.
   void stop_all();
@@ -65,7 +77,9 @@ class ProcessSupervisor {
 
  private:
   void start(ChildState& child);
-  void on_exit(ChildState& child, int wait_status, double now);
+  void on_exit(ChildState& child, int wait_status, double now, bool hung = false);
+  /// Kills child (whole group, SIGKILL), reaps it and schedules its restart.
+  void kill_hung(ChildState& child, double now);
 
   std::vector<ChildState> children_;
   SupervisorPolicy policy_;

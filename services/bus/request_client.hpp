@@ -1,7 +1,9 @@
 #pragma once
 /// @file
 /// Client side of request/reply over LCM: every request carries a request id and a reply
-/// channel; the reply echoes the id. A call waits for its reply with a per-attempt timeout,
+/// channel; the reply echoes the id. Requests are signed (bus/signed_publish.hpp), replies
+/// arrive through the guarded path (bus/guarded_subscription.hpp). Ids start at a random
+/// multiple of 2^32 per client (a per-client nonce) and count up from there. A call waits for its reply with a per-attempt timeout,
 /// re-sends the same request (same id) on timeout, and ignores stale or duplicate replies,
 /// counting them. Request types need `int64_t request_id` and `string reply_channel` fields,
 /// reply types `int64_t request_id`.
@@ -11,15 +13,17 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
-#include "bus/decode.hpp"
+#include "bus/guarded_subscription.hpp"
 #include "bus/header_stamper.hpp"
 #include "bus/rejection_log.hpp"
+#include "bus/signed_publish.hpp"
 
 namespace wrc::bus {
 
@@ -66,14 +70,12 @@ class RequestClient {
         request_channel_(std::move(request_channel)),
         reply_channel_(std::move(reply_channel)),
         stamper_(std::move(sender)),
-        rejections_("request client on " + reply_channel_) {
-    subscription_ = lcm_.subscribe(regex_escape(reply_channel_), &RequestClient::on_reply, this);
-    if (subscription_ == nullptr) {
-      throw std::runtime_error("cannot subscribe to reply channel '" + reply_channel_ + "'");
-    }
-    subscription_->setQueueCapacity(100);
+        last_id_(first_request_id()) {
+    subscription_ = std::make_unique<GuardedSubscription<Reply>>(
+        lcm_, reply_channel_, "request client on " + reply_channel_,
+        [this](const Reply& reply, const ReceivedMessage&) { on_reply(reply); }, 100);
+    subscription_->set_drop_observer([this](DropKind) { ++counters_.rejected_replies; });
   }
-  ~RequestClient() { lcm_.unsubscribe(subscription_); }
   RequestClient(const RequestClient&) = delete;
   RequestClient& operator=(const RequestClient&) = delete;
 
@@ -99,7 +101,7 @@ class RequestClient {
     for (int attempt = 0; attempt <= policy.retries && !answer_; ++attempt) {
       if (attempt > 0) ++counters_.retries;
       stamper_.stamp(request.header);
-      if (lcm_.publish(request_channel_, &request) != 0) {
+      if (publish_signed(lcm_, request_channel_, request) != 0) {
         throw std::runtime_error("publish on '" + request_channel_ + "' failed");
       }
       ++counters_.sent;
@@ -140,15 +142,14 @@ class RequestClient {
     }
   }
 
-  void on_reply(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-    Reply reply{};
-    if (std::string why = decode_message(*rbuf, reply); !why.empty()) {
-      ++counters_.rejected_replies;
-      rejections_.reject(channel, why);
-      return;
-    }
+  /// A random positive multiple of 2^32 below 2^62: ids of two clients do not meet.
+  static std::int64_t first_request_id() {
+    return static_cast<std::int64_t>((MessageAuth::random_nonce() % ((std::uint64_t{1} << 30) - 1)) + 1) << 32;
+  }
+
+  void on_reply(const Reply& reply) {
     if (pending_id_ != 0 && reply.request_id == pending_id_ && !answer_) {
-      answer_ = std::move(reply);
+      answer_ = reply;
     } else if ((completed_id_ != 0 && reply.request_id == completed_id_) ||
                (pending_id_ != 0 && reply.request_id == pending_id_)) {
       ++counters_.duplicate_replies;
@@ -161,10 +162,9 @@ class RequestClient {
   std::string request_channel_;
   std::string reply_channel_;
   HeaderStamper stamper_;
-  RejectionLog rejections_;
-  lcm::Subscription* subscription_ = nullptr;
+  std::unique_ptr<GuardedSubscription<Reply>> subscription_;
   ClientCounters counters_;
-  std::int64_t last_id_ = 0;       // ids start at 1 and increase per call
+  std::int64_t last_id_;           // the first call gets last_id_ + 1, then +1 per call
   std::int64_t pending_id_ = 0;    // id of the call in progress, 0 = none
   std::int64_t completed_id_ = 0;  // id of the last call that got its reply
   std::optional<Reply> answer_;

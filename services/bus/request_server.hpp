@@ -1,26 +1,32 @@
 #pragma once
 /// @file
-/// Service side of request/reply over LCM: decodes each request from the raw buffer, checks it,
-/// calls the service's handler and publishes the reply (request id echoed) on the request's
-/// reply channel. Undecodable, malformed or invalid requests are counted and logged, never
-/// crash the process; a handler exception becomes an error reply. Re-sent requests (same reply
-/// channel and id) are answered from a small cache instead of being computed again.
+/// Service side of request/reply over LCM: receives each request through the guarded path
+/// (bus/guarded_subscription.hpp: size, authentication, replay, bounded decoding), checks it,
+/// calls the service's handler and publishes the signed reply (request id echoed) on the
+/// request's reply channel. Undecodable, malformed or invalid requests are counted and logged,
+/// never crash the process; a handler exception becomes an error reply. A re-sent request is
+/// answered from a small cache instead of being computed again; the cache is keyed on the
+/// sending process (the verified nonce of its authentication trailer, new at every start), its
+/// reply channel and the request id, so a new client reusing a channel name and counting its ids
+/// from the start again never gets another client's answer.
 
 #include <lcm/lcm-cpp.hpp>
 
 #include <deque>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
-#include "bus/decode.hpp"
+#include "bus/guarded_subscription.hpp"
 #include "bus/header_stamper.hpp"
 #include "bus/rejection_log.hpp"
 #include "bus/service_load.hpp"
+#include "bus/signed_publish.hpp"
 
 namespace wrc::bus {
 
@@ -34,6 +40,7 @@ struct ServerCounters {
   std::int64_t from_cache = 0;     ///< re-sent requests answered from the reply cache
   std::int64_t not_addressed = 0;  ///< requests for another instance, ignored
   std::int64_t rejected = 0;       ///< undecodable or invalid requests, handler failures
+  std::int64_t refused = 0;        ///< requests ignored while not serving (a duplicate instance)
 };
 
 /// A request server for Request/Reply types with `request_id` and `reply_channel` (request) and
@@ -61,13 +68,14 @@ class RequestServer : public LoadSource {
         rejections_(stamper_.sender() + " on " + channel_),
         handler_(std::move(handler)) {
     if (!handler_) throw std::runtime_error("request server on '" + channel_ + "' has no handler");
-    subscription_ = lcm_.subscribe(regex_escape(channel_), &RequestServer::on_request, this);
-    if (subscription_ == nullptr) {
-      throw std::runtime_error("cannot subscribe to request channel '" + channel_ + "'");
-    }
-    subscription_->setQueueCapacity(1000);
+    subscription_ = std::make_unique<GuardedSubscription<Request>>(
+        lcm_, channel_, stamper_.sender() + " on " + channel_,
+        [this](const Request& request, const ReceivedMessage& info) { on_request(request, info); });
+    subscription_->set_drop_observer([this](DropKind) {
+      ++counters_.received;
+      ++counters_.rejected;
+    });
   }
-  ~RequestServer() override { lcm_.unsubscribe(subscription_); }
   RequestServer(const RequestServer&) = delete;
   RequestServer& operator=(const RequestServer&) = delete;
 
@@ -77,6 +85,8 @@ class RequestServer : public LoadSource {
   void set_error_filler(ErrorFiller filler) { error_filler_ = std::move(filler); }
   /// Optional: which requests this instance answers.
   void set_address_filter(AddressFilter filter) { address_filter_ = std::move(filter); }
+  /// While false, requests are ignored (counted as refused): a duplicate instance must not answer.
+  void set_serving(bool serving) override { serving_ = serving; }
 
   /// Channel served.
   const std::string& channel() const { return channel_; }
@@ -93,24 +103,36 @@ class RequestServer : public LoadSource {
  private:
   static constexpr std::size_t kCacheSize = 16;
 
-  void on_request(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-    const double start = monotonic_seconds();
-    ++counters_.received;
-    Request request{};
-    if (std::string why = decode_message(*rbuf, request); !why.empty()) {
-      reject(channel, why);
-      return;
+  /// Who asked: the sending process (trailer nonce), its reply channel and its request id.
+  struct CacheKey {
+    std::uint64_t sender_nonce;
+    std::string reply_channel;
+    std::int64_t request_id;
+    bool operator==(const CacheKey& o) const {
+      return sender_nonce == o.sender_nonce && request_id == o.request_id && reply_channel == o.reply_channel;
     }
+  };
+
+  void on_request(const Request& request, const ReceivedMessage& info) {
+    const double start = monotonic_seconds();
+    const std::string& channel = *info.channel;
+    ++counters_.received;
     if (address_filter_ && !address_filter_(request)) {
       ++counters_.not_addressed;
       return;
     }
-    if (request.reply_channel.empty() || request.reply_channel.size() > kMaxChannelLength) {
-      reject(channel, "reply channel '" + request.reply_channel + "' is empty or longer than 63 characters");
+    if (!serving_) {
+      ++counters_.refused;
       return;
     }
-    for (auto& [key, cached] : cache_) {
-      if (key.first == request.reply_channel && key.second == request.request_id) {
+    if (request.reply_channel.empty() || request.reply_channel.size() > kMaxChannelLength) {
+      reject(channel, "reply channel '" + request.reply_channel.substr(0, 80) +
+                          "' is empty or longer than 63 characters");
+      return;
+    }
+    const CacheKey key{info.origin.nonce, request.reply_channel, request.request_id};
+    for (auto& [cached_key, cached] : cache_) {
+      if (cached_key == key) {
         ++counters_.from_cache;
         publish(request.reply_channel, cached, start);
         return;
@@ -145,12 +167,12 @@ class RequestServer : public LoadSource {
     reply.request_id = request.request_id;
     publish(request.reply_channel, reply, start);
     if (cache_.size() == kCacheSize) cache_.pop_front();
-    cache_.emplace_back(std::make_pair(request.reply_channel, request.request_id), std::move(reply));
+    cache_.emplace_back(key, std::move(reply));
   }
 
   void publish(const std::string& reply_channel, Reply& reply, double start) {
     stamper_.stamp(reply.header);
-    if (lcm_.publish(reply_channel, &reply) != 0) {
+    if (publish_signed(lcm_, reply_channel, reply) != 0) {
       rejections_.reject(reply_channel, "publishing the reply failed");
     }
     ++counters_.answered;
@@ -172,11 +194,12 @@ class RequestServer : public LoadSource {
   Validator validator_;
   ErrorFiller error_filler_;
   AddressFilter address_filter_;
-  lcm::Subscription* subscription_ = nullptr;
+  std::unique_ptr<GuardedSubscription<Request>> subscription_;
+  bool serving_ = true;
   ServerCounters counters_;
   LatencyWindow latencies_;
   double busy_time_ = 0.0;  // [s] handler time since the last take_busy_time()
-  std::deque<std::pair<std::pair<std::string, std::int64_t>, Reply>> cache_;
+  std::deque<std::pair<CacheKey, Reply>> cache_;
 };
 
 }  // namespace wrc::bus

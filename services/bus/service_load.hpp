@@ -46,6 +46,9 @@ class LoadSource {
   virtual void add_load(ServiceLoad& load) const = 0;
   /// [s] time spent in handlers since the previous call (resets the accumulator).
   virtual double take_busy_time() = 0;
+  /// false: stop answering requests (this process is a duplicate of an older instance,
+  /// bus/instance_identity.hpp); true: answer again. Sources that answer nothing ignore it.
+  virtual void set_serving(bool /*serving*/) {}
 };
 
 }  // namespace wrc::bus

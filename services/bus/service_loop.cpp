@@ -6,12 +6,14 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "bus/bus_auth.hpp"
 #include "bus/clock.hpp"
 #include "bus/shutdown_signal.hpp"
 
 namespace wrc::bus {
 
-std::unique_ptr<lcm::LCM> open_lcm(const std::string& url) {
+std::unique_ptr<lcm::LCM> open_lcm(const std::string& url, const std::string& bus_key_option) {
+  load_bus_key(bus_key_option);
   auto lcm = std::make_unique<lcm::LCM>(url);
   if (!lcm->good()) {
     throw std::runtime_error("cannot open LCM at '" + (url.empty() ? std::string("default URL") : url) +
@@ -33,10 +35,47 @@ void ServiceLoop::report_load(double period_elapsed) {
   max_queue_ = 0;
 }
 
+void ServiceLoop::check_identity(double now) {
+  const auto holder = duplicates_.older_holder(now);
+  if (holder.has_value() == duplicate_) return;
+  duplicate_ = holder.has_value();
+  for (LoadSource* source : sources_) source->set_serving(!duplicate_);
+  if (duplicate_) {
+    const std::string why = duplicates_.refusal(*holder);
+    std::cerr << heartbeat_.identity().program << "/" << heartbeat_.identity().instance << ": refusing to serve: " << why
+              << "\n";
+    heartbeat_.set_state(wrc::heartbeat_t::DUPLICATE, why);
+  } else {
+    std::cerr << heartbeat_.identity().program << "/" << heartbeat_.identity().instance
+              << ": the older holder of the name is gone; serving\n";
+    heartbeat_.set_state(wrc::heartbeat_t::READY);
+  }
+}
+
+bool ServiceLoop::listen(double seconds) {
+  const double end = monotonic_seconds() + seconds;
+  for (double left = seconds; left > 0.0 && !ShutdownSignal::requested(); left = end - monotonic_seconds()) {
+    if (lcm_.handleTimeout(static_cast<int>(std::ceil(std::min(left, max_wait_) * 1e3))) < 0 && errno != EINTR) {
+      return false;
+    }
+    heartbeat_.tick();
+  }
+  return true;
+}
+
 int ServiceLoop::run() {
+  if (!listen(1.1 * heartbeat_.period())) {
+    std::cerr << "service loop: LCM failed while listening for other instances, stopping\n";
+    heartbeat_.set_state(wrc::heartbeat_t::DRAINING);
+    return 1;
+  }
   double period_start = monotonic_seconds();
   report_load(0.0);
-  heartbeat_.set_state(wrc::heartbeat_t::READY);
+  if (duplicates_.older_holder(period_start)) {
+    check_identity(period_start);
+  } else {
+    heartbeat_.set_state(wrc::heartbeat_t::READY);
+  }
   int exit_code = 0;
   int consecutive_errors = 0;
   while (!ShutdownSignal::requested()) {
@@ -58,6 +97,7 @@ int ServiceLoop::run() {
       consecutive_errors = 0;
     }
     if (idle_hook_) idle_hook_();
+    check_identity(monotonic_seconds());
     if (heartbeat_.seconds_until_due() <= 0.0) {
       const double now = monotonic_seconds();
       report_load(now - period_start);

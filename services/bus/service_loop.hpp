@@ -1,7 +1,9 @@
 #pragma once
 /// @file
 /// The main loop every service runs: dispatch LCM messages with handleTimeout, send heartbeats
-/// with the aggregated load, and on SIGINT/SIGTERM publish a DRAINING heartbeat and return.
+/// with the aggregated load, refuse to serve while an older process holds the same model and
+/// instance name (bus/duplicate_instance_guard.hpp), and on SIGINT/SIGTERM publish a DRAINING
+/// heartbeat and return.
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -10,14 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "bus/duplicate_instance_guard.hpp"
 #include "bus/heartbeat_publisher.hpp"
 #include "bus/service_load.hpp"
 
 namespace wrc::bus {
 
-/// Opens LCM at url (empty = default). Throws std::runtime_error naming the URL when LCM is not
-/// usable (e.g. no multicast route).
-std::unique_ptr<lcm::LCM> open_lcm(const std::string& url);
+/// Loads the bus key (bus/bus_auth.hpp: bus_key_path(bus_key_option), unless one is loaded) and
+/// opens LCM at url (empty = default). Throws std::runtime_error naming the key file or the URL
+/// when either is not usable (no key, bad permissions, no multicast route).
+std::unique_ptr<lcm::LCM> open_lcm(const std::string& url, const std::string& bus_key_option = "");
 
 /// Service main loop. Typical use:
 /// ```
@@ -31,7 +35,9 @@ std::unique_ptr<lcm::LCM> open_lcm(const std::string& url);
 /// ```
 class ServiceLoop {
  public:
-  ServiceLoop(lcm::LCM& lcm, HeartbeatPublisher& heartbeat) : lcm_(lcm), heartbeat_(heartbeat) {}
+  /// Listens on the heartbeat's channel for duplicates of this process.
+  ServiceLoop(lcm::LCM& lcm, HeartbeatPublisher& heartbeat)
+      : lcm_(lcm), heartbeat_(heartbeat), duplicates_(lcm, heartbeat.channel(), heartbeat) {}
 
   /// Adds a request server whose load goes into the heartbeat.
   void add_load_source(LoadSource* source) { sources_.push_back(source); }
@@ -40,15 +46,22 @@ class ServiceLoop {
   /// [s] longest wait in one handleTimeout call (default 0.1), bounds the reaction to a signal.
   void set_max_wait(double seconds) { max_wait_ = seconds; }
 
-  /// Publishes READY, loops until ShutdownSignal::requested(), publishes DRAINING. Returns the
-  /// process exit code: 0 after a clean shutdown, 1 when LCM failed.
+  /// Listens for 1.1 heartbeat periods (an older holder of the name is heard in that time),
+  /// publishes READY (or DUPLICATE), loops until ShutdownSignal::requested(), publishes
+  /// DRAINING. Returns the process exit code: 0 after a clean shutdown, 1 when LCM failed.
   int run();
 
  private:
   void report_load(double period_elapsed);
+  /// Goes DUPLICATE (sources stop serving) or back to READY as the older holder comes and goes.
+  void check_identity(double now);
+  /// Dispatches what arrives for up to `seconds`; false when LCM failed.
+  bool listen(double seconds);
 
   lcm::LCM& lcm_;
   HeartbeatPublisher& heartbeat_;
+  DuplicateInstanceGuard duplicates_;
+  bool duplicate_ = false;
   std::vector<LoadSource*> sources_;
   std::function<void()> idle_hook_;
   double max_wait_ = 0.1;

@@ -36,6 +36,7 @@ std::vector<OptionSpec> service_option_specs() {
       {"--channel-prefix", true, "prefix of every channel, P.HEARTBEAT etc.", "none"},
       {"--instance", true, "instance name, unique per model on the bus", "0"},
       {"--heartbeat-period", true, "heartbeat period [s]", "0.5"},
+      {"--bus-key", true, "file of the bus key messages are signed with", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
   };
 }
 }  // namespace
@@ -60,6 +61,7 @@ ServiceOptions ServiceOptions::parse(int argc, const char* const* argv) {
   options.help = parsed.help_requested();
   options.lcm_url = parsed.text("--lcm-url");
   options.channel_prefix = parsed.text("--channel-prefix");
+  options.bus_key = parsed.text("--bus-key");
   if (parsed.has("--instance")) {
     options.instance = parsed.text("--instance");
     check_instance(options.instance);

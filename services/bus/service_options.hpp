@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// The command-line options every service process shares:
-/// `--lcm-url URL`, `--channel-prefix P`, `--instance NAME`, `--heartbeat-period S`, `--help`.
+/// `--lcm-url URL`, `--channel-prefix P`, `--instance NAME`, `--heartbeat-period S`,
+/// `--bus-key FILE`, `--help`.
 /// Options a service defines itself (e.g. `--model`) are passed through in `rest`. Parsed by the
 /// one option parser of wrc (core/options/options.hpp, Unknown::kPassedOn); given twice, the last
 /// one wins (`wrc launch --lcm-url U` appends to a launch profile's line).
@@ -17,6 +18,7 @@ struct ServiceOptions {
   std::string channel_prefix;    ///< channel prefix; empty = none
   std::string instance = "0";    ///< instance name, unique per model on one bus
   double heartbeat_period = 0.5; ///< [s] heartbeat period
+  std::string bus_key;           ///< bus key file; empty = $WRC_BUS_KEY or the default (bus/bus_key.hpp)
   bool help = false;             ///< --help was given
   std::vector<std::string> rest; ///< arguments not consumed here, in order
 

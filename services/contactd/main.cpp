@@ -90,7 +90,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   using wrc::contact_reply_t;
   ShutdownSignal::install();
   const ChannelNames names(service.channel_prefix);
-  auto lcm = open_lcm(service.lcm_url);
+  auto lcm = open_lcm(service.lcm_url, service.bus_key);
   const std::string request_channel = names.name(channel::kContactQuery, options.model);
   const std::string sender = sender_name("wrc-contactd", service.instance);
   const std::string model_name = options.model;

@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "bus/clock.hpp"
-#include "bus/decode.hpp"
+#include "bus/signed_publish.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "geometryd/spline_model_codec.hpp"
 #include "wrc/geometry_request_t.hpp"
@@ -23,16 +23,15 @@ SplineModelSource::SplineModelSource(lcm::LCM& lcm, const bus::ChannelNames& nam
   fit_.validate();
   // Request ids unique per process start: pid in the high bits, a counter below.
   request_id_ = (static_cast<std::int64_t>(getpid()) << 20);
-  model_subscription_ = lcm_.subscribe(bus::regex_escape(names.name(bus::channel::kSplineModel)),
-                                       &SplineModelSource::on_model, this);
-  progress_subscription_ = lcm_.subscribe(bus::regex_escape(names.name(bus::channel::kProgress)),
-                                          &SplineModelSource::on_progress, this);
+  model_subscription_ = std::make_unique<bus::GuardedSubscription<spline_model_t>>(
+      lcm_, names.name(bus::channel::kSplineModel), stamper_.sender() + " SPLINE_MODEL listener",
+      [this](const spline_model_t& m, const bus::ReceivedMessage& info) { on_model(m, *info.channel); }, 100);
+  progress_subscription_ = std::make_unique<bus::GuardedSubscription<progress_t>>(
+      lcm_, names.name(bus::channel::kProgress), stamper_.sender() + " PROGRESS listener",
+      [this](const progress_t& p, const bus::ReceivedMessage&) { on_progress(p); }, 100);
 }
 
-SplineModelSource::~SplineModelSource() {
-  if (model_subscription_) lcm_.unsubscribe(model_subscription_);
-  if (progress_subscription_) lcm_.unsubscribe(progress_subscription_);
-}
+SplineModelSource::~SplineModelSource() = default;
 
 void SplineModelSource::tick() {
   if (!model_hash_.empty() || pending_) return;  // a model came: no more requests
@@ -52,7 +51,7 @@ void SplineModelSource::send_request() {
   request.track = geometryd::to_message(spec_);
   request.fit = geometryd::to_message(fit_);
   request.recompute = false;
-  lcm_.publish(request_channel_, &request);
+  bus::publish_signed(lcm_, request_channel_, request);
   last_request_ = bus::monotonic_seconds();
   ++requests_sent_;
   if (requests_sent_ == 1 || requests_sent_ % 10 == 0)
@@ -60,13 +59,7 @@ void SplineModelSource::send_request() {
               << " (request " << requests_sent_ << ")\n";
 }
 
-void SplineModelSource::on_model(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-  spline_model_t reference;
-  const std::string error = bus::decode_message(*rbuf, reference);
-  if (!error.empty()) {
-    rejections_.reject(channel, error);
-    return;
-  }
+void SplineModelSource::on_model(const spline_model_t& reference, const std::string& channel) {
   if (reference.model_key != model_key_) return;  // another geometry or other fit options
   if (reference.model_hash == model_hash_) return;  // the model we have, republished
   try {
@@ -79,11 +72,9 @@ void SplineModelSource::on_model(const lcm::ReceiveBuffer* rbuf, const std::stri
   }
 }
 
-void SplineModelSource::on_progress(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
-  progress_t progress;
-  if (!bus::decode_message(*rbuf, progress).empty()) return;
+void SplineModelSource::on_progress(const progress_t& progress) {
   if (progress.request_id != request_id_ || progress.message.rfind("rejected: ", 0) != 0) return;
-  rejections_.reject(channel, "wrc-geometryd rejected the request: " + progress.message);
+  rejections_.reject(progress_subscription_->channel(), "wrc-geometryd rejected the request: " + progress.message);
 }
 
 }  // namespace wrc::contactd

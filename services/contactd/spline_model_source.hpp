@@ -12,11 +12,13 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "bus/channels.hpp"
+#include "bus/guarded_subscription.hpp"
 #include "bus/header_stamper.hpp"
 #include "bus/rejection_log.hpp"
 #include "core/geometry/geometry_spec.hpp"
 #include "core/spline/spline_contact_geometry.hpp"
 #include "core/spline/spline_fit_options.hpp"
+#include "wrc/progress_t.hpp"
 #include "wrc/spline_model_t.hpp"
 
 namespace wrc::contactd {
@@ -44,8 +46,8 @@ class SplineModelSource {
   int requests_sent() const { return requests_sent_; }
 
  private:
-  void on_model(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
-  void on_progress(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void on_model(const spline_model_t& reference, const std::string& channel);
+  void on_progress(const progress_t& progress);
   void send_request();
 
   lcm::LCM& lcm_;
@@ -62,8 +64,8 @@ class SplineModelSource {
   double last_request_ = -1e300;  // [s] monotonic
   std::shared_ptr<const SplineContactGeometry> pending_;
   bus::RejectionLog rejections_;
-  lcm::Subscription* model_subscription_ = nullptr;
-  lcm::Subscription* progress_subscription_ = nullptr;
+  std::unique_ptr<bus::GuardedSubscription<spline_model_t>> model_subscription_;
+  std::unique_ptr<bus::GuardedSubscription<progress_t>> progress_subscription_;
 };
 
 }  // namespace wrc::contactd

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "bus/clock.hpp"
-#include "bus/decode.hpp"
+#include "bus/signed_publish.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "geometryd/spline_model_codec.hpp"
 #include "wrc/geometry_request_t.hpp"
@@ -59,25 +59,29 @@ GeometryService::GeometryService(lcm::LCM& lcm, const bus::ChannelNames& names, 
       progress_stamper_(sender),
       table_stamper_(sender),
       rejections_(sender + " on " + request_channel_) {
-  subscription_ = lcm_.subscribe(bus::regex_escape(request_channel_), &GeometryService::on_request, this);
-  if (subscription_ == nullptr) throw std::runtime_error("cannot subscribe to request channel '" + request_channel_ + "'");
-  subscription_->setQueueCapacity(1000);
+  subscription_ = std::make_unique<bus::GuardedSubscription<geometry_request_t>>(
+      lcm_, request_channel_, sender + " on " + request_channel_,
+      [this](const geometry_request_t& request, const bus::ReceivedMessage& info) { on_request(request, info); });
+  subscription_->set_drop_observer([this](bus::DropKind) {
+    ++counters_.received;
+    ++counters_.dropped;
+  });
 }
 
-GeometryService::~GeometryService() { lcm_.unsubscribe(subscription_); }
+GeometryService::~GeometryService() = default;
 
 void GeometryService::reject(const std::string& channel, std::int64_t request_id, bool tell, const std::string& why) {
   rejections_.reject(channel, why);
   if (tell) publish_progress(request_id, "geometry request", 0, 0, 0.0, -1.0, "rejected: " + why);
 }
 
-void GeometryService::on_request(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+void GeometryService::on_request(const geometry_request_t& request, const bus::ReceivedMessage& info) {
   const BusyTimer busy(&busy_time_);
   const double start = busy.start();
+  const std::string& channel = *info.channel;
   ++counters_.received;
-  geometry_request_t request{};
-  if (std::string why = bus::decode_message(*rbuf, request); !why.empty()) {
-    reject(channel, 0, false, why);
+  if (!serving_) {
+    ++counters_.refused;
     return;
   }
   GeometrySpec spec;
@@ -205,7 +209,7 @@ void GeometryService::finish(const FitEvent& event) {
 void GeometryService::publish_model(spline_model_t message, const Waiter& waiter) {
   message.request_id = waiter.request_id;
   model_stamper_.stamp(message.header);
-  if (lcm_.publish(waiter.reply_channel, &message) != 0)
+  if (bus::publish_signed(lcm_, waiter.reply_channel, message) != 0)
     rejections_.reject(waiter.reply_channel, "publishing the model failed");
   ++counters_.answered;
   latencies_.add(bus::monotonic_seconds() - waiter.received);
@@ -215,7 +219,7 @@ void GeometryService::publish_tables(std::vector<geometry_table_t> tables, const
   for (geometry_table_t& t : tables) {
     t.request_id = waiter.request_id;
     table_stamper_.stamp(t.header);
-    if (lcm_.publish(table_channel_, &t) != 0) rejections_.reject(table_channel_, "publishing a geometry table failed");
+    if (bus::publish_signed(lcm_, table_channel_, t) != 0) rejections_.reject(table_channel_, "publishing a geometry table failed");
   }
 }
 
@@ -230,12 +234,12 @@ void GeometryService::publish_progress(std::int64_t request_id, const std::strin
   p.remaining = remaining;
   p.message = message;
   progress_stamper_.stamp(p.header);
-  if (lcm_.publish(progress_channel_, &p) != 0) rejections_.reject(progress_channel_, "publishing progress failed");
+  if (bus::publish_signed(lcm_, progress_channel_, p) != 0) rejections_.reject(progress_channel_, "publishing progress failed");
 }
 
 void GeometryService::add_load(bus::ServiceLoad& load) const {
   load.requests_handled += counters_.answered;
-  load.requests_rejected += rejections_.count() + counters_.failed_requests;
+  load.requests_rejected += rejections_.count() + counters_.dropped + counters_.failed_requests;
   latencies_.summarise(load);
 }
 

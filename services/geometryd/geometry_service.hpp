@@ -21,15 +21,18 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "bus/channels.hpp"
+#include "bus/guarded_subscription.hpp"
 #include "bus/header_stamper.hpp"
 #include "bus/rejection_log.hpp"
 #include "bus/service_load.hpp"
 #include "geometryd/fit_worker.hpp"
 #include "geometryd/model_cache.hpp"
+#include "wrc/geometry_request_t.hpp"
 #include "wrc/progress_t.hpp"
 #include "wrc/spline_model_t.hpp"
 
@@ -44,6 +47,8 @@ struct GeometryCounters {
   std::int64_t fits = 0;        ///< fits finished
   std::int64_t failed = 0;      ///< fits that threw (or whose model could not be stored)
   std::int64_t failed_requests = 0;  ///< requests answered "failed: " (heartbeat: rejected, a handler failure)
+  std::int64_t dropped = 0;     ///< messages the guarded receive path dropped (unsigned, undecodable, ...)
+  std::int64_t refused = 0;     ///< requests ignored while not serving (a duplicate instance)
 };
 
 class GeometryService : public bus::LoadSource {
@@ -63,12 +68,13 @@ class GeometryService : public bus::LoadSource {
   const std::string& request_channel() const { return request_channel_; }
   const GeometryCounters& counters() const { return counters_; }
   /// Requests rejected (undecodable or invalid).
-  std::int64_t rejected() const { return rejections_.count(); }
+  std::int64_t rejected() const { return rejections_.count() + counters_.dropped; }
   /// Jobs queued or running.
   std::size_t pending_jobs() const { return jobs_.size(); }
 
   void add_load(bus::ServiceLoad& load) const override;
   double take_busy_time() override;
+  void set_serving(bool serving) override { serving_ = serving; }
 
  private:
   /// A request waiting for a job.
@@ -84,7 +90,7 @@ class GeometryService : public bus::LoadSource {
     std::vector<Waiter> waiters;
   };
 
-  void on_request(const lcm::ReceiveBuffer* rbuf, const std::string& channel);
+  void on_request(const geometry_request_t& request, const bus::ReceivedMessage& info);
   /// Counts and logs why; when tell, answers request_id with a "rejected: " progress.
   void reject(const std::string& channel, std::int64_t request_id, bool tell, const std::string& why);
   void publish_progress(std::int64_t request_id, const std::string& task, long done, long total, double elapsed,
@@ -107,13 +113,14 @@ class GeometryService : public bus::LoadSource {
   bus::HeaderStamper progress_stamper_;
   bus::HeaderStamper table_stamper_;
   bus::RejectionLog rejections_;
-  lcm::Subscription* subscription_ = nullptr;
+  bool serving_ = true;
   std::map<std::int64_t, Job> jobs_;                 // by job id
   std::map<std::string, std::int64_t> job_of_key_;   // model_key -> job id
   std::int64_t next_job_ = 1;
   GeometryCounters counters_;
   bus::LatencyWindow latencies_;  // request to answer [s]
   double busy_time_ = 0.0;        // [s] handler and publishing time since take_busy_time()
+  std::unique_ptr<bus::GuardedSubscription<geometry_request_t>> subscription_;  // last: dispatches into the above
 };
 
 }  // namespace wrc::geometryd

@@ -36,7 +36,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::geometryd::Geometryd
   ShutdownSignal::install();
   const ChannelNames names(service.channel_prefix);
   const wrc::geometryd::ModelCache cache(options.cache_dir);
-  auto lcm = open_lcm(service.lcm_url);
+  auto lcm = open_lcm(service.lcm_url, service.bus_key);
   const std::string sender = sender_name("wrc-geometryd", service.instance);
 
   wrc::geometryd::FitWorker worker(kProgressInterval);

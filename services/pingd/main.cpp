@@ -26,7 +26,7 @@ int run(const wrc::bus::ServiceOptions& options) {
   using namespace wrc::bus;
   ShutdownSignal::install();
   const ChannelNames names(options.channel_prefix);
-  auto lcm = open_lcm(options.lcm_url);
+  auto lcm = open_lcm(options.lcm_url, options.bus_key);
   const std::string request_channel = names.name(channel::kPing);
   const std::string sender = sender_name("wrc-pingd", options.instance);
 

@@ -304,15 +304,15 @@ TEST_F(ContactServiceTest, MalformedMessagesRejectedAndCounted) {
   ASSERT_TRUE(wait_ready_while("onepoint", "m", *service)) << read_text(log);
   const std::string channel = names_.name(channel::kContactQuery, "onepoint");
   wrc::heartbeat_t other_type{};
-  lcm_->publish(channel, &other_type);
+  publish_signed(*lcm_, channel, other_type);
   auto q = make_query("onepoint", {library_query(0.0, 0.0, 0.0, 0.46)});
   q.request_id = 99;
   q.reply_channel = "CONTACT_REPLY.nobody";
   std::vector<unsigned char> bytes(static_cast<std::size_t>(q.getEncodedSize()));
   q.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  lcm_->publish(channel, bytes.data(), static_cast<unsigned>(bytes.size() - 9));
+  publish_signed_bytes(channel, {bytes.begin(), bytes.begin() + static_cast<long>(bytes.size() - 9)});
   const unsigned char garbage[] = {0xde, 0xad, 0xbe, 0xef};
-  lcm_->publish(channel, garbage, sizeof garbage);
+  publish_signed_bytes(channel, {garbage, garbage + sizeof garbage});
 
   const auto reply = ask("onepoint", make_query("onepoint", {library_query(0.001, 0.0, 0.0, 0.46)}));
   EXPECT_EQ(reply.status, wrc::contact_reply_t::OK) << reply.message;
@@ -358,7 +358,7 @@ TEST_F(ContactServiceTest, OneAnswerPerQueryWithTwoInstances) {
       q.request_id = 100 + i + (instance.empty() ? 50 : instance == "a" ? 20 : 0);
       q.reply_channel = reply_channel;
       q.instance = instance;
-      lcm_->publish(channel, &q);
+      publish_signed(*lcm_, channel, q);
       handle_until([&] { return false; }, 0.15);  // collect every reply that comes
       ASSERT_EQ(counter.instances.size(), 1u) << "instance '" << instance << "' query " << i;
       EXPECT_EQ(counter.instances[0], instance.empty() ? "a" : instance);

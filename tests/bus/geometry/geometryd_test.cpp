@@ -124,7 +124,7 @@ class GeometryServiceTest : public BusTest {
     r.recompute = recompute;
     return r;
   }
-  void send(wrc::geometry_request_t request) { lcm_->publish(names_.name(channel::kGeometryRequest), &request); }
+  void send(wrc::geometry_request_t request) { publish_signed(*lcm_, names_.name(channel::kGeometryRequest), request); }
 
   /// Waits for the model answering request id; nothing after timeout [s].
   std::optional<wrc::spline_model_t> wait_model(std::int64_t id, double timeout) {
@@ -372,13 +372,13 @@ TEST_F(GeometryServiceTest, RejectsInvalidRequestsAndSurvivesGarbage) {
   // First the malformed messages: the log shows at most 5 rejections a second.
   const std::string channel = names_.name(channel::kGeometryRequest);
   wrc::heartbeat_t other_type{};
-  lcm_->publish(channel, &other_type);
+  publish_signed(*lcm_, channel, other_type);
   auto truncated = make_request(35, small_options());
   std::vector<unsigned char> bytes(static_cast<std::size_t>(truncated.getEncodedSize()));
   truncated.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  lcm_->publish(channel, bytes.data(), static_cast<unsigned>(bytes.size() - 9));
+  publish_signed_bytes(channel, {bytes.begin(), bytes.begin() + static_cast<long>(bytes.size() - 9)});
   const unsigned char garbage[] = {0xde, 0xad, 0xbe, 0xef};
-  lcm_->publish(channel, garbage, sizeof garbage);
+  publish_signed_bytes(channel, {garbage, garbage + sizeof garbage});
 
   struct Case {
     std::int64_t id;

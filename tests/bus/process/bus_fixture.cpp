@@ -3,22 +3,28 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "bus/bus_auth.hpp"
 #include "bus/clock.hpp"
 
 namespace wrc::bus::test {
 
 void BusTest::SetUp() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  temp_dir_ = (std::filesystem::temp_directory_path() /
+               ("wrc-bus-" + std::string(info->name()) + "-" + std::to_string(::getpid())))
+                  .string();
+  std::filesystem::create_directories(temp_dir_);
+  // A bus key of this test's own: the services it starts find it through $WRC_BUS_KEY.
+  key_path_ = temp_path("bus.key");
+  std::filesystem::remove(key_path_);
+  install_bus_key(read_or_create_bus_key(key_path_));
+  ::setenv("WRC_BUS_KEY", key_path_.c_str(), 1);
   lcm_ = std::make_unique<lcm::LCM>("");
   ASSERT_TRUE(lcm_->good()) << "LCM not usable; run this test through clients/lib/netns.sh";
   monitor_ = std::make_unique<HeartbeatMonitor>(*lcm_, names_.name(channel::kHeartbeat));
   const std::string id = make_client_id("test");
   client_ = std::make_unique<PingClient>(*lcm_, names_.name(channel::kPing),
                                          names_.name(channel::kPingReply, id), id);
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  temp_dir_ = (std::filesystem::temp_directory_path() /
-               ("wrc-bus-" + std::string(info->name()) + "-" + std::to_string(::getpid())))
-                  .string();
-  std::filesystem::create_directories(temp_dir_);
 }
 
 bool BusTest::handle_until(const std::function<bool()>& pred, double timeout) {
@@ -43,6 +49,11 @@ bool BusTest::wait_ready(const std::string& model, const std::string& instance, 
         return s && s->available() && s->last.pid != not_pid;
       },
       timeout);
+}
+
+void BusTest::publish_signed_bytes(const std::string& channel, std::vector<std::uint8_t> bytes) {
+  bus_auth().sign(channel, bytes);
+  lcm_->publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
 }
 
 bool BusTest::in_netns() {

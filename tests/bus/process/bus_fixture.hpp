@@ -1,17 +1,21 @@
 #pragma once
-// Fixture of the multi-process tests: an LCM instance on the test's private bus (the default
-// URL inside the namespace made by clients/lib/netns.sh, or its LCM_DEFAULT_URL fallback), a
-// heartbeat monitor, a ping client, and helpers to start wrc-pingd and wait with deadlines.
+// Fixture of the multi-process tests: a bus key of the test's own (installed here, and in
+// $WRC_BUS_KEY for the processes it starts), an LCM instance on the test's private bus (the
+// default URL inside the namespace made by clients/lib/netns.sh, or its LCM_DEFAULT_URL
+// fallback), a heartbeat monitor, a ping client, and helpers to start wrc-pingd and wait with
+// deadlines.
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "bus/channels.hpp"
 #include "bus/heartbeat_monitor.hpp"
 #include "bus/request_client.hpp"
+#include "bus/signed_publish.hpp"
 #include "child_process.hpp"
 #include "wrc/ping_reply_t.hpp"
 #include "wrc/ping_request_t.hpp"
@@ -35,6 +39,9 @@ class BusTest : public ::testing::Test {
                   int not_pid = 0);
   /// True inside a private network namespace (not the port fallback).
   static bool in_netns();
+  /// Publishes bytes (any content) on channel with a valid authentication trailer, so that they
+  /// reach the decoder of the receiving process.
+  void publish_signed_bytes(const std::string& channel, std::vector<std::uint8_t> bytes);
   /// A file path in a per-test temporary directory.
   std::string temp_path(const std::string& name) const;
 
@@ -43,6 +50,7 @@ class BusTest : public ::testing::Test {
   std::unique_ptr<HeartbeatMonitor> monitor_;
   std::unique_ptr<PingClient> client_;
   std::string temp_dir_;
+  std::string key_path_;  ///< the test's bus key file
 };
 
 }  // namespace wrc::bus::test

@@ -67,15 +67,15 @@ TEST_F(BusTest, MalformedMessagesRejectedAndCounted) {
   const std::string channel = names_.name(channel::kPing);
 
   wrc::heartbeat_t other_type{};
-  lcm_->publish(channel, &other_type);
+  publish_signed(*lcm_, channel, other_type);
   auto req = ping(100);
   req.request_id = 1;
   req.reply_channel = client_->reply_channel();
   std::vector<unsigned char> bytes(req.getEncodedSize());
   req.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  lcm_->publish(channel, bytes.data(), static_cast<unsigned>(bytes.size() / 2));
+  publish_signed_bytes(channel, {bytes.begin(), bytes.begin() + static_cast<long>(bytes.size() / 2)});
   const unsigned char garbage[] = {0xde, 0xad, 0xbe, 0xef};
-  lcm_->publish(channel, garbage, sizeof garbage);
+  publish_signed_bytes(channel, {garbage, garbage + sizeof garbage});
 
   auto good = ping(16);
   auto result = client_->call(good, {0.5, 4});
@@ -93,7 +93,7 @@ TEST_F(BusTest, MalformedMessagesRejectedAndCounted) {
   pingd->signal(SIGTERM);
   ASSERT_TRUE(pingd->wait(5.0));
   const std::string text = read_text(log);
-  EXPECT_NE(text.find("rejected message on PING: fingerprint mismatch"), std::string::npos) << text;
+  EXPECT_NE(text.find("dropped wrong-type message on PING: fingerprint mismatch"), std::string::npos) << text;
   EXPECT_NE(text.find("truncated or corrupt ping_request_t"), std::string::npos) << text;
   EXPECT_NE(text.find("too short"), std::string::npos) << text;
 }

@@ -1,12 +1,15 @@
 // Request/reply over memq://: ids echoed, timeouts and retries, stale and duplicate replies
-// ignored and counted, bad requests rejected and counted without crashing the server.
+// ignored and counted, bad requests rejected and counted without crashing the server, the reply
+// cache keyed on the sending process, unsigned and replayed requests ignored.
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "bus/request_client.hpp"
 #include "bus/request_server.hpp"
+#include "bus/signed_publish.hpp"
 #include "memq_bus.hpp"
+#include "test_bus_key.hpp"
 #include "wrc/ping_reply_t.hpp"
 #include "wrc/ping_request_t.hpp"
 
@@ -44,12 +47,14 @@ TEST(RequestReply, EchoesIdAndPayload) {
   ASSERT_TRUE(lcm.good());
   Server server(lcm, "PING", "test-server", echo_handler());
   Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
+  std::int64_t first_id = 0;
   for (int i = 1; i <= 3; ++i) {
     auto req = ping(10 * i);
     auto result = client.call(req, {0.5, 0});
     ASSERT_TRUE(result);
+    if (i == 1) first_id = req.request_id;
     EXPECT_EQ(result.reply->request_id, req.request_id);
-    EXPECT_EQ(result.reply->request_id, i);
+    EXPECT_EQ(result.reply->request_id, first_id + i - 1);  // one id per call, counting up
     EXPECT_EQ(result.reply->num_payload, 10 * i);
     EXPECT_EQ(result.attempts, 1);
   }
@@ -82,10 +87,10 @@ struct DoubleReplier {
   void on_request(const lcm::ReceiveBuffer*, const std::string&, const wrc::ping_request_t* req) {
     wrc::ping_reply_t rep{};
     rep.request_id = req->request_id - 2;  // an older call's id (or an id never used): stale
-    lcm.publish(req->reply_channel, &rep);
+    publish_signed(lcm, req->reply_channel, rep);
     rep.request_id = req->request_id;
-    lcm.publish(req->reply_channel, &rep);
-    lcm.publish(req->reply_channel, &rep);  // duplicate
+    publish_signed(lcm, req->reply_channel, rep);
+    publish_signed(lcm, req->reply_channel, rep);  // duplicate
   }
 };
 
@@ -108,17 +113,26 @@ TEST(RequestReply, IgnoresStaleAndDuplicateReplies) {
   EXPECT_EQ(client.counters().duplicate_replies, 3);
 }
 
-// Undecodable messages on the request channel are counted and the server keeps answering.
+/// Publishes bytes on channel signed under the test key.
+void publish_signed_bytes(lcm::LCM& lcm, const std::string& channel, std::vector<std::uint8_t> bytes) {
+  bus_auth().sign(channel, bytes);
+  lcm.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
+}
+
+// Undecodable messages on the request channel, signed or not, are counted and the server keeps
+// answering.
 TEST(RequestReply, ServerRejectsMalformedMessagesAndKeepsAnswering) {
   lcm::LCM lcm("memq://");
   Server server(lcm, "PING", "test-server", echo_handler());
   Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
   const unsigned char garbage[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
   lcm.publish("PING", garbage, sizeof garbage);
+  publish_signed_bytes(lcm, "PING", std::vector<std::uint8_t>(garbage, garbage + sizeof garbage));
   wrc::ping_reply_t wrong_type{};
   lcm.publish("PING", &wrong_type);
+  publish_signed(lcm, "PING", wrong_type);
   test::drain(lcm);
-  EXPECT_EQ(server.counters().rejected, 2);
+  EXPECT_EQ(server.counters().rejected, 4);
   auto req = ping(4);
   EXPECT_TRUE(client.call(req, {0.5, 0}));
   EXPECT_EQ(server.counters().answered, 1);
@@ -166,12 +180,83 @@ TEST(RequestReply, ResentRequestAnsweredFromCache) {
   auto req = ping(2);
   req.request_id = 5;
   req.reply_channel = "R";
-  lcm.publish("PING", &req);
-  lcm.publish("PING", &req);
+  publish_signed(lcm, "PING", req);
+  publish_signed(lcm, "PING", req);  // a retry: signed again, new sequence number
   test::drain(lcm);
   EXPECT_EQ(calls, 1);
   EXPECT_EQ(replies, 2);
   EXPECT_EQ(server.counters().from_cache, 1);
+}
+
+// Issue 11: request ids restart in every client, and reply channels can be reused. A request
+// with the same reply channel and id from another process (another sender nonce) is computed,
+// not answered with the first client's cached reply.
+TEST(RequestReply, CacheDoesNotAnswerAnotherClientOnAReusedChannel) {
+  lcm::LCM lcm("memq://");
+  std::vector<int> payload_sizes;
+  Server server(lcm, "PING", "test-server", [&](const wrc::ping_request_t& req, wrc::ping_reply_t& rep) {
+    payload_sizes.push_back(req.num_payload);
+    rep.num_payload = req.num_payload;
+    rep.payload = req.payload;
+  });
+  std::vector<int> replies;
+  struct Collector {
+    std::vector<int>* sizes;
+    void on(const lcm::ReceiveBuffer*, const std::string&, const wrc::ping_reply_t* rep) {
+      sizes->push_back(rep->num_payload);
+    }
+  } collector{&replies};
+  lcm.subscribe("R", &Collector::on, &collector);
+  auto first = ping(2);
+  first.request_id = 1;
+  first.reply_channel = "R";
+  publish_signed(lcm, "PING", first);
+  test::drain(lcm);
+  // A second process: same bus key, its own nonce, counting its ids from 1 on the same channel.
+  MessageAuth other_process(test::test_bus_key(), MessageAuth::random_nonce());
+  auto second = ping(7);
+  second.request_id = 1;
+  second.reply_channel = "R";
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(second.getEncodedSize()));
+  second.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  other_process.sign("PING", bytes);
+  lcm.publish("PING", bytes.data(), static_cast<unsigned>(bytes.size()));
+  test::drain(lcm);
+  EXPECT_EQ(payload_sizes, (std::vector<int>{2, 7}));
+  EXPECT_EQ(replies, (std::vector<int>{2, 7}));
+  EXPECT_EQ(server.counters().from_cache, 0);
+}
+
+// An unsigned request, a request signed under another key and a replayed datagram (the same
+// bytes again) reach no handler and get no reply; each is counted as rejected.
+TEST(RequestReply, UnsignedForgedAndReplayedRequestsAreIgnored) {
+  lcm::LCM lcm("memq://");
+  int calls = 0;
+  Server server(lcm, "PING", "test-server", echo_handler(&calls));
+  auto req = ping(3);
+  req.request_id = 9;
+  req.reply_channel = "R";
+  lcm.publish("PING", &req);  // unsigned
+  BusKey other_key;
+  other_key.bytes.fill(0x42);
+  MessageAuth forger(other_key, 1234);
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(req.getEncodedSize()));
+  req.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  std::vector<std::uint8_t> forged = bytes;
+  forger.sign("PING", forged);
+  lcm.publish("PING", forged.data(), static_cast<unsigned>(forged.size()));
+  test::drain(lcm);
+  EXPECT_EQ(calls, 0);
+  EXPECT_EQ(server.counters().rejected, 2);
+  std::vector<std::uint8_t> genuine = bytes;
+  bus_auth().sign("PING", genuine);
+  lcm.publish("PING", genuine.data(), static_cast<unsigned>(genuine.size()));
+  lcm.publish("PING", genuine.data(), static_cast<unsigned>(genuine.size()));  // replayed
+  test::drain(lcm);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(server.counters().answered, 1);
+  EXPECT_EQ(server.counters().from_cache, 0);
+  EXPECT_EQ(server.counters().rejected, 3);
 }
 
 // Requests for another instance are ignored without being counted as errors.

@@ -79,6 +79,13 @@ std::string validate_configuration(const wrc::wheelset_configuration_t& c, int i
     if (std::isfinite(f.value) && f.value >= f.lo && f.value <= f.hi) continue;
     return check_range("configurations[" + std::to_string(i) + "]." + f.name, f.value, f.lo, f.hi, f.unit);
   }
+  // A tracked branch is a wheel profile coordinate, or NaN for none.
+  const Field tracked[] = {{"tracked_s_wheel_left", c.tracked_s_wheel_left, -1.0, 1.0, "m"},
+                           {"tracked_s_wheel_right", c.tracked_s_wheel_right, -1.0, 1.0, "m"}};
+  for (const Field& f : tracked) {
+    if (std::isnan(f.value) || (f.value >= f.lo && f.value <= f.hi)) continue;
+    return check_range("configurations[" + std::to_string(i) + "]." + f.name, f.value, f.lo, f.hi, f.unit);
+  }
   return {};
 }
 
@@ -148,7 +155,40 @@ ContactQuery to_contact_query(const wrc::contact_query_t& q, int index) {
   out.material.friction = q.friction;
   out.fastsim_elements = q.fastsim_elements;
   out.fastsim_strips = q.fastsim_strips;
+  out.tracked_s_wheel = {c.tracked_s_wheel_left, c.tracked_s_wheel_right};
   return out;
+}
+
+void to_configuration_message(const ContactQuery& query, wrc::wheelset_configuration_t& c) {
+  c.y = query.pose.y;
+  c.z = query.pose.z;
+  c.roll = query.pose.roll;
+  c.yaw = query.pose.yaw;
+  c.y_dot = query.y_dot;
+  c.z_dot = query.z_dot;
+  c.roll_dot = query.roll_dot;
+  c.yaw_dot = query.yaw_dot;
+  c.spin_rate = query.spin_rate;
+  c.normal_load_left = query.normal_load[0];
+  c.normal_load_right = query.normal_load[1];
+  c.tracked_s_wheel_left = query.tracked_s_wheel[0];
+  c.tracked_s_wheel_right = query.tracked_s_wheel[1];
+}
+
+void to_query_message(const std::vector<ContactQuery>& batch, wrc::contact_query_t& q) {
+  if (batch.empty()) throw std::invalid_argument("to_query_message: empty batch");
+  const ContactQuery& first = batch.front();
+  q.formulation = first.formulation == ContactFormulation::kElastic ? wrc::contact_query_t::ELASTIC
+                                                                    : wrc::contact_query_t::RIGID;
+  q.shear_modulus = first.material.shear_modulus;
+  q.poisson_ratio = first.material.poisson_ratio;
+  q.friction = first.material.friction;
+  q.fastsim_elements = static_cast<std::int16_t>(first.fastsim_elements);
+  q.fastsim_strips = static_cast<std::int16_t>(first.fastsim_strips);
+  q.speed = first.speed;
+  q.num_configurations = static_cast<std::int32_t>(batch.size());
+  q.configurations.assign(batch.size(), wrc::wheelset_configuration_t{});
+  for (std::size_t i = 0; i < batch.size(); ++i) to_configuration_message(batch[i], q.configurations[i]);
 }
 
 void to_result_message(const ContactResult& result, wrc::contact_result_t& message) {
@@ -177,8 +217,66 @@ void to_result_message(const ContactResult& result, wrc::contact_result_t& messa
     m.fy = p.forces.fy;
     m.mz = p.forces.mz;
   }
+  for (std::size_t i = 0; i < 2; ++i) {
+    const WheelConstraint& w = result.wheels[i];
+    wrc::wheel_constraint_t& m = message.wheels[i];
+    m.gap = w.gap;
+    for (int k = 0; k < 4; ++k) m.gap_gradient[k] = w.gap_gradient[k];
+    m.normal_z = w.normal_z;
+    m.s_wheel = w.s_wheel;
+    m.contact_angle = w.contact_angle;
+    m.switch_function = w.switch_function;
+    m.switch_s_wheel = w.switch_s_wheel;
+  }
   copy3(result.force, message.force);
   copy3(result.moment, message.moment);
+  copy3(result.creep_force, message.creep_force);
+  copy3(result.creep_moment, message.creep_moment);
+}
+
+ContactResult from_result_message(const wrc::contact_result_t& m) {
+  auto vec3 = [](const double v[3]) { return Eigen::Vector3d(v[0], v[1], v[2]); };
+  ContactResult r;
+  r.patches.reserve(m.patches.size());
+  for (const wrc::contact_patch_t& p : m.patches) {
+    ContactPatch out;
+    out.point.side = p.wheel == wrc::contact_patch_t::LEFT ? WheelSide::kLeft : WheelSide::kRight;
+    out.point.s = p.s_wheel;
+    out.point.s_rail = p.s_rail;
+    out.point.wheel_point = vec3(p.wheel_point);
+    out.point.rail_point = vec3(p.rail_point);
+    out.point.normal = vec3(p.normal);
+    out.point.contact_angle = p.contact_angle;
+    out.point.rolling_radius = p.rolling_radius;
+    out.point.is_minimum = true;
+    out.a = p.a;
+    out.b = p.b;
+    out.penetration = p.penetration;
+    out.normal_force = p.normal_force;
+    out.creepages.longitudinal = p.creepage_x;
+    out.creepages.lateral = p.creepage_y;
+    out.creepages.spin = p.spin_creepage;
+    out.forces.fx = p.fx;
+    out.forces.fy = p.fy;
+    out.forces.mz = p.mz;
+    r.patches.push_back(out);
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    const wrc::wheel_constraint_t& w = m.wheels[i];
+    WheelConstraint& c = r.wheels[i];
+    c.gap = w.gap;
+    c.gap_gradient = Eigen::Vector4d(w.gap_gradient[0], w.gap_gradient[1], w.gap_gradient[2], w.gap_gradient[3]);
+    c.normal_z = w.normal_z;
+    c.s_wheel = w.s_wheel;
+    c.contact_angle = w.contact_angle;
+    c.switch_function = w.switch_function;
+    c.switch_s_wheel = w.switch_s_wheel;
+  }
+  r.force = vec3(m.force);
+  r.moment = vec3(m.moment);
+  r.creep_force = vec3(m.creep_force);
+  r.creep_moment = vec3(m.creep_moment);
+  return r;
 }
 
 void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query, wrc::contact_reply_t& reply) {

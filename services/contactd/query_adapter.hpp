@@ -6,6 +6,7 @@
 /// No LCM transport here, so it is used and tested in-process.
 
 #include <string>
+#include <vector>
 
 #include "core/models/contact_model.hpp"
 #include "wrc/contact_query_t.hpp"
@@ -29,6 +30,18 @@ ContactQuery to_contact_query(const wrc::contact_query_t& query, int index);
 
 /// Copies a model result into its message form (num_patches = patches.size(), status OK).
 void to_result_message(const ContactResult& result, wrc::contact_result_t& message);
+
+/// The reverse of to_result_message, for clients (the dynamics): patches (curvatures are not on
+/// the bus and stay 0), wheels, resultants.
+ContactResult from_result_message(const wrc::contact_result_t& message);
+
+/// The message form of one configuration of a library query (the reverse of to_contact_query).
+void to_configuration_message(const ContactQuery& query, wrc::wheelset_configuration_t& configuration);
+
+/// A bus query for a batch of library queries that share formulation, material, grid and speed
+/// (those of the first): every field but header, request id, client, channel, model, instance
+/// and geometry key. @throws std::invalid_argument for an empty batch.
+void to_query_message(const std::vector<ContactQuery>& batch, wrc::contact_query_t& query);
 
 /// Evaluates every configuration of a validated query with model and fills reply.status,
 /// reply.message and reply.results (one per configuration, in query order). Per configuration:

@@ -30,7 +30,7 @@ void require_finite(const char* name, double value) { require(std::isfinite(valu
 
 PrimarySuspension PrimarySuspension::benchmark() {
   PrimarySuspension s;
-  s.longitudinal_stiffness = 1.2e5;
+  s.longitudinal_stiffness = 1.5e7;
   s.lateral_stiffness = 0.0;
   s.vertical_stiffness = 6.0e5;
   s.longitudinal_damping = 2.0e3;

@@ -38,7 +38,9 @@ struct WheelsetParameters {
   double spin_inertia = 112.0;   ///< I_yy about the axle [kg m^2]
   double speed = 30.0;           ///< constant forward speed V [m/s], > 0
   double vertical_force = 154715.0;  ///< external vertical load on the axle, downward [N]
-  double lateral_force = 20000.0;    ///< external lateral load, towards the left rail (+y) [N]
+  /// External lateral load, towards the left rail (+y) [N]. The benchmark's 20 kN push towards
+  /// the right rail, so that, as in the paper, the right wheel reaches the flange root.
+  double lateral_force = -20000.0;
   bool include_gravity = true;       ///< m g acts on top of vertical_force
   double gravity = 9.81;             ///< g [m/s^2]
   PrimarySuspension suspension = PrimarySuspension::benchmark();

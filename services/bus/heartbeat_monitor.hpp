@@ -42,7 +42,7 @@ struct ServiceStatus {
 class HeartbeatMonitor {
  public:
   static constexpr double kForgetPeriods = 10.0;    ///< [-] periods of silence before an entry goes
-  static constexpr double kForgetMinimum = 5.0;     ///< [s] an entry stays at least this long
+  static constexpr double kForgetMinimum = 2.0;     ///< [s] an entry stays at least this long
   static constexpr std::size_t kMaxEntries = 512;   ///< [-] processes in the table at most
 
   /// channel: full bus name of the heartbeat channel. missed_periods > 0.

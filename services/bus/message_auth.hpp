@@ -7,7 +7,7 @@
 /// LCM decoders read a message's fields and ignore what follows, so lcm-spy, lcm-logger and
 /// every typed LCM subscriber still decode the message; wrc's guarded receive path
 /// (bus/guarded_subscription.hpp) checks and strips the trailer before it decodes anything.
-/// The MAC (OpenSSL's HMAC-SHA-256 under the bus key) covers the channel name, the message bytes
+/// The MAC (HMAC-SHA-256, RFC 2104, on OpenSSL's SHA-256, under the bus key) covers the channel name, the message bytes
 /// and the trailer's nonce, sequence and time, so a message moved to another channel, altered in
 /// any byte or re-stamped does not verify. The nonce is random per process start, the sequence
 /// counts the messages the process signed (all channels), utime is the wall clock at signing;

@@ -97,7 +97,10 @@ int ServiceLoop::run() {
       consecutive_errors = 0;
     }
     if (idle_hook_) idle_hook_();
-    check_identity(monotonic_seconds());
+    if (const double now = monotonic_seconds(); now >= next_identity_check_) {
+      check_identity(now);
+      next_identity_check_ = now + 0.25 * heartbeat_.period();  // heartbeats come once a period
+    }
     if (heartbeat_.seconds_until_due() <= 0.0) {
       const double now = monotonic_seconds();
       report_load(now - period_start);

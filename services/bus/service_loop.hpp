@@ -62,6 +62,7 @@ class ServiceLoop {
   HeartbeatPublisher& heartbeat_;
   DuplicateInstanceGuard duplicates_;
   bool duplicate_ = false;
+  double next_identity_check_ = 0.0;  // [s] monotonic time of the next duplicate check
   std::vector<LoadSource*> sources_;
   std::function<void()> idle_hook_;
   double max_wait_ = 0.1;

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "bare_client.hpp"
+#include "bench_bus_key.hpp"
 #include "bus/stop_children.hpp"
 #include "bus/spawn_child.hpp"
 #include "bus/build_paths.hpp"
@@ -69,6 +70,7 @@ struct Bench {
   std::vector<pid_t> children;
 
   Bench() {
+    wrc::bench::use_temporary_bus_key();
     lcm = std::make_unique<lcm::LCM>("");
     if (!lcm->good()) throw std::runtime_error("LCM not usable (run through clients/lib/netns.sh)");
     const auto pingd = wrc::bus::find_service_executable("wrc-pingd", wrc::bus::build_dir());

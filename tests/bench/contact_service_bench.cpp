@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "bare_client.hpp"
+#include "bench_bus_key.hpp"
 #include "bus/stop_children.hpp"
 #include "bus/spawn_child.hpp"
 #include "bus/build_paths.hpp"
@@ -206,6 +207,7 @@ struct Bench {
 
   Bench() {
     if (pinned()) pin_to(0, 0);
+    wrc::bench::use_temporary_bus_key();
     lcm = std::make_unique<lcm::LCM>("");
     if (!lcm->good()) throw std::runtime_error("LCM not usable (run through clients/lib/netns.sh)");
     const auto contactd = wrc::bus::find_service_executable("wrc-contactd", wrc::bus::build_dir());

@@ -2,11 +2,16 @@
 // detection after 3 periods.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <thread>
+#include <vector>
 
 #include "bus/heartbeat_monitor.hpp"
 #include "bus/heartbeat_publisher.hpp"
+#include "bus/drop_counters.hpp"
+#include "bus/message_auth.hpp"
 #include "memq_bus.hpp"
+#include "test_bus_key.hpp"
 
 namespace {
 using namespace wrc::bus;
@@ -80,4 +85,63 @@ TEST(Heartbeat, MonitorRejectsBadHeartbeats) {
   EXPECT_TRUE(monitor.services(monotonic_seconds()).empty());
   EXPECT_THROW(HeartbeatPublisher(lcm, "HEARTBEAT", {}, 0.0), std::invalid_argument);
 }
+// An unsigned heartbeat (a spoofed READY instance "0" with a period of an hour) and one signed
+// under another key leave no entry; the drops are counted.
+TEST(Heartbeat, UnsignedAndForgedHeartbeatsIgnored) {
+  lcm::LCM lcm("memq://");
+  HeartbeatMonitor monitor(lcm, "HEARTBEAT");
+  wrc::heartbeat_t fake{};
+  fake.model = "onepoint";
+  fake.instance = "0";
+  fake.state = wrc::heartbeat_t::READY;
+  fake.period = 3600.0;
+  fake.interface_version = wrc::heartbeat_t::INTERFACE_VERSION;
+  const auto before = drop_counts();
+  lcm.publish("HEARTBEAT", &fake);
+  BusKey other;
+  other.bytes.fill(9);
+  MessageAuth forger(other, 77);
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(fake.getEncodedSize()));
+  fake.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  forger.sign("HEARTBEAT", bytes);
+  lcm.publish("HEARTBEAT", bytes.data(), static_cast<unsigned>(bytes.size()));
+  test::drain(lcm);
+  EXPECT_EQ(monitor.size(), 0u);
+  EXPECT_EQ(monitor.rejected(), 2);
+  EXPECT_EQ(drop_counts().unsigned_messages(), before.unsigned_messages() + 1);
+  EXPECT_EQ(drop_counts().bad_signature(), before.bad_signature() + 1);
+}
+
+// Each process is an entry of its own (two processes with one name show twice); silent entries
+// are forgotten; the table never holds more than kMaxEntries.
+TEST(Heartbeat, TableIsPerProcessPrunedAndBounded) {
+  lcm::LCM lcm("memq://");
+  HeartbeatMonitor monitor(lcm, "HEARTBEAT");
+  const BusKey key = test::test_bus_key();
+  auto publish_from = [&](std::uint64_t nonce, const std::string& instance, double period) {
+    wrc::heartbeat_t hb{};
+    hb.model = "pingd";
+    hb.instance = instance;
+    hb.period = period;
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(hb.getEncodedSize()));
+    hb.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    MessageAuth(key, nonce).sign("HEARTBEAT", bytes);
+    lcm.publish("HEARTBEAT", bytes.data(), static_cast<unsigned>(bytes.size()));
+  };
+  publish_from(1, "same", 0.01);
+  publish_from(2, "same", 0.01);
+  test::drain(lcm);
+  EXPECT_EQ(monitor.services(monotonic_seconds()).size(), 2u);
+  for (std::uint64_t nonce = 100; nonce < 100 + 2 * HeartbeatMonitor::kMaxEntries; ++nonce) {
+    publish_from(nonce, "n" + std::to_string(nonce), 0.01);
+    if (nonce % 500 == 0) test::drain(lcm);
+  }
+  test::drain(lcm);
+  EXPECT_LE(monitor.size(), HeartbeatMonitor::kMaxEntries);
+  std::this_thread::sleep_for(std::chrono::duration<double>(HeartbeatMonitor::kForgetMinimum + 0.1));
+  publish_from(5, "late", 0.01);  // an arrival sweeps the silent ones out
+  test::drain(lcm);
+  EXPECT_EQ(monitor.size(), 1u);
+}
+
 }  // namespace

@@ -23,6 +23,10 @@ class ContactEvaluator {
   ///         answer (a retry with a smaller step may help); std::runtime_error when the source
   ///         failed (the run cannot go on).
   virtual std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch) = 0;
+  /// Queries re-sent after a timeout so far [-] (0 in-process).
+  virtual long retries() const { return 0; }
+  /// Attempt rounds that got no reply so far [-] (0 in-process).
+  virtual long timeouts() const { return 0; }
 };
 
 /// A ContactModel called directly.

@@ -19,6 +19,8 @@ struct RunCounters {
   long contact_switches = 0;   ///< contact-point switches located as events (both wheels) [-]
   long contact_queries = 0;    ///< contact evaluations asked for (a batch counts once) [-]
   long contact_configurations = 0;  ///< configurations in them [-]
+  long contact_retries = 0;    ///< contact queries re-sent after a timeout (over the bus) [-]
+  long contact_timeouts = 0;   ///< attempt rounds without a reply (the run waited for a service) [-]
   int last_order = 0;          ///< method order of the last step [-]
   double last_step = 0;        ///< size of the last step [s]
 
@@ -37,6 +39,8 @@ struct RunCounters {
     contact_switches += o.contact_switches;
     contact_queries += o.contact_queries;
     contact_configurations += o.contact_configurations;
+    contact_retries += o.contact_retries;
+    contact_timeouts += o.contact_timeouts;
     return *this;
   }
 };

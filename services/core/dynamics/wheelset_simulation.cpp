@@ -322,6 +322,8 @@ RunCounters WheelsetSimulation::counters() const {
   const RunCounters now = ida_counters();
   c += now;
   c += own_;
+  c.contact_retries += contact_->retries();
+  c.contact_timeouts += contact_->timeouts();
   c.last_order = now.last_order;
   c.last_step = now.last_step;
   return c;
@@ -425,7 +427,26 @@ void WheelsetSimulation::start() {
   begin_segment(y, true);
   next_output_ = 0.0;
   output_index_ = 0;
+  record_step_contact(true);
   emit_outputs_until(0.0);
+}
+
+std::array<WheelOutput, 2> WheelsetSimulation::wheel_outputs(const std::vector<double>& y) {
+  const ContactResult& c = contact_at(y.data());
+  std::array<WheelOutput, 2> out;
+  for (int i = 0; i < 2; ++i) {
+    WheelOutput& w = out[static_cast<size_t>(i)];
+    w.s_wheel = c.wheels[static_cast<size_t>(i)].s_wheel;
+    w.contact_angle = c.wheels[static_cast<size_t>(i)].contact_angle;
+    w.normal_force = equations_.normal_force(formulation_, y.data(), c, i);
+  }
+  return out;
+}
+
+void WheelsetSimulation::record_step_contact(bool restart) {
+  const StepContact now{t_, wheel_outputs(current_state())};
+  previous_step_ = restart ? now : current_step_;
+  current_step_ = now;
 }
 
 void WheelsetSimulation::emit_outputs_until(double t) {
@@ -436,7 +457,19 @@ void WheelsetSimulation::emit_outputs_until(double t) {
     check_sundials(IDAGetDky(ida_.mem(), next_output_, 0, tmp.get()), "IDAGetDky");
     if (next_output_ == t) N_VScale(1.0, y_->get(), tmp.get());  // exactly the step's state
     std::vector<double> y(tmp.data(), tmp.data() + tmp.size());
-    if (on_output_) on_output_(snapshot_of(y, next_output_));
+    const double span = current_step_.t - previous_step_.t;
+    const double w = span > 0.0 ? std::clamp((next_output_ - previous_step_.t) / span, 0.0, 1.0) : 1.0;
+    std::array<WheelOutput, 2> wheels;
+    for (size_t i = 0; i < 2; ++i) {
+      const WheelOutput& a = previous_step_.wheels[i];
+      const WheelOutput& b = current_step_.wheels[i];
+      wheels[i].s_wheel = a.s_wheel + w * (b.s_wheel - a.s_wheel);
+      wheels[i].contact_angle = a.contact_angle + w * (b.contact_angle - a.contact_angle);
+      wheels[i].normal_force = formulation_ == ContactFormulation::kRigid
+                                   ? equations_.normal_force(formulation_, y.data(), ContactResult{}, static_cast<int>(i))
+                                   : a.normal_force + w * (b.normal_force - a.normal_force);
+    }
+    if (on_output_) on_output_(snapshot_of(y, next_output_, wheels));
     if (next_output_ >= t_end) {
       next_output_ = std::numeric_limits<double>::infinity();
       break;
@@ -446,7 +479,8 @@ void WheelsetSimulation::emit_outputs_until(double t) {
   }
 }
 
-WheelsetSnapshot WheelsetSimulation::snapshot_of(const std::vector<double>& y, double t) {
+WheelsetSnapshot WheelsetSimulation::snapshot_of(const std::vector<double>& y, double t,
+                                                 const std::array<WheelOutput, 2>& wheels) {
   WheelsetSnapshot s;
   s.t = t;
   s.y = y[kUnknownY];
@@ -459,17 +493,14 @@ WheelsetSnapshot WheelsetSimulation::snapshot_of(const std::vector<double>& y, d
   s.yaw_dot = y[kUnknownYawDot];
   s.spin_rate = y[kUnknownSpinRate];
   s.model = contact_->model();
-  const ContactResult& c = contact_at(y.data());
-  for (int i = 0; i < 2; ++i) {
-    WheelOutput& w = s.wheels[static_cast<size_t>(i)];
-    w.s_wheel = c.wheels[static_cast<size_t>(i)].s_wheel;
-    w.contact_angle = c.wheels[static_cast<size_t>(i)].contact_angle;
-    w.normal_force = equations_.normal_force(formulation_, y.data(), c, i);
-  }
+  s.wheels = wheels;
   return s;
 }
 
-WheelsetSnapshot WheelsetSimulation::snapshot() { return snapshot_of(current_state(), t_); }
+WheelsetSnapshot WheelsetSimulation::snapshot() {
+  const std::vector<double> y = current_state();
+  return snapshot_of(y, t_, wheel_outputs(y));
+}
 
 void WheelsetSimulation::fail(const std::string& why) {
   state_ = RunState::kFailed;
@@ -516,7 +547,10 @@ void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
       settle_elastic(y, z_acceleration, roll_acceleration);
     }
     begin_segment(y, false);
+    record_step_contact(true);
     swaps_.push_back({t_, previous->model(), next->model()});
+    own_.contact_retries += previous->retries();
+    own_.contact_timeouts += previous->timeouts();
   } catch (const std::exception& e) {
     contact_ = previous;
     formulation_ = from;
@@ -554,6 +588,7 @@ void WheelsetSimulation::handle_roots() {
   project_positions(y);
   project_velocities(y);
   begin_segment(y, false);
+  record_step_contact(true);
 }
 
 bool WheelsetSimulation::advance() {
@@ -584,6 +619,7 @@ bool WheelsetSimulation::advance() {
       return false;
     }
     t_ = t_reached;
+    record_step_contact(false);
     emit_outputs_until(t_);
     if (flag == IDA_ROOT_RETURN) {
       handle_roots();

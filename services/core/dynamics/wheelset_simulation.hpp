@@ -125,8 +125,18 @@ class WheelsetSimulation {
   void begin_segment(std::vector<double> y, bool first);
   void perform_swap(std::shared_ptr<ContactEvaluator> next);
   void handle_roots();
+  /// The contact of each wheel at the state y (one contact evaluation, usually cached).
+  std::array<WheelOutput, 2> wheel_outputs(const std::vector<double>& y);
+  /// Every output sample up to t: the state interpolated by IDA, the contact data linearly
+  /// between the last two accepted steps (no contact evaluation per sample).
   void emit_outputs_until(double t);
-  WheelsetSnapshot snapshot_of(const std::vector<double>& y, double t);
+  WheelsetSnapshot snapshot_of(const std::vector<double>& y, double t, const std::array<WheelOutput, 2>& wheels);
+  /// The contact data of the step just accepted (and of the previous one).
+  struct StepContact {
+    double t = 0;
+    std::array<WheelOutput, 2> wheels;
+  };
+  void record_step_contact(bool restart);
   RunCounters ida_counters() const;
   std::vector<double> current_state() const;
   void fail(const std::string& why);
@@ -154,6 +164,7 @@ class WheelsetSimulation {
   RunCounters accumulated_;  // finished segments
   RunCounters own_;          // counted here, not by IDA (queries, Jacobians, restarts, switches)
   std::deque<CachedContact> cache_;
+  StepContact previous_step_, current_step_;
   std::vector<SwapRecord> swaps_;
   std::vector<SwitchRecord> switch_log_;
 };

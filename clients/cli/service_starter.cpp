@@ -1,0 +1,115 @@
+#include "cli/service_starter.hpp"
+
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <stdexcept>
+
+#include "bus/build_paths.hpp"
+#include "bus/clock.hpp"
+#include "bus/spawn_child.hpp"
+#include "bus/stop_children.hpp"
+
+namespace wrc::cli {
+
+StartedService::StartedService(const std::string& path, const std::vector<std::string>& args, std::string log)
+    : log_(std::move(log)) {
+  std::vector<std::string> words{path};
+  words.insert(words.end(), args.begin(), args.end());
+  pid_ = bus::spawn_tied_child(words, SIGTERM, log_);  // the service drains when the command dies
+  if (pid_ < 0) throw std::runtime_error("fork failed for " + path);
+}
+
+StartedService::~StartedService() { stop(); }
+
+bool StartedService::alive() {
+  if (pid_ <= 0) return false;
+  int status = 0;
+  if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+    pid_ = -1;
+    return false;
+  }
+  return true;
+}
+
+void StartedService::stop() {
+  if (!alive()) return;
+  bus::stop_children({pid_}, 5.0);
+  pid_ = -1;
+}
+
+void StartedService::stop_and_forget() {
+  stop();
+  std::error_code ignored;
+  std::filesystem::remove(log_, ignored);
+}
+
+std::string tail_of(const std::string& path) {
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (text.size() > 2000) text = "..." + text.substr(text.size() - 2000);
+  return text;
+}
+
+bool handle_until(lcm::LCM& lcm, double deadline, const std::function<bool()>& done) {
+  while (!done()) {
+    const double left = deadline - bus::monotonic_seconds();
+    if (left <= 0.0) return false;
+    lcm.handleTimeout(static_cast<int>(std::ceil(std::min(left, 0.05) * 1e3)));
+  }
+  return true;
+}
+
+std::optional<bus::ServiceStatus> pick_service(const bus::HeartbeatMonitor& monitor, const std::string& model,
+                                               const std::string& geometry_key, const std::string& instance,
+                                               bool ready) {
+  for (const auto& s : monitor.services(bus::monotonic_seconds())) {  // sorted by model, instance
+    if (s.last.model != model || !s.alive) continue;
+    if (!geometry_key.empty() && s.last.geometry_key != geometry_key) continue;
+    if (!instance.empty() && s.last.instance != instance) continue;
+    if (ready ? s.available() : s.last.state == wrc::heartbeat_t::STARTING) return s;
+  }
+  return std::nullopt;
+}
+
+std::unique_ptr<StartedService> ensure_service(lcm::LCM& lcm, const bus::HeartbeatMonitor& monitor,
+                                               const StartContext& context, const std::string& model,
+                                               const std::string& geometry_key, const std::string& executable,
+                                               std::vector<std::string> args) {
+  if (pick_service(monitor, model, geometry_key, "", true)) return nullptr;
+  if (pick_service(monitor, model, geometry_key, "", false)) {
+    std::cerr << context.command << ": a " << model << " service is starting; waiting for it\n";
+    if (handle_until(lcm, bus::monotonic_seconds() + context.start_timeout,
+                     [&] { return pick_service(monitor, model, geometry_key, "", true).has_value(); }))
+      return nullptr;
+  }
+  const auto path = bus::find_service_executable(executable, context.build_dir);
+  if (!path) throw std::runtime_error("no " + model + " service runs and " + executable + " is not built in " +
+                                      context.build_dir);
+  args.insert(args.end(), {"--instance", context.instance, "--heartbeat-period", "0.2"});
+  args.insert(args.end(), context.bus_args.begin(), context.bus_args.end());
+  const std::string log = (std::filesystem::temp_directory_path() /
+                           ("wrc-" + context.command + "-" + model + "-" + context.instance + ".log"))
+                              .string();
+  std::cerr << context.command << ": no " << model << " service heard; starting " << executable << " (log " << log
+            << ")\n";
+  auto started = std::make_unique<StartedService>(*path, args, log);
+  const double t0 = bus::monotonic_seconds();
+  handle_until(lcm, t0 + context.start_timeout, [&] {
+    return pick_service(monitor, model, geometry_key, context.instance, true).has_value() || !started->alive();
+  });
+  if (!pick_service(monitor, model, geometry_key, context.instance, true)) {
+    const bool died = !started->alive();
+    throw std::runtime_error("the started " + model + " service " +
+                             (died ? std::string("exited") : "was not READY in time") + "; its log:\n" +
+                             tail_of(log));
+  }
+  return started;
+}
+
+}  // namespace wrc::cli

@@ -1,0 +1,71 @@
+#pragma once
+/// @file
+/// Services a command needs, found by their heartbeats or started from the build tree for the
+/// command's lifetime (tied to it: they drain when it dies), with their logs removed after a clean
+/// stop.
+
+#include <lcm/lcm-cpp.hpp>
+#include <sys/types.h>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bus/heartbeat_monitor.hpp"
+
+namespace wrc::cli {
+
+/// A service process this command started.
+class StartedService {
+ public:
+  /// Starts path with args, output to log. @throws std::runtime_error when fork fails.
+  StartedService(const std::string& path, const std::vector<std::string>& args, std::string log);
+  ~StartedService();
+  StartedService(const StartedService&) = delete;
+  StartedService& operator=(const StartedService&) = delete;
+  pid_t pid() const { return pid_; }
+  const std::string& log() const { return log_; }
+  bool alive();
+  /// SIGTERM, up to 5 s for a clean exit (DRAINING heartbeat), then SIGKILL.
+  void stop();
+  /// stop() and remove the log.
+  void stop_and_forget();
+
+ private:
+  pid_t pid_ = -1;
+  std::string log_;
+};
+
+/// The last 2000 characters of a file.
+std::string tail_of(const std::string& path);
+
+/// Dispatches LCM until done() or the deadline [s, monotonic]; false on timeout.
+bool handle_until(lcm::LCM& lcm, double deadline, const std::function<bool()>& done);
+
+/// The smallest-named alive instance of model (with geometry_key when not empty, the named
+/// instance when not empty), READY (ready) or STARTING.
+std::optional<bus::ServiceStatus> pick_service(const bus::HeartbeatMonitor& monitor, const std::string& model,
+                                               const std::string& geometry_key, const std::string& instance,
+                                               bool ready);
+
+/// Where services are started and how.
+struct StartContext {
+  std::string command;      ///< "run", for log lines and file names
+  std::string build_dir;    ///< build tree holding the service executables
+  std::string instance;     ///< instance name given to started services
+  std::vector<std::string> bus_args;  ///< --channel-prefix / --lcm-url passed on
+  double start_timeout = 300.0;       ///< [s] wait for READY
+};
+
+/// A READY service of model (heartbeat model name) with geometry_key, waiting for a starting one;
+/// when none, starts executable with args (plus instance, heartbeat period and bus_args), waits
+/// for READY and returns the process (null when one was already there).
+/// @throws std::runtime_error when it cannot be started or is not READY in time (with its log).
+std::unique_ptr<StartedService> ensure_service(lcm::LCM& lcm, const bus::HeartbeatMonitor& monitor,
+                                               const StartContext& context, const std::string& model,
+                                               const std::string& geometry_key, const std::string& executable,
+                                               std::vector<std::string> args);
+
+}  // namespace wrc::cli

@@ -1,0 +1,74 @@
+#include "dynamicsd/bus_contact.hpp"
+
+#include <stdexcept>
+
+#include "bus/channels.hpp"
+#include "bus/clock.hpp"
+#include "contactd/query_adapter.hpp"
+
+namespace wrc::dynamics {
+
+BusContact::BusContact(bus::RequestClient<contact_query_t, contact_reply_t>& client,
+                       const bus::HeartbeatMonitor& monitor, const bus::ChannelNames& names,
+                       BusContactSettings settings)
+    : client_(client),
+      monitor_(monitor),
+      request_channel_(names.name(bus::channel::kContactQuery, settings.model)),
+      settings_(std::move(settings)) {}
+
+std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>& batch) {
+  contact_query_t query{};
+  contactd::to_query_message(batch, query);
+  query.model = settings_.model;
+  query.instance = settings_.instance;
+  query.geometry_key = settings_.geometry_key;
+  client_.set_request_channel(request_channel_);
+  const double give_up = bus::monotonic_seconds() + settings_.wait;
+  for (;;) {
+    const bus::CallResult<contact_reply_t> result = client_.call(query, settings_.policy);
+    retries_ += result.attempts - 1;
+    if (result) {
+      const contact_reply_t& reply = *result.reply;
+      const std::string who = "contact model " + settings_.model + " (" + reply.instance + ")";
+      if (!settings_.geometry_key.empty() && reply.geometry_key != settings_.geometry_key)
+        throw std::runtime_error(who + " computes with geometry key " + reply.geometry_key + ", not " +
+                                 settings_.geometry_key);
+      switch (reply.status) {
+        case contact_reply_t::OK: break;
+        case contact_reply_t::OUTSIDE_MODEL: throw OutsideModelError(who + ": " + reply.message);
+        case contact_reply_t::NO_CONTACT:
+        case contact_reply_t::IMPOSSIBLE_CONFIGURATION: throw ContactConfigurationError(who + ": " + reply.message);
+        default:
+          throw std::runtime_error(who + " answered status " + std::to_string(reply.status) + ": " + reply.message);
+      }
+      if (reply.results.size() != batch.size())
+        throw std::runtime_error(who + " answered " + std::to_string(reply.results.size()) + " results for " +
+                                 std::to_string(batch.size()) + " configurations");
+      std::vector<ContactResult> out;
+      out.reserve(batch.size());
+      for (const contact_result_t& r : reply.results) out.push_back(contactd::from_result_message(r));
+      return out;
+    }
+    ++timeouts_;
+    if (bus::monotonic_seconds() >= give_up)
+      throw std::runtime_error("no contact service " + settings_.model + " answered within " +
+                               std::to_string(settings_.wait) + " s (" +
+                               missing_service_reason(monitor_, settings_.model, settings_.instance,
+                                                      settings_.geometry_key) +
+                               ")");
+  }
+}
+
+std::string missing_service_reason(const bus::HeartbeatMonitor& monitor, const std::string& model,
+                                   const std::string& instance, const std::string& geometry_key) {
+  const std::optional<bus::ServiceStatus> s = monitor.find(model, instance, bus::monotonic_seconds());
+  const std::string name = model + (instance.empty() ? "" : " instance " + instance);
+  if (!s) return "no " + name + " service on the bus";
+  if (!s->available()) return "the " + name + " service is not READY";
+  if (!geometry_key.empty() && s->last.geometry_key != geometry_key)
+    return "the " + name + " service computes with geometry key " + s->last.geometry_key.substr(0, 12) +
+           "..., not " + geometry_key.substr(0, 12) + "...";
+  return {};
+}
+
+}  // namespace wrc::dynamics

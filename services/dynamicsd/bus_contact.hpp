@@ -1,0 +1,60 @@
+#pragma once
+/// @file
+/// ContactEvaluator over the bus: a batch of configurations as one contact_query_t to
+/// wrc-contactd --model M, the reply turned back into library results. A query that gets no
+/// reply is re-sent (same request id) and, when a whole round of attempts fails (the service died
+/// and the launcher restarts it), asked again until the wait limit: a deterministic service gives
+/// the same answer, so a run with a restarted service ends as an undisturbed one.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bus/heartbeat_monitor.hpp"
+#include "bus/request_client.hpp"
+#include "core/dynamics/contact_evaluator.hpp"
+#include "wrc/contact_query_t.hpp"
+#include "wrc/contact_reply_t.hpp"
+
+namespace wrc::dynamics {
+
+/// Where and how to ask.
+struct BusContactSettings {
+  std::string model;         ///< onepoint, interp, multipoint, spline
+  std::string instance;      ///< empty: any instance
+  std::string geometry_key;  ///< the key the service must compute with
+  bus::CallPolicy policy;    ///< per-attempt timeout and re-sends
+  double wait = 10.0;        ///< [s] longest wait for a service that answers, per query
+};
+
+class BusContact final : public ContactEvaluator {
+ public:
+  /// client: the dynamics' request client (its request channel is switched to the model's).
+  /// monitor: heartbeats, to wait for a (restarted) service of the model.
+  BusContact(bus::RequestClient<contact_query_t, contact_reply_t>& client, const bus::HeartbeatMonitor& monitor,
+             const bus::ChannelNames& names, BusContactSettings settings);
+  std::string model() const override { return settings_.model; }
+  /// @throws OutsideModelError (OUTSIDE_MODEL), ContactConfigurationError (IMPOSSIBLE_CONFIGURATION,
+  ///         NO_CONTACT), std::runtime_error (BAD_REQUEST, INTERNAL_ERROR, another geometry, no
+  ///         reply within the wait limit), each naming the model and the service's message.
+  std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch) override;
+  long retries() const override { return retries_; }
+  long timeouts() const override { return timeouts_; }
+
+ private:
+  bus::RequestClient<contact_query_t, contact_reply_t>& client_;
+  const bus::HeartbeatMonitor& monitor_;
+  std::string request_channel_;
+  BusContactSettings settings_;
+  long retries_ = 0;
+  long timeouts_ = 0;
+};
+
+/// Whether a service of model (and instance) with geometry_key is alive and READY now; the
+/// reason when not ("no READY onepoint service with geometry key ab12.. on the bus").
+std::string missing_service_reason(const bus::HeartbeatMonitor& monitor, const std::string& model,
+                                   const std::string& instance, const std::string& geometry_key);
+
+}  // namespace wrc::dynamics

@@ -1,0 +1,216 @@
+#include "dynamicsd/dynamics_service.hpp"
+
+#include <iostream>
+
+#include "bus/clock.hpp"
+#include "bus/signed_publish.hpp"
+#include "core/identity/geometry_key.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "core/spline/spline_geometry_fit.hpp"
+#include "dynamicsd/bus_contact.hpp"
+#include "wrc/integrator_stats_t.hpp"
+#include "wrc/run_status_t.hpp"
+#include "wrc/wheelset_state_t.hpp"
+
+namespace wrc::dynamics {
+namespace {
+
+constexpr double kStatusPeriod = 0.5;  // [s] wall time between RUN_STATUS / INTEGRATOR_STATS
+
+std::int8_t status_code(RunState s) {
+  switch (s) {
+    case RunState::kRunning: return run_status_t::RUNNING;
+    case RunState::kFinished: return run_status_t::FINISHED;
+    case RunState::kFailed: return run_status_t::FAILED;
+    case RunState::kStopped: return run_status_t::STOPPED;
+  }
+  return run_status_t::FAILED;
+}
+
+}  // namespace
+
+DynamicsService::DynamicsService(lcm::LCM& lcm, const bus::ChannelNames& names, const std::string& sender)
+    : lcm_(lcm),
+      names_(names),
+      stamper_(sender),
+      monitor_(lcm, names.name(bus::channel::kHeartbeat)),
+      client_(lcm, names.name(bus::channel::kContactQuery, "onepoint"),
+              names.name(bus::channel::kContactReply, bus::make_client_id("wrc-dynamicsd")), sender) {
+  commands_ = std::make_unique<bus::GuardedSubscription<run_command_t>>(
+      lcm_, names_.name(bus::channel::kRunCommand), "dynamics commands",
+      [this](const run_command_t& c, const bus::ReceivedMessage&) { on_command(c); });
+  selects_ = std::make_unique<bus::GuardedSubscription<contact_select_t>>(
+      lcm_, names_.name(bus::channel::kContactSelect), "dynamics swaps",
+      [this](const contact_select_t& s, const bus::ReceivedMessage&) { on_select(s); });
+}
+
+template <class Message>
+void DynamicsService::publish(const char* base, Message& message) {
+  stamper_.stamp(message.header);
+  bus::publish_signed(lcm_, names_.name(base), message);
+}
+
+void DynamicsService::on_command(const run_command_t& command) {
+  if (command.request_id <= 0 || command.request_id == last_request_id_) return;  // repeats of one command
+  last_request_id_ = command.request_id;
+  pending_command_ = command;  // acted on at the next step boundary (poll)
+}
+
+void DynamicsService::on_select(const contact_select_t& select) {
+  if (select.seq <= last_select_seq_) return;  // republished copies of a selection already seen
+  last_select_seq_ = select.seq;
+  pending_select_ = select;
+}
+
+std::shared_ptr<ContactEvaluator> DynamicsService::make_contact(const std::string& model) {
+  if (request_.in_process) {
+    ContactModelData data;
+    if (contact_model_entry(model).needs_data) data.splines = fit_spline_geometry(*geometry_, {}, {}).model;
+    return std::make_shared<InProcessContact>(make_contact_model(model, geometry_, {}, data));
+  }
+  BusContactSettings s;
+  s.model = model;
+  s.instance = request_.instance;
+  s.geometry_key = geometry_key_;
+  s.policy.timeout = request_.contact_timeout;
+  s.policy.retries = request_.contact_retries;
+  s.wait = request_.contact_wait;
+  return std::make_shared<BusContact>(client_, monitor_, names_, s);
+}
+
+void DynamicsService::start(const run_command_t& command) {
+  simulation_.reset();
+  summary_.reset();
+  status_message_.clear();
+  request_id_ = command.request_id;
+  try {
+    request_ = from_message(command);
+    geometry_key_ = geometry_key(request_.geometry);
+    if (request_.in_process) geometry_ = std::make_shared<const WheelsetGeometry>(make_geometry(request_.geometry));
+    const double r0 = request_.geometry.track.nominal_radius;
+    simulation_ = std::make_unique<WheelsetSimulation>(request_.spec, make_contact(request_.model), r0);
+    for (const ScheduledSwap& swap : request_.swaps) simulation_->schedule_swap(swap.t, make_contact(swap.model));
+    const std::string run_id = request_.run_id;
+    const double speed = request_.spec.wheelset.speed;
+    simulation_->on_output([this, run_id, speed](const WheelsetSnapshot& s) {
+      wheelset_state_t m = to_state_message(s, run_id, speed);
+      publish(bus::channel::kWheelsetState, m);
+    });
+    wall_start_ = bus::monotonic_seconds();
+    std::cerr << "wrc-dynamicsd: run " << run_id << " with " << request_.model
+              << (request_.in_process ? " (in-process)" : "") << " to t = " << request_.spec.integrator.t_end
+              << " s\n";
+    simulation_->start();
+  } catch (const std::exception& e) {
+    simulation_.reset();
+    std::cerr << "wrc-dynamicsd: run " << command.run_id << " failed to start: " << e.what() << "\n";
+    run_status_t status{};
+    status.request_id = command.request_id;
+    status.run_id = command.run_id;
+    status.state = run_status_t::FAILED;
+    status.model = command.model;
+    status.message = e.what();
+    publish(bus::channel::kRunStatus, status);
+    run_summary_t summary{};
+    summary.request_id = command.request_id;
+    summary.run_id = command.run_id;
+    summary.state = run_status_t::FAILED;
+    summary.model = command.model;
+    summary.message = e.what();
+    summary_ = summary;
+    publish(bus::channel::kRunSummary, *summary_);
+    return;
+  }
+  publish_status(true);
+}
+
+void DynamicsService::apply_select() {
+  const contact_select_t select = *pending_select_;
+  pending_select_.reset();
+  if (!running() || (!select.run_id.empty() && select.run_id != request_.run_id)) return;
+  if (select.model == simulation_->model()) return;
+  try {
+    contact_model_entry(select.model);
+    if (!request_.in_process) {
+      const std::string missing = missing_service_reason(monitor_, select.model, select.instance, geometry_key_);
+      if (!missing.empty()) {
+        status_message_ = "swap to " + select.model + " refused, keeping " + simulation_->model() + ": " + missing;
+        std::cerr << "wrc-dynamicsd: " << status_message_ << "\n";
+        publish_status(true);
+        return;
+      }
+    }
+    simulation_->request_swap(make_contact(select.model));
+  } catch (const std::exception& e) {
+    status_message_ = "swap to " + select.model + " refused: " + e.what();
+    publish_status(true);
+  }
+}
+
+void DynamicsService::finish() {
+  wall_time_ = bus::monotonic_seconds() - wall_start_;
+  run_summary_t summary = to_summary_message(*simulation_, request_.run_id, request_id_, wall_time_);
+  if (summary.message.empty()) summary.message = status_message_;
+  summary_ = summary;
+  publish(bus::channel::kRunSummary, *summary_);
+  const RunCounters c = simulation_->counters();
+  std::cerr << "wrc-dynamicsd: run " << request_.run_id << " ended at t = " << simulation_->time() << " s ("
+            << simulation_->message() << ") in " << wall_time_ << " s, " << c.steps << " steps, " << c.restarts
+            << " restarts, " << c.contact_queries << " contact queries\n";
+  publish_status(true);
+}
+
+void DynamicsService::publish_status(bool force) {
+  const double now = bus::monotonic_seconds();
+  if (!force && now < next_status_) return;
+  next_status_ = now + kStatusPeriod;
+  if (!simulation_) {
+    if (summary_) publish(bus::channel::kRunSummary, *summary_);
+    return;
+  }
+  run_status_t status{};
+  status.request_id = request_id_;
+  status.run_id = request_.run_id;
+  status.state = status_code(simulation_->state());
+  status.t = simulation_->time();
+  status.t_end = request_.spec.integrator.t_end;
+  status.model = simulation_->model();
+  status.instance = request_.instance;
+  status.num_switches = static_cast<std::int32_t>(simulation_->swaps().size());
+  status.last_switch_time = simulation_->swaps().empty() ? -1.0 : simulation_->swaps().back().t;
+  status.message = simulation_->message().empty() ? status_message_ : simulation_->message();
+  publish(bus::channel::kRunStatus, status);
+  const double wall = running() ? now - wall_start_ : wall_time_;
+  integrator_stats_t stats = to_stats_message(simulation_->counters(), request_.run_id, simulation_->time(), wall);
+  publish(bus::channel::kIntegratorStats, stats);
+  if (!running() && summary_) publish(bus::channel::kRunSummary, *summary_);
+}
+
+void DynamicsService::poll(double budget) {
+  if (pending_command_) {
+    const run_command_t command = *pending_command_;
+    pending_command_.reset();
+    if (command.command == run_command_t::START) {
+      if (running()) {
+        simulation_->request_stop();
+        simulation_->advance();
+        finish();
+      }
+      start(command);
+    } else if (command.command == run_command_t::STOP && running() &&
+               (command.run_id.empty() || command.run_id == request_.run_id)) {
+      simulation_->request_stop();
+    }
+  }
+  if (pending_select_) apply_select();
+  if (simulation_ && simulation_->state() == RunState::kRunning) {
+    const double until = bus::monotonic_seconds() + budget;
+    bool more = true;
+    while (more && bus::monotonic_seconds() < until && !pending_command_ && !pending_select_)
+      more = simulation_->advance();
+    if (!more) finish();
+  }
+  publish_status(false);
+}
+
+}  // namespace wrc::dynamics

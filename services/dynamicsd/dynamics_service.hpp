@@ -1,0 +1,75 @@
+#pragma once
+/// @file
+/// wrc-dynamicsd's run management: START/STOP commands (RUN_COMMAND), live swaps
+/// (CONTACT_SELECT), one WheelsetSimulation at a time advanced step by step from the service loop,
+/// and what it publishes (WHEELSET_STATE at the output period, RUN_STATUS and INTEGRATOR_STATS
+/// twice a second and on every change, RUN_SUMMARY at the end, repeated while idle so that a
+/// client that lost it gets it). Messages that arrive while a step waits for a contact reply
+/// only set flags here; they act at the next step boundary.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "bus/channels.hpp"
+#include "bus/guarded_subscription.hpp"
+#include "bus/header_stamper.hpp"
+#include "bus/heartbeat_monitor.hpp"
+#include "bus/request_client.hpp"
+#include "core/dynamics/wheelset_simulation.hpp"
+#include "dynamicsd/run_codec.hpp"
+#include "wrc/contact_query_t.hpp"
+#include "wrc/contact_reply_t.hpp"
+#include "wrc/contact_select_t.hpp"
+#include "wrc/run_command_t.hpp"
+#include "wrc/run_summary_t.hpp"
+
+namespace wrc::dynamics {
+
+class DynamicsService {
+ public:
+  DynamicsService(lcm::LCM& lcm, const bus::ChannelNames& names, const std::string& sender);
+  /// Acts on pending commands and swaps, then advances a running simulation for up to
+  /// budget seconds of wall time (whole steps) and publishes what is due.
+  void poll(double budget);
+  bool running() const { return simulation_ && simulation_->state() == RunState::kRunning; }
+
+ private:
+  void on_command(const run_command_t& command);
+  void on_select(const contact_select_t& select);
+  void start(const run_command_t& command);
+  void finish();
+  std::shared_ptr<ContactEvaluator> make_contact(const std::string& model);
+  void apply_select();
+  void publish_status(bool force);
+  template <class Message>
+  void publish(const char* base, Message& message);
+
+  lcm::LCM& lcm_;
+  bus::ChannelNames names_;
+  bus::HeaderStamper stamper_;
+  bus::HeartbeatMonitor monitor_;
+  bus::RequestClient<contact_query_t, contact_reply_t> client_;
+  std::unique_ptr<bus::GuardedSubscription<run_command_t>> commands_;
+  std::unique_ptr<bus::GuardedSubscription<contact_select_t>> selects_;
+
+  std::optional<run_command_t> pending_command_;
+  std::int64_t last_request_id_ = 0;
+  std::optional<contact_select_t> pending_select_;
+  std::int64_t last_select_seq_ = 0;
+
+  std::unique_ptr<WheelsetSimulation> simulation_;
+  RunRequest request_;
+  std::int64_t request_id_ = 0;
+  std::string geometry_key_;
+  std::shared_ptr<const WheelsetGeometry> geometry_;  // in-process runs
+  double wall_start_ = 0;
+  double wall_time_ = 0;
+  double next_status_ = 0;
+  std::string status_message_;
+  std::optional<run_summary_t> summary_;
+};
+
+}  // namespace wrc::dynamics

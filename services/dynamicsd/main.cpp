@@ -1,0 +1,67 @@
+// wrc-dynamicsd: the wheelset dynamics service. On a run_command_t (RUN_COMMAND) it integrates
+// the rigid wheelset on straight track with SUNDIALS IDA, asking the selected contact service
+// (CONTACT_QUERY.<model>) for every configuration, swaps the model on CONTACT_SELECT at the next
+// step boundary, and publishes WHEELSET_STATE, RUN_STATUS, INTEGRATOR_STATS and RUN_SUMMARY.
+//
+//   wrc-dynamicsd [--instance NAME] [--channel-prefix P] [--lcm-url URL] [--heartbeat-period S]
+
+#include <iostream>
+
+#include "bus/channels.hpp"
+#include "bus/heartbeat_publisher.hpp"
+#include "bus/line_atomic_stderr.hpp"
+#include "bus/service_loop.hpp"
+#include "bus/service_options.hpp"
+#include "bus/shutdown_signal.hpp"
+#include "dynamicsd/dynamics_service.hpp"
+
+namespace {
+
+int run(const wrc::bus::ServiceOptions& options) {
+  using namespace wrc::bus;
+  ShutdownSignal::install();
+  const ChannelNames names(options.channel_prefix);
+  auto lcm = open_lcm(options.lcm_url, options.bus_key);
+  const std::string sender = sender_name("wrc-dynamicsd", options.instance);
+  HeartbeatPublisher heartbeat(*lcm, names.name(channel::kHeartbeat),
+                               {"wrc-dynamicsd", "dynamicsd", options.instance, names.name(channel::kRunCommand)},
+                               options.heartbeat_period);
+  heartbeat.publish_now();  // STARTING
+  wrc::dynamics::DynamicsService service(*lcm, names, sender);
+  ServiceLoop loop(*lcm, heartbeat);
+  // Whole integrator steps for at most a fifth of a heartbeat period per turn, so that heartbeats
+  // and commands keep flowing during a run.
+  const double budget = 0.2 * options.heartbeat_period;
+  loop.set_idle_hook([&] {
+    service.poll(budget);
+    loop.set_max_wait(service.running() ? 0.0 : 0.05);
+  });
+  std::cerr << sender << ": waiting for runs on " << names.name(channel::kRunCommand) << "\n";
+  const int rc = loop.run();
+  std::cerr << sender << ": stopped (signal " << ShutdownSignal::signal_number() << ")\n";
+  return rc;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  wrc::bus::make_stderr_line_atomic();  // one log shared with other processes: whole lines only
+  try {
+    const auto options = wrc::bus::ServiceOptions::parse(argc, argv);
+    if (options.help) {
+      std::cout << "wrc-dynamicsd: wheelset dynamics (SUNDIALS IDA) with the contact from a contact service;\n"
+                   "commands on RUN_COMMAND, swaps on CONTACT_SELECT; publishes WHEELSET_STATE, RUN_STATUS,\n"
+                   "INTEGRATOR_STATS and RUN_SUMMARY.\n\n"
+                << wrc::bus::ServiceOptions::help_text();
+      return 0;
+    }
+    if (!options.rest.empty()) {
+      std::cerr << "wrc-dynamicsd: unknown argument '" << options.rest.front() << "' (see --help)\n";
+      return 2;
+    }
+    return run(options);
+  } catch (const std::exception& e) {
+    std::cerr << "wrc-dynamicsd: " << e.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,361 @@
+// The bus under attack, with real processes in a private network namespace (issue 8): malformed
+// datagrams and a seeded campaign of 100 000 random and mutated datagrams neither end nor
+// balloon wrc-contactd; unsigned heartbeats and queries are ignored; a replayed message changes
+// nothing; a SIGSTOPped service is restarted by `wrc launch` within three heartbeat periods; a
+// second process with the same model and instance name refuses to serve.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../malformed/malformed_messages.hpp"
+#include "bus/clock.hpp"
+#include "bus/request_client.hpp"
+#include "bus_fixture.hpp"
+#include "child_process.hpp"
+#include "wrc/contact_reply_t.hpp"
+
+namespace wrc::bus::test {
+namespace {
+
+using ContactClient = RequestClient<wrc::contact_query_t, wrc::contact_reply_t>;
+constexpr double kPeriod = 0.2;  // [s] heartbeat period of the services started here
+
+/// [kB] peak resident memory of process pid (VmHWM), -1 when unknown.
+long peak_rss_kib(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
+  }
+  return -1;
+}
+
+class HardeningTest : public BusTest {
+ protected:
+  std::unique_ptr<ChildProcess> start_contactd(const std::string& instance, const std::string& log) {
+    return std::make_unique<ChildProcess>(
+        WRC_CONTACTD_PATH,
+        std::vector<std::string>{"--model", "onepoint", "--instance", instance, "--heartbeat-period",
+                                 std::to_string(kPeriod)},
+        log);
+  }
+  /// One query addressed to instance (empty: any); true when a reply came (5 attempts).
+  bool answered(const std::string& instance, double timeout = 0.5) {
+    if (!contact_) {
+      const std::string id = make_client_id("hardening");
+      contact_ = std::make_unique<ContactClient>(*lcm_, names_.name(channel::kContactQuery, "onepoint"),
+                                                 names_.name(channel::kContactReply, id), id);
+    }
+    auto q = sample_query(1);
+    q.instance = instance;
+    return static_cast<bool>(contact_->call(q, {timeout, 4}));
+  }
+  std::optional<wrc::heartbeat_t> heartbeat_of(const std::string& model, const std::string& instance) {
+    handle_until([] { return false; }, 2.5 * kPeriod);  // a fresh heartbeat
+    auto s = monitor_->find(model, instance, monotonic_seconds());
+    if (!s) return std::nullopt;
+    return s->last;
+  }
+  void publish_unsigned(const std::string& channel, const std::vector<std::uint8_t>& bytes) {
+    lcm_->publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
+  }
+  std::unique_ptr<ContactClient> contact_;
+};
+
+/// Counts the messages arriving on one channel, whatever they are.
+struct ArrivalCounter {
+  int count = 0;
+  void on(const lcm::ReceiveBuffer*, const std::string&) { ++count; }
+};
+
+// Every malformed message of the issue, signed (it reaches the decoder) and unsigned, three
+// times: the service keeps its pid, answers, stays below 100 MB, and counts the drops; `wrc
+// status` listening meanwhile exits normally.
+TEST_F(HardeningTest, MalformedDatagramsNeitherCrashNorBalloon) {
+  const std::string log = temp_path("contactd.log");
+  auto service = start_contactd("m", log);
+  ASSERT_TRUE(wait_ready("onepoint", "m", 60.0)) << read_text(log);
+  const std::string status_log = temp_path("status.log");
+  ChildProcess status(WRC_CLI_PATH, {"status", "--duration", "1.0"}, status_log);
+  const auto cases = malformed_messages();
+  for (int round = 0; round < 3; ++round) {
+    for (const auto& m : cases) {
+      const std::string channel = m.channel_base == "HEARTBEAT" ? names_.name(channel::kHeartbeat)
+                                                                : names_.name(channel::kContactQuery, "onepoint");
+      publish_signed_bytes(channel, m.bytes);
+      publish_unsigned(channel, m.bytes);
+    }
+    handle_until([] { return false; }, 0.05);
+  }
+  EXPECT_TRUE(answered("m")) << read_text(log);
+  EXPECT_TRUE(service->running()) << read_text(log);
+  int status_exit = -1;
+  ASSERT_TRUE(status.wait(5.0, &status_exit));
+  EXPECT_TRUE(WIFEXITED(status_exit) && WEXITSTATUS(status_exit) == 0) << read_text(status_log);
+  const long rss = peak_rss_kib(service->pid());
+  EXPECT_GT(rss, 0);
+  EXPECT_LT(rss, 100 * 1024) << "peak RSS " << rss << " kB";
+  const auto hb = heartbeat_of("onepoint", "m");
+  ASSERT_TRUE(hb);
+  const auto query_cases = std::count_if(cases.begin(), cases.end(), [](const auto& m) { return m.channel_base != "HEARTBEAT"; });
+  // the query cases reach the request server, the heartbeat cases the instance filter's monitor
+  EXPECT_GE(hb->dropped_malformed, 3 * static_cast<std::int64_t>(cases.size()) - 3) << read_text(log);
+  EXPECT_GE(hb->dropped_unsigned, 3 * static_cast<std::int64_t>(cases.size()));
+  EXPECT_GE(hb->requests_rejected, 3 * query_cases);
+  std::cerr << "service peak RSS " << rss << " kB; heartbeat: dropped unsigned " << hb->dropped_unsigned
+            << ", malformed " << hb->dropped_malformed << "\n";
+}
+
+// A seeded campaign of 100 000 datagrams on CONTACT_QUERY.onepoint and HEARTBEAT: random
+// bytes, valid messages with bits flipped, count and length fields overwritten, truncated or
+// extended; nine in ten signed so that they reach the decoder. Every 100 datagrams a real query
+// must be answered. At the end: same process, below 100 MB, still answering.
+TEST_F(HardeningTest, SeededCampaignOfRandomAndMutatedDatagrams) {
+  const std::string log = temp_path("contactd.log");
+  auto service = start_contactd("m", log);
+  ASSERT_TRUE(wait_ready("onepoint", "m", 60.0)) << read_text(log);
+  const pid_t pid = service->pid();
+  constexpr std::uint64_t kSeed = 20240808;
+  constexpr int kDatagrams = 100000;
+  constexpr int kBurst = 100;  // datagrams between two real queries
+  std::mt19937_64 random(kSeed);
+  auto uniform = [&](std::size_t n) { return static_cast<std::size_t>(random() % n); };
+  const std::vector<std::vector<std::uint8_t>> queries{encode_message(sample_query(1)),
+                                                       encode_message(sample_query(2))};
+  const auto heartbeat = encode_message(sample_heartbeat());
+  const std::int32_t interesting[] = {-1, 0, 1, -100, INT32_MAX, INT32_MIN, 20000000, 65536, 33};
+  const std::string query_channel = names_.name(channel::kContactQuery, "onepoint");
+  const std::string heartbeat_channel = names_.name(channel::kHeartbeat);
+  const double start = monotonic_seconds();
+  int syncs_answered = 0;
+  for (int i = 0; i < kDatagrams; ++i) {
+    const bool to_heartbeat = uniform(10) < 3;
+    std::vector<std::uint8_t> bytes = to_heartbeat ? heartbeat : queries[uniform(queries.size())];
+    switch (uniform(6)) {
+      case 0:  // random bytes of random length
+        bytes.resize(uniform(400));
+        for (auto& b : bytes) b = static_cast<std::uint8_t>(random());
+        break;
+      case 1:  // bit flips
+        for (std::size_t k = 1 + uniform(8); k > 0; --k) bytes[uniform(bytes.size())] ^= static_cast<std::uint8_t>(1u << uniform(8));
+        break;
+      case 2:  // an int32 field (any aligned offset) overwritten with an interesting value
+        put_int32(bytes, 8 + uniform((bytes.size() - 12) / 4) * 4, interesting[uniform(std::size(interesting))]);
+        break;
+      case 3:  // truncated
+        bytes.resize(uniform(bytes.size()));
+        break;
+      case 4:  // extended with random bytes
+        for (std::size_t k = 1 + uniform(64); k > 0; --k) bytes.push_back(static_cast<std::uint8_t>(random()));
+        break;
+      default:  // random bytes in place
+        for (std::size_t k = 1 + uniform(16); k > 0; --k) bytes[uniform(bytes.size())] = static_cast<std::uint8_t>(random());
+        break;
+    }
+    const std::string& channel = to_heartbeat ? heartbeat_channel : query_channel;
+    if (uniform(10) == 0) {
+      publish_unsigned(channel, bytes);
+    } else {
+      publish_signed_bytes(channel, bytes);
+    }
+    if (i % kBurst == kBurst - 1) {  // bursts small enough for the socket buffers
+      ASSERT_TRUE(service->running()) << "service ended after datagram " << i << " (seed " << kSeed << ")\n"
+                                      << read_text(log);
+      syncs_answered += answered("m", 0.2) ? 1 : 0;
+    }
+  }
+  const double elapsed = monotonic_seconds() - start;
+  EXPECT_TRUE(answered("m"));
+  EXPECT_TRUE(service->running());
+  EXPECT_EQ(service->pid(), pid);
+  EXPECT_EQ(syncs_answered, kDatagrams / kBurst) << "queries unanswered during the campaign";
+  const long rss = peak_rss_kib(pid);
+  EXPECT_LT(rss, 100 * 1024) << "peak RSS " << rss << " kB";
+  const auto hb = heartbeat_of("onepoint", "m");
+  ASSERT_TRUE(hb);
+  EXPECT_GT(hb->dropped_malformed, kDatagrams / 4);
+  EXPECT_GT(hb->dropped_unsigned, kDatagrams / 20);
+  std::cerr << kDatagrams << " datagrams (seed " << kSeed << ") in " << elapsed << " s; service peak RSS " << rss
+            << " kB; dropped unsigned " << hb->dropped_unsigned << ", malformed " << hb->dropped_malformed
+            << "; handled " << hb->requests_handled << ", rejected " << hb->requests_rejected << "\n";
+}
+
+// An unsigned READY heartbeat of a fake instance "0" (which would lead the model: the smallest
+// name) and an unsigned query change nothing: the unaddressed query is answered by "m", the
+// unsigned one gets no reply, `wrc status` does not list "0", the heartbeat counts both.
+TEST_F(HardeningTest, UnsignedHeartbeatAndQueryAreIgnored) {
+  const std::string log = temp_path("contactd.log");
+  auto service = start_contactd("m", log);
+  ASSERT_TRUE(wait_ready("onepoint", "m", 60.0)) << read_text(log);
+  publish_unsigned(names_.name(channel::kHeartbeat), encode_message(sample_heartbeat()));  // READY "0", 3600 s
+  const std::string reply_channel = names_.name(channel::kContactReply, "unsigned-test");
+  ArrivalCounter replies;
+  auto* sub = lcm_->subscribe(regex_escape(reply_channel), &ArrivalCounter::on, &replies);
+  auto q = sample_query(1);
+  q.request_id = 77;
+  q.reply_channel = reply_channel;
+  publish_unsigned(names_.name(channel::kContactQuery, "onepoint"), encode_message(q));
+  handle_until([] { return false; }, 0.5);
+  EXPECT_EQ(replies.count, 0) << "an unsigned query was answered";
+  EXPECT_FALSE(monitor_->find("onepoint", "0", monotonic_seconds()).has_value());
+  EXPECT_TRUE(answered("")) << "the unaddressed query went unanswered: the fake leader was believed";
+  int rc = -1;
+  const std::string out = run_command(std::string(WRC_CLI_PATH) + " status --duration 0.6 --format csv", &rc);
+  EXPECT_EQ(out.find("onepoint,0,"), std::string::npos) << out;
+  EXPECT_NE(out.find("onepoint,m,"), std::string::npos) << out;
+  const auto hb = heartbeat_of("onepoint", "m");
+  ASSERT_TRUE(hb);
+  EXPECT_GE(hb->dropped_unsigned, 2);
+  lcm_->unsubscribe(sub);
+}
+
+// A signed query captured and sent again (twice) is answered once; a captured heartbeat replayed
+// after its service stopped does not bring it back in a monitor that saw it; both replays are
+// counted in the heartbeat.
+TEST_F(HardeningTest, ReplayedMessagesChangeNothing) {
+  const std::string log = temp_path("contactd.log");
+  auto service = start_contactd("m", log);
+  ASSERT_TRUE(wait_ready("onepoint", "m", 60.0)) << read_text(log);
+  const std::string reply_channel = names_.name(channel::kContactReply, "replay-test");
+  ArrivalCounter replies;
+  auto* sub = lcm_->subscribe(regex_escape(reply_channel), &ArrivalCounter::on, &replies);
+  auto q = sample_query(1);
+  q.request_id = 4242;
+  q.reply_channel = reply_channel;
+  q.instance = "m";
+  auto captured = encode_message(q);
+  bus_auth().sign(names_.name(channel::kContactQuery, "onepoint"), captured);
+  const std::string query_channel = names_.name(channel::kContactQuery, "onepoint");
+  lcm_->publish(query_channel, captured.data(), static_cast<unsigned>(captured.size()));
+  ASSERT_TRUE(handle_until([&] { return replies.count == 1; }, 2.0)) << read_text(log);
+  lcm_->publish(query_channel, captured.data(), static_cast<unsigned>(captured.size()));
+  lcm_->publish(query_channel, captured.data(), static_cast<unsigned>(captured.size()));
+  handle_until([] { return false; }, 0.5);
+  EXPECT_EQ(replies.count, 1) << "a replayed query was answered";
+  lcm_->unsubscribe(sub);
+
+  // A heartbeat of wrc-pingd, captured raw, replayed after the service has stopped.
+  struct Capture {
+    std::vector<std::uint8_t> last;
+    void on(const lcm::ReceiveBuffer* rbuf, const std::string&) {
+      const auto* data = static_cast<const std::uint8_t*>(rbuf->data);
+      if (rbuf->data_size < MessageAuth::kTrailerBytes) return;
+      wrc::heartbeat_t hb;
+      if (decode_bytes(data, rbuf->data_size - MessageAuth::kTrailerBytes, hb) || hb.model != "pingd") return;
+      if (hb.state == wrc::heartbeat_t::READY) last.assign(data, data + rbuf->data_size);
+    }
+  } capture;
+  auto* hb_sub = lcm_->subscribe(regex_escape(names_.name(channel::kHeartbeat)), &Capture::on, &capture);
+  auto pingd = start_pingd("r", kPeriod);
+  ASSERT_TRUE(wait_ready("pingd", "r", 5.0));
+  handle_until([&] { return !capture.last.empty(); }, 2.0);
+  lcm_->unsubscribe(hb_sub);
+  ASSERT_FALSE(capture.last.empty()) << "no READY heartbeat of pingd/r captured";
+  pingd->signal(SIGKILL);
+  ASSERT_TRUE(pingd->wait(2.0));
+  handle_until([] { return false; }, 4 * kPeriod);
+  ASSERT_FALSE(monitor_->find("pingd", "r", monotonic_seconds())->alive);
+  for (int i = 0; i < 3; ++i) {
+    lcm_->publish(names_.name(channel::kHeartbeat), capture.last.data(), static_cast<unsigned>(capture.last.size()));
+  }
+  handle_until([] { return false; }, 0.2);
+  EXPECT_FALSE(monitor_->find("pingd", "r", monotonic_seconds())->alive) << "a replayed heartbeat revived pingd/r";
+  const auto hb = heartbeat_of("onepoint", "m");
+  ASSERT_TRUE(hb);
+  EXPECT_GE(hb->dropped_replayed, 2 + 3) << read_text(log);
+}
+
+// `wrc launch` restarts a service stopped with SIGSTOP (heartbeats stop, the process stays)
+// within three heartbeat periods, and says why in its log.
+TEST_F(HardeningTest, StoppedServiceIsRestartedWithinThreePeriods) {
+  const double period = 0.3;
+  const std::string profile = temp_path("profile.txt");
+  std::ofstream(profile) << "pingd wrc-pingd --instance s --heartbeat-period " << period << "\n";
+  const std::string log = temp_path("launch.log");
+  ChildProcess launcher(WRC_CLI_PATH, {"launch", "--profile", profile, "--build-dir", WRC_TEST_BUILD_DIR}, log);
+  ASSERT_TRUE(wait_ready("pingd", "s", 5.0)) << read_text(log);
+  handle_until([] { return false; }, 2 * period);
+  const pid_t first = monitor_->find("pingd", "s", monotonic_seconds())->last.pid;
+  ASSERT_EQ(::kill(first, SIGSTOP), 0);
+  const double stopped_at = monotonic_seconds();
+  bool restarted = false;
+  handle_until(
+      [&] {
+        for (const auto& s : monitor_->services(monotonic_seconds())) {
+          if (s.last.model == "pingd" && s.last.instance == "s" && s.last.pid != first && s.last_seen > stopped_at) {
+            restarted = true;
+          }
+        }
+        return restarted;
+      },
+      5.0);
+  const double took = monotonic_seconds() - stopped_at;
+  ASSERT_TRUE(restarted) << read_text(log);
+  EXPECT_LT(took, 3 * period) << "restarted after " << took << " s\n" << read_text(log);
+  EXPECT_TRUE(process_gone(first));
+  const std::string text = read_text(log);
+  EXPECT_NE(text.find("launch: pingd (pid " + std::to_string(first) + ") sent no heartbeat for"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("hung or stopped; killing it (SIGKILL)"), std::string::npos) << text;
+  launcher.signal(SIGINT);
+  EXPECT_TRUE(launcher.wait(5.0));
+  std::cerr << "SIGSTOP to the new process's first heartbeat: " << took << " s (period " << period << " s)\n";
+}
+
+// A second wrc-pingd with the name of a live one refuses to serve (DUPLICATE, with the reason,
+// in its heartbeat and log): a ping to the name is answered once; `wrc status` lists both; when
+// the older one stops, the newer one serves.
+TEST_F(HardeningTest, DuplicateInstanceRefusesToServe) {
+  auto older = start_pingd("d", kPeriod);
+  ASSERT_TRUE(wait_ready("pingd", "d", 5.0));
+  const std::string log = temp_path("newer.log");
+  auto newer = start_pingd("d", kPeriod, log);
+  std::optional<ServiceStatus> refused;
+  ASSERT_TRUE(handle_until(
+      [&] {
+        for (const auto& s : monitor_->services(monotonic_seconds())) {
+          if (s.last.pid == newer->pid() && s.last.state == wrc::heartbeat_t::DUPLICATE) refused = s;
+        }
+        return refused.has_value();
+      },
+      5.0))
+      << read_text(log);
+  EXPECT_NE(refused->last.state_reason.find("instance 'd' of model pingd is already served by wrc-pingd/d:" +
+                                            std::to_string(older->pid())),
+            std::string::npos)
+      << refused->last.state_reason;
+  EXPECT_NE(read_text(log).find("refusing to serve: instance 'd'"), std::string::npos) << read_text(log);
+
+  const std::string reply_channel = names_.name(channel::kPingReply, "dup-test");
+  ArrivalCounter replies;
+  auto* sub = lcm_->subscribe(regex_escape(reply_channel), &ArrivalCounter::on, &replies);
+  wrc::ping_request_t req{};
+  req.request_id = 5;
+  req.reply_channel = reply_channel;
+  req.instance = "d";
+  publish_signed(*lcm_, names_.name(channel::kPing), req);
+  handle_until([] { return false; }, 0.5);
+  EXPECT_EQ(replies.count, 1) << "answered by both processes";
+  lcm_->unsubscribe(sub);
+
+  int rc = -1;
+  const std::string out = run_command(std::string(WRC_CLI_PATH) + " status --duration 0.6", &rc);
+  EXPECT_NE(out.find("DUPLICATE"), std::string::npos) << out;
+  EXPECT_NE(out.find("DUPLICATE: instance 'd' of model pingd is already served by"), std::string::npos) << out;
+
+  older->signal(SIGTERM);
+  ASSERT_TRUE(older->wait(5.0));
+  EXPECT_TRUE(wait_ready("pingd", "d", 2.0, older->pid())) << read_text(log);
+  EXPECT_TRUE(handle_until([&] { return read_text(log).find("the older holder of the name is gone; serving") != std::string::npos; }, 1.0)) << read_text(log);
+}
+
+}  // namespace
+}  // namespace wrc::bus::test

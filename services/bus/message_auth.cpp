@@ -90,9 +90,15 @@ std::array<std::uint8_t, 32> MessageAuth::mac(const std::string& channel, const 
   unsigned int outer_size = 0;
   Mac& m = *mac_;
   std::lock_guard<std::mutex> lock(m.mutex);
-  const bool ok = EVP_MD_CTX_copy_ex(m.work, m.inner) == 1 && EVP_DigestUpdate(m.work, &channel_length, 1) == 1 &&
-                  EVP_DigestUpdate(m.work, channel.data(), channel_length) == 1 &&
-                  EVP_DigestUpdate(m.work, data, payload) == 1 && EVP_DigestUpdate(m.work, stamp, kStampBytes) == 1 &&
+  // stamp follows the payload in every caller (it is the trailer's start): one update for both.
+  const bool contiguous = stamp == data + payload;
+  std::uint8_t prefix[256];
+  prefix[0] = channel_length;
+  std::memcpy(prefix + 1, channel.data(), channel_length);
+  const bool ok = EVP_MD_CTX_copy_ex(m.work, m.inner) == 1 && EVP_DigestUpdate(m.work, prefix, 1u + channel_length) == 1 &&
+                  (contiguous ? EVP_DigestUpdate(m.work, data, payload + kStampBytes) == 1
+                              : EVP_DigestUpdate(m.work, data, payload) == 1 &&
+                                    EVP_DigestUpdate(m.work, stamp, kStampBytes) == 1) &&
                   EVP_DigestFinal_ex(m.work, out.data(), &inner_size) == 1 && EVP_MD_CTX_copy_ex(m.work, m.outer) == 1 &&
                   EVP_DigestUpdate(m.work, out.data(), inner_size) == 1 &&
                   EVP_DigestFinal_ex(m.work, out.data(), &outer_size) == 1 && outer_size == kMacBytes;

@@ -31,7 +31,10 @@ WheelConstraint InterpolatedModel::add_wheel_patches(WheelSide side, const Patch
   const ContactPoint point = table_.at(side, context.query.pose);
   std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
   if (patch) result.patches.push_back(std::move(*patch));
-  // The interpolation is continuous: no jumps, no event.
+  // The interpolation is continuous: no jumps, no event. The gap gradient is the envelope
+  // gradient at the interpolated point: continuous, unlike the derivative of the distance
+  // interpolated linearly in roll and yaw (kinks at every node line, which a rigid-contact
+  // integrator could not pass), and close to it (docs/dynamics.md).
   return exact_point_constraint(point, context.query.pose, kNoSwitch, std::numeric_limits<double>::quiet_NaN());
 }
 

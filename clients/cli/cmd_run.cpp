@@ -46,6 +46,7 @@ namespace {
 
 constexpr double kDiscoveryTime = 1.5;    // [s] listen for running services before starting any
 constexpr double kCommandRepeat = 0.5;    // [s] re-send the START until the dynamics acknowledges it
+constexpr double kSilenceLimit = 30.0;    // [s] without any status of the run: the dynamics is gone
 
 std::vector<dynamics::ScheduledSwap> parse_swaps(const std::string& text, double t_end) {
   std::vector<dynamics::ScheduledSwap> swaps;
@@ -247,6 +248,7 @@ int run_run(const std::vector<std::string>& args) {
   std::map<double, wheelset_state_t> history;
   std::optional<run_summary_t> summary;
   bool acknowledged = false;
+  double last_heard = bus::monotonic_seconds();
   ProgressBar bar("run " + request.model);
   std::optional<integrator_stats_t> stats;
   std::string status_line;
@@ -258,6 +260,7 @@ int run_run(const std::vector<std::string>& args) {
       *lcm, names.name(bus::channel::kRunStatus), "run status", [&](const run_status_t& m, const bus::ReceivedMessage&) {
         if (m.request_id != command.request_id) return;
         acknowledged = true;
+        last_heard = bus::monotonic_seconds();
         status_line = m.model;
       });
   bus::GuardedSubscription<integrator_stats_t> counters(
@@ -292,6 +295,11 @@ int run_run(const std::vector<std::string>& args) {
       std::cerr << "\nrun: stopping " << request.run_id << "\n";
     }
     lcm->handleTimeout(50);
+    if (bus::monotonic_seconds() - last_heard > kSilenceLimit) {
+      throw std::runtime_error("no status of run " + request.run_id + " for " + std::to_string(kSilenceLimit) +
+                               " s: the dynamics service is gone" +
+                               (started.empty() ? std::string() : " (its log: " + started.front()->log() + ")"));
+    }
     if (stats) {
       std::ostringstream stage;
       stage << "t = " << std::fixed << std::setprecision(3) << stats->t << " s, " << stats->steps << " steps, "

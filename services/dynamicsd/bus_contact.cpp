@@ -50,6 +50,7 @@ std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>&
       return out;
     }
     ++timeouts_;
+    if (settings_.keepalive) settings_.keepalive();
     if (bus::monotonic_seconds() >= give_up)
       throw std::runtime_error("no contact service " + settings_.model + " answered within " +
                                std::to_string(settings_.wait) + " s (" +
@@ -61,14 +62,20 @@ std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>&
 
 std::string missing_service_reason(const bus::HeartbeatMonitor& monitor, const std::string& model,
                                    const std::string& instance, const std::string& geometry_key) {
-  const std::optional<bus::ServiceStatus> s = monitor.find(model, instance, bus::monotonic_seconds());
   const std::string name = model + (instance.empty() ? "" : " instance " + instance);
-  if (!s) return "no " + name + " service on the bus";
-  if (!s->available()) return "the " + name + " service is not READY";
-  if (!geometry_key.empty() && s->last.geometry_key != geometry_key)
-    return "the " + name + " service computes with geometry key " + s->last.geometry_key.substr(0, 12) +
-           "..., not " + geometry_key.substr(0, 12) + "...";
-  return {};
+  std::string reason = "no " + name + " service on the bus";
+  for (const bus::ServiceStatus& s : monitor.services(bus::monotonic_seconds())) {
+    if (s.last.model != model || (!instance.empty() && s.last.instance != instance) || !s.alive) continue;
+    if (!s.available()) {
+      reason = "the " + name + " service is not READY";
+    } else if (!geometry_key.empty() && s.last.geometry_key != geometry_key) {
+      reason = "the " + name + " service computes with geometry key " + s.last.geometry_key.substr(0, 12) +
+               "..., not " + geometry_key.substr(0, 12) + "...";
+    } else {
+      return {};
+    }
+  }
+  return reason;
 }
 
 }  // namespace wrc::dynamics

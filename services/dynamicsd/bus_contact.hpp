@@ -8,6 +8,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +28,9 @@ struct BusContactSettings {
   std::string geometry_key;  ///< the key the service must compute with
   bus::CallPolicy policy;    ///< per-attempt timeout and re-sends
   double wait = 10.0;        ///< [s] longest wait for a service that answers, per query
+  /// Called after every round of attempts without a reply (the service's heartbeat goes on
+  /// while it waits for a restarted contact service).
+  std::function<void()> keepalive;
 };
 
 class BusContact final : public ContactEvaluator {

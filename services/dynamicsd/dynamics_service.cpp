@@ -29,9 +29,11 @@ std::int8_t status_code(RunState s) {
 
 }  // namespace
 
-DynamicsService::DynamicsService(lcm::LCM& lcm, const bus::ChannelNames& names, const std::string& sender)
+DynamicsService::DynamicsService(lcm::LCM& lcm, const bus::ChannelNames& names, const std::string& sender,
+                                 std::function<void()> keepalive)
     : lcm_(lcm),
       names_(names),
+      keepalive_(std::move(keepalive)),
       stamper_(sender),
       monitor_(lcm, names.name(bus::channel::kHeartbeat)),
       client_(lcm, names.name(bus::channel::kContactQuery, "onepoint"),
@@ -75,6 +77,7 @@ std::shared_ptr<ContactEvaluator> DynamicsService::make_contact(const std::strin
   s.policy.timeout = request_.contact_timeout;
   s.policy.retries = request_.contact_retries;
   s.wait = request_.contact_wait;
+  s.keepalive = keepalive_;
   return std::make_shared<BusContact>(client_, monitor_, names_, s);
 }
 

@@ -9,6 +9,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,7 +31,9 @@ namespace wrc::dynamics {
 
 class DynamicsService {
  public:
-  DynamicsService(lcm::LCM& lcm, const bus::ChannelNames& names, const std::string& sender);
+  /// keepalive: called while a contact query waits for a (restarted) service (the heartbeat).
+  DynamicsService(lcm::LCM& lcm, const bus::ChannelNames& names, const std::string& sender,
+                  std::function<void()> keepalive = {});
   /// Acts on pending commands and swaps, then advances a running simulation for up to
   /// budget seconds of wall time (whole steps) and publishes what is due.
   void poll(double budget);
@@ -49,6 +52,7 @@ class DynamicsService {
 
   lcm::LCM& lcm_;
   bus::ChannelNames names_;
+  std::function<void()> keepalive_;
   bus::HeaderStamper stamper_;
   bus::HeartbeatMonitor monitor_;
   bus::RequestClient<contact_query_t, contact_reply_t> client_;

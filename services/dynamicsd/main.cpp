@@ -27,7 +27,7 @@ int run(const wrc::bus::ServiceOptions& options) {
                                {"wrc-dynamicsd", "dynamicsd", options.instance, names.name(channel::kRunCommand)},
                                options.heartbeat_period);
   heartbeat.publish_now();  // STARTING
-  wrc::dynamics::DynamicsService service(*lcm, names, sender);
+  wrc::dynamics::DynamicsService service(*lcm, names, sender, [&heartbeat] { heartbeat.tick(); });
   ServiceLoop loop(*lcm, heartbeat);
   // Whole integrator steps for at most a fifth of a heartbeat period per turn, so that heartbeats
   // and commands keep flowing during a run.

@@ -247,5 +247,15 @@ TEST(RunParameterFile, RoundTripAndErrors) {
   EXPECT_EQ(error("{ // comment\n \"mass\": 1500 }"), "no error");
 }
 
+// The shipped benchmark parameter file holds exactly the built-in defaults (RunSpec{}), so that a
+// user's copy starts from what `wrc run` does without one.
+TEST(RunParameterFile, ShippedBenchmarkFileIsTheDefault) {
+  RunSpec read;
+  read.wheelset.mass = 1.0;  // every key must be in the file and overwrite this
+  apply_run_parameter_file(std::string(WRC_PARAMETERS_DIR) + "/benchmark.json", read);
+  const RunSpec defaults;
+  for (const RunParameter& p : run_parameter_table()) EXPECT_EQ(p.get(read), p.get(defaults)) << p.key;
+}
+
 }  // namespace
 }  // namespace wrc

@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -155,7 +156,9 @@ std::string run_parameter_text(const RunSpec& spec) {
     } else if (p.kind == RunParameterKind::kInteger) {
       out << static_cast<long long>(p.get(spec));
     } else {
-      out << p.get(spec);
+      char buf[64];
+      const auto written = std::to_chars(buf, buf + sizeof buf, p.get(spec));  // shortest exact form
+      out << std::string(buf, written.ptr);
     }
     out << (k + 1 < table.size() ? "," : "") << "  // [" << p.unit << "] " << p.description << "\n";
   }

@@ -1,0 +1,210 @@
+// wrc-dynamicsd as a real process with real contact services, driven by `wrc run` and `wrc swap`
+// (every test in a private network namespace): every model runs and writes its summary; a live
+// swap made from another process is listed and reproduced bit for bit by --swap-at; 5 % packet
+// loss and a contact service killed with SIGKILL (restarted by the launcher) end in the same final
+// state as an undisturbed run, bit for bit.
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bus/clock.hpp"
+#include "bus/guarded_subscription.hpp"
+#include "bus_fixture.hpp"
+#include "wrc/run_status_t.hpp"
+
+namespace wrc::bus::test {
+namespace {
+
+constexpr double kRunDeadline = 300.0;  // [s] a run with service start-up and (spline) a fit
+
+class DynamicsServiceTest : public BusTest {
+ protected:
+  void SetUp() override {
+    BusTest::SetUp();
+    cache_ = temp_path("models");
+    ::setenv("WRC_CACHE_DIR", cache_.c_str(), 1);  // the processes' spline model cache
+    status_ = std::make_unique<GuardedSubscription<run_status_t>>(
+        *lcm_, names_.name(channel::kRunStatus), "test run status",
+        [this](const run_status_t& s, const ReceivedMessage&) { last_status_ = s; });
+  }
+  void TearDown() override { ::unsetenv("WRC_CACHE_DIR"); }
+
+  // `wrc run` arguments; the run is named after its summary file.
+  std::vector<std::string> run_args(const std::string& model, double t_end, const std::string& summary) const {
+    return {"run", "--model", model, "--t-end", std::to_string(t_end), "--summary", summary, "--build-dir",
+            WRC_TEST_BUILD_DIR, "--run-id", run_id(summary)};
+  }
+  static std::string run_id(const std::string& summary) {
+    return summary.substr(summary.find_last_of('/') + 1);
+  }
+  // Dispatches until the run called id reports RUNNING past simulated time t [s].
+  bool wait_running_past(const std::string& id, double t, double timeout) {
+    return handle_until(
+        [&] { return last_status_.run_id == id && last_status_.state == run_status_t::RUNNING && last_status_.t > t; },
+        timeout);
+  }
+  // Runs `wrc run` to its end; returns the summary.
+  nlohmann::json run(std::vector<std::string> args, const std::string& name) {
+    const std::string log = temp_path(name + ".log");
+    ChildProcess cli(WRC_CLI_PATH, args, log);
+    int status = -1;
+    EXPECT_TRUE(cli.wait(kRunDeadline, &status)) << read_text(log);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(log);
+    return summary(args);
+  }
+  static nlohmann::json summary(const std::vector<std::string>& args) {
+    for (size_t k = 0; k + 1 < args.size(); ++k)
+      if (args[k] == "--summary") {
+        std::ifstream in(args[k + 1]);
+        if (!in) return {};
+        return nlohmann::json::parse(in);
+      }
+    return {};
+  }
+  static void expect_same_final_state(const nlohmann::json& a, const nlohmann::json& b) {
+    ASSERT_TRUE(a.contains("final_state") && b.contains("final_state"));
+    for (const char* key : {"y", "z", "roll", "yaw", "y_dot", "z_dot", "roll_dot", "yaw_dot", "spin_rate",
+                            "normal_force_left", "normal_force_right"})
+      EXPECT_EQ(a["final_state"][key].get<double>(), b["final_state"][key].get<double>()) << key;
+    EXPECT_EQ(a["counters"]["steps"], b["counters"]["steps"]);
+  }
+  std::unique_ptr<ChildProcess> launch(const std::vector<std::string>& services, const std::string& log) {
+    std::vector<std::string> args{"launch", "--profile", std::string(WRC_SOURCE_DIR) + "/profiles/launch/default.txt",
+                                  "--build-dir", WRC_TEST_BUILD_DIR};
+    args.insert(args.end(), services.begin(), services.end());
+    return std::make_unique<ChildProcess>(WRC_CLI_PATH, args, log);
+  }
+  // Waits until some instance of model is READY.
+  bool wait_available(const std::string& model, double timeout) {
+    return handle_until(
+        [&] {
+          for (const ServiceStatus& s : monitor_->services(monotonic_seconds()))
+            if (s.last.model == model && s.available()) return true;
+          return false;
+        },
+        timeout);
+  }
+  std::string cache_;
+  std::unique_ptr<GuardedSubscription<run_status_t>> status_;
+  run_status_t last_status_{};
+};
+
+// `wrc run` completes for every model, starting the services it needs, and the summary has the
+// final state in wrc geometry's conventions and the counters; the spline run has no restarts.
+TEST_F(DynamicsServiceTest, EveryModelRunsAndWritesItsSummary) {
+  for (const std::string model : {"onepoint", "interp", "multipoint", "spline"}) {
+    const nlohmann::json s = run(run_args(model, 0.2, temp_path(model + ".json")), model);
+    ASSERT_TRUE(s.contains("state")) << model;
+    EXPECT_EQ(s["state"], "finished") << model << ": " << s["message"];
+    EXPECT_EQ(s["model"], model);
+    EXPECT_EQ(s["formulation"], model == "multipoint" ? "elastic" : "rigid");
+    EXPECT_DOUBLE_EQ(s["t_end"].get<double>(), 0.2);
+    EXPECT_NEAR(s["final_state"]["z"].get<double>(), 0.46, 1e-3) << model;  // centre above the top of rail
+    EXPECT_LT(s["final_state"]["y"].get<double>(), -1e-3) << model;      // pushed towards the right rail
+    EXPECT_GT(s["counters"]["steps"].get<long>(), 10);
+    EXPECT_GT(s["counters"]["contact_queries"].get<long>(), s["counters"]["steps"].get<long>());
+    if (model == "spline") {
+      EXPECT_EQ(s["counters"]["restarts"].get<long>(), 0);
+    }
+  }
+}
+
+// A swap from onepoint to spline made with `wrc swap spline` while the run integrates is acted on
+// at a step boundary and listed in the summary; --swap-at with that time reproduces the run.
+TEST_F(DynamicsServiceTest, LiveSwapIsListedAndReproducedBySwapAt) {
+  const std::string log = temp_path("launch.log");
+  auto launcher = launch({"geometry", "contact-onepoint", "contact-spline", "dynamics"}, log);
+  for (const char* model : {"onepoint", "spline", "dynamicsd"})
+    ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
+  const std::vector<std::string> args = run_args("onepoint", 1.5, temp_path("live.json"));
+  ChildProcess cli(WRC_CLI_PATH, args, temp_path("live.log"));
+  // Swap early in the run (before the one-point model reaches the jump, its slow part).
+  ASSERT_TRUE(wait_running_past(run_id(temp_path("live.json")), 0.1, 120.0)) << read_text(temp_path("live.log"));
+  int status = -1;
+  const std::string out = run_command(std::string(WRC_CLI_PATH) + " swap spline 2>&1", &status);
+  ASSERT_EQ(status, 0) << out;
+  ASSERT_TRUE(handle_until([&] { return cli.wait(0.0); }, kRunDeadline)) << read_text(temp_path("live.log"));
+  const nlohmann::json live = summary(args);
+  ASSERT_EQ(live["state"], "finished") << live.dump();
+  ASSERT_EQ(live["swaps"].size(), 1u) << live["message"] << "\n" << out << "\n" << read_text(log);
+  EXPECT_EQ(live["swaps"][0]["model"], "spline");
+  EXPECT_EQ(live["model"], "spline");
+  const double t_swap = live["swaps"][0]["t"].get<double>();
+  EXPECT_GT(t_swap, 0.1);
+  char swap_at[64];
+  std::snprintf(swap_at, sizeof swap_at, "%.17g:spline", t_swap);
+  std::vector<std::string> replay_args = run_args("onepoint", 1.5, temp_path("replay.json"));
+  replay_args.insert(replay_args.end(), {"--swap-at", swap_at});
+  const nlohmann::json replay = run(replay_args, "replay");
+  ASSERT_EQ(replay["swaps"].size(), 1u);
+  EXPECT_EQ(replay["swaps"][0]["t"].get<double>(), t_swap);
+  expect_same_final_state(live, replay);
+  launcher->signal(SIGINT);
+  launcher->wait(20.0);
+}
+
+// 5 % of all bus datagrams dropped (queries, replies, commands, heartbeats): every lost query is
+// re-sent, and the run ends bit for bit where the undisturbed one does.
+TEST_F(DynamicsServiceTest, PacketLossGivesTheSameFinalState) {
+  if (!in_netns()) GTEST_SKIP() << "packet loss is only injected inside a private network namespace";
+  if (std::system("nft --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "nft (nftables) is not installed";
+  std::vector<std::string> args = run_args("spline", 0.5, temp_path("clean.json"));
+  args.insert(args.end(), {"--timeout", "0.02", "--retries", "5"});
+  const nlohmann::json clean = run(args, "clean");
+  ASSERT_EQ(clean["state"], "finished") << clean.dump();
+  if (std::system("nft add table inet t && nft add chain inet t in '{ type filter hook input priority 0; }'") != 0)
+    GTEST_SKIP() << "nft cannot create a table in this namespace (no CAP_NET_ADMIN?)";
+  ASSERT_EQ(std::system("nft add rule inet t in udp dport 7667 numgen random mod 100 lt 5 counter drop"), 0);
+  std::vector<std::string> lossy_args = run_args("spline", 0.5, temp_path("lossy.json"));
+  lossy_args.insert(lossy_args.end(), {"--timeout", "0.02", "--retries", "5"});
+  const nlohmann::json lossy = run(lossy_args, "lossy");
+  std::system("nft delete table inet t");
+  ASSERT_EQ(lossy["state"], "finished") << lossy.dump();
+  EXPECT_GT(lossy["counters"]["contact_retries"].get<long>(), 0) << "the loss rule did not act";
+  expect_same_final_state(clean, lossy);
+}
+
+// The contact service killed with SIGKILL in the middle of a run: the launcher restarts it, the
+// dynamics waits for it and repeats the lost query, and the run ends bit for bit where an
+// undisturbed one does.
+TEST_F(DynamicsServiceTest, KilledContactServiceIsWaitedForAndTheRunEndsTheSame) {
+  const std::string log = temp_path("launch.log");
+  auto launcher = launch({"contact-multipoint", "dynamics"}, log);
+  for (const char* model : {"multipoint", "dynamicsd"})
+    ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
+  const nlohmann::json clean = run(run_args("multipoint", 10.0, temp_path("clean.json")), "clean");
+  ASSERT_EQ(clean["state"], "finished") << clean.dump();
+  const std::vector<std::string> args = run_args("multipoint", 10.0, temp_path("killed.json"));
+  ChildProcess cli(WRC_CLI_PATH, args, temp_path("killed.log"));
+  ASSERT_TRUE(wait_running_past(run_id(temp_path("killed.json")), 1.0, 60.0)) << read_text(temp_path("killed.log"));
+  int killed_pid = 0;
+  for (const ServiceStatus& s : monitor_->services(monotonic_seconds()))
+    if (s.last.model == "multipoint" && s.available()) killed_pid = s.last.pid;
+  ASSERT_GT(killed_pid, 0);
+  ASSERT_EQ(::kill(killed_pid, SIGKILL), 0);
+  // Heartbeats keep arriving while the run goes on (the restarted service is seen).
+  ASSERT_TRUE(handle_until([&] { return cli.wait(0.0); }, kRunDeadline)) << read_text(temp_path("killed.log"));
+  const nlohmann::json killed = summary(args);
+  ASSERT_EQ(killed["state"], "finished") << killed.dump() << "\n" << read_text(log);
+  EXPECT_GT(killed["counters"]["contact_timeouts"].get<long>() + killed["counters"]["contact_retries"].get<long>(), 0)
+      << "killed pid " << killed_pid << " at t = " << last_status_.t << "\n" << killed["counters"].dump() << "\n"
+      << read_text(temp_path("killed.log"));
+  int restarted_pid = 0;
+  for (const ServiceStatus& s : monitor_->services(monotonic_seconds()))
+    if (s.last.model == "multipoint" && s.available()) restarted_pid = s.last.pid;
+  EXPECT_GT(restarted_pid, 0);
+  EXPECT_NE(restarted_pid, killed_pid);
+  expect_same_final_state(clean, killed);
+  launcher->signal(SIGINT);
+  launcher->wait(20.0);
+}
+
+}  // namespace
+}  // namespace wrc::bus::test

@@ -67,7 +67,12 @@ void DynamicsService::on_select(const contact_select_t& select) {
 std::shared_ptr<ContactEvaluator> DynamicsService::make_contact(const std::string& model) {
   if (request_.in_process) {
     ContactModelData data;
-    if (contact_model_entry(model).needs_data) data.splines = fit_spline_geometry(*geometry_, {}, {}).model;
+    if (contact_model_entry(model).needs_data) {
+      // The fit takes about a second: the heartbeat goes on from its progress reports.
+      data.splines = fit_spline_geometry(*geometry_, {}, [this](long, long, const std::string&) {
+                       if (keepalive_) keepalive_();
+                     }).model;
+    }
     return std::make_shared<InProcessContact>(make_contact_model(model, geometry_, {}, data));
   }
   BusContactSettings s;

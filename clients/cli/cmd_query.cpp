@@ -36,6 +36,7 @@
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
+#include "cli/service_starter.hpp"
 #include "core/geometry/geometry_spec.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
@@ -83,74 +84,6 @@ double touching_height(const WheelsetGeometry& geometry, double y, double roll, 
     gap = std::min(gap, point->distance);
   }
   return pose.z - gap;
-}
-
-// ---- the background service --------------------------------------------------------------------
-
-class StartedService {
- public:
-  StartedService(const std::string& path, const std::vector<std::string>& args, std::string log)
-      : log_(std::move(log)) {
-    std::vector<std::string> words{path};
-    words.insert(words.end(), args.begin(), args.end());
-    pid_ = bus::spawn_tied_child(words, SIGTERM, log_);  // the service drains when the query dies
-    if (pid_ < 0) throw std::runtime_error("fork failed");
-  }
-  ~StartedService() { stop(); }
-  StartedService(const StartedService&) = delete;
-  StartedService& operator=(const StartedService&) = delete;
-
-  pid_t pid() const { return pid_; }
-  const std::string& log() const { return log_; }
-  /// True while the process has not ended.
-  bool alive() {
-    if (pid_ <= 0) return false;
-    int status = 0;
-    if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-      pid_ = -1;
-      return false;
-    }
-    return true;
-  }
-  /// SIGTERM, up to 5 s for a clean exit (DRAINING heartbeat), then SIGKILL (bus::stop_children).
-  void stop() {
-    if (!alive()) return;
-    bus::stop_children({pid_}, 5.0);
-    pid_ = -1;
-  }
-
- private:
-  pid_t pid_ = -1;
-  std::string log_;
-};
-
-std::string tail_of(const std::string& path) {
-  std::ifstream in(path);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (text.size() > 2000) text = "..." + text.substr(text.size() - 2000);
-  return text;
-}
-
-// ---- discovery -----------------------------------------------------------------------------------
-
-// The smallest-named READY instance of model with the geometry key (or the named instance).
-std::optional<bus::ServiceStatus> pick(const bus::HeartbeatMonitor& monitor, const std::string& model,
-                                       const std::string& key, const std::string& instance, bool ready) {
-  for (const auto& s : monitor.services(bus::monotonic_seconds())) {  // sorted by model, instance
-    if (s.last.model != model || !s.alive || s.last.geometry_key != key) continue;
-    if (!instance.empty() && s.last.instance != instance) continue;
-    if (ready ? s.available() : s.last.state == wrc::heartbeat_t::STARTING) return s;
-  }
-  return std::nullopt;
-}
-
-bool handle_until(lcm::LCM& lcm, double deadline, const std::function<bool()>& done) {
-  while (!done()) {
-    const double left = deadline - bus::monotonic_seconds();
-    if (left <= 0.0) return false;
-    lcm.handleTimeout(static_cast<int>(std::ceil(std::min(left, 0.05) * 1e3)));
-  }
-  return true;
 }
 
 // wrc-geometryd, started (tied to this process) when no instance of it is alive: the spline
@@ -328,16 +261,16 @@ int run_query(const std::vector<std::string>& args) {
   const std::string wanted = o.text("--instance");
   std::optional<bus::ServiceStatus> service;
   handle_until(*lcm, bus::monotonic_seconds() + kDiscoveryTime,
-               [&] { return (service = pick(monitor, model, key, wanted, true)).has_value(); });
+               [&] { return (service = pick_service(monitor, model, key, wanted, true)).has_value(); });
   std::unique_ptr<StartedService> started;
   if (!service && !wanted.empty()) {
     throw std::runtime_error("no READY instance '" + wanted + "' of model " + model + " with geometry_key " + key +
                              " heard within 1.5 s");
   }
-  if (!service && pick(monitor, model, key, "", false)) {
+  if (!service && pick_service(monitor, model, key, "", false)) {
     std::cerr << "query: an instance of " << model << " is starting; waiting for it\n";
     handle_until(*lcm, bus::monotonic_seconds() + start_timeout,
-                 [&] { return (service = pick(monitor, model, key, "", true)).has_value(); });
+                 [&] { return (service = pick_service(monitor, model, key, "", true)).has_value(); });
   }
   std::unique_ptr<StartedService> started_geometry;  // for a model whose data wrc-geometryd computes
   if (!service) {
@@ -357,7 +290,7 @@ int run_query(const std::vector<std::string>& args) {
     started = std::make_unique<StartedService>(*path, service_args, log);
     const double t0 = bus::monotonic_seconds();
     handle_until(*lcm, t0 + start_timeout, [&] {
-      return (service = pick(monitor, model, key, instance, true)).has_value() || !started->alive();
+      return (service = pick_service(monitor, model, key, instance, true)).has_value() || !started->alive();
     });
     if (!service) {
       const bool died = !started->alive();

@@ -6,12 +6,23 @@
 
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bus/line_atomic_stderr.hpp"
 #include "bus/service_options.hpp"
 
 namespace wrc::bus {
+
+/// The OwnOptions of a service without options of its own: any other argument is an error.
+struct NoOwnOptions {
+  static NoOwnOptions parse(const std::vector<std::string>& rest) {
+    if (!rest.empty()) throw std::invalid_argument("unknown argument '" + rest.front() + "' (see --help)");
+    return {};
+  }
+  static std::string help_text() { return ""; }
+};
 
 /// OwnOptions: a type with static OwnOptions parse(const std::vector<std::string>&) and static
 /// std::string help_text(). run(const ServiceOptions&, const OwnOptions&) returns the exit code.

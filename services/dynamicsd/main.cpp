@@ -9,15 +9,15 @@
 
 #include "bus/channels.hpp"
 #include "bus/heartbeat_publisher.hpp"
-#include "bus/line_atomic_stderr.hpp"
 #include "bus/service_loop.hpp"
+#include "bus/service_main.hpp"
 #include "bus/service_options.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "dynamicsd/dynamics_service.hpp"
 
 namespace {
 
-int run(const wrc::bus::ServiceOptions& options) {
+int run(const wrc::bus::ServiceOptions& options, const wrc::bus::NoOwnOptions&) {
   using namespace wrc::bus;
   ShutdownSignal::install();
   const ChannelNames names(options.channel_prefix);
@@ -45,23 +45,10 @@ int run(const wrc::bus::ServiceOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  wrc::bus::make_stderr_line_atomic();  // one log shared with other processes: whole lines only
-  try {
-    const auto options = wrc::bus::ServiceOptions::parse(argc, argv);
-    if (options.help) {
-      std::cout << "wrc-dynamicsd: wheelset dynamics (SUNDIALS IDA) with the contact from a contact service;\n"
-                   "commands on RUN_COMMAND, swaps on CONTACT_SELECT; publishes WHEELSET_STATE, RUN_STATUS,\n"
-                   "INTEGRATOR_STATS and RUN_SUMMARY.\n\n"
-                << wrc::bus::ServiceOptions::help_text();
-      return 0;
-    }
-    if (!options.rest.empty()) {
-      std::cerr << "wrc-dynamicsd: unknown argument '" << options.rest.front() << "' (see --help)\n";
-      return 2;
-    }
-    return run(options);
-  } catch (const std::exception& e) {
-    std::cerr << "wrc-dynamicsd: " << e.what() << "\n";
-    return 1;
-  }
+  return wrc::bus::service_main<wrc::bus::NoOwnOptions>(
+      argc, argv, "wrc-dynamicsd",
+      "usage: wrc-dynamicsd [options]\n"
+      "Wheelset dynamics (SUNDIALS IDA) with the contact from a contact service: commands on RUN_COMMAND,\n"
+      "swaps on CONTACT_SELECT; publishes WHEELSET_STATE, RUN_STATUS, INTEGRATOR_STATS and RUN_SUMMARY.\n",
+      run);
 }

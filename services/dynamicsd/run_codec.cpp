@@ -10,6 +10,24 @@
 namespace wrc::dynamics {
 namespace {
 
+// The motion fields every message with a wheelset state has (wheelset_state_t, run_summary_t).
+template <class Message>
+void copy_motion(const WheelsetSnapshot& s, Message& m) {
+  m.y = s.y;
+  m.z = s.z;
+  m.roll = s.roll;
+  m.yaw = s.yaw;
+  m.y_dot = s.y_dot;
+  m.z_dot = s.z_dot;
+  m.roll_dot = s.roll_dot;
+  m.yaw_dot = s.yaw_dot;
+  m.spin_rate = s.spin_rate;
+  for (int i = 0; i < 2; ++i) {
+    m.s_wheel[i] = s.wheels[static_cast<std::size_t>(i)].s_wheel;
+    m.normal_force[i] = s.wheels[static_cast<std::size_t>(i)].normal_force;
+  }
+}
+
 void require_finite(const char* name, double v) {
   if (!std::isfinite(v)) throw std::invalid_argument(std::string(name) + " = " + std::to_string(v) + " is not finite");
 }
@@ -151,22 +169,10 @@ wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& 
   wheelset_state_t m{};
   m.run_id = run_id;
   m.t = s.t;
-  m.y = s.y;
-  m.z = s.z;
-  m.roll = s.roll;
-  m.yaw = s.yaw;
-  m.y_dot = s.y_dot;
-  m.z_dot = s.z_dot;
-  m.roll_dot = s.roll_dot;
-  m.yaw_dot = s.yaw_dot;
-  m.spin_rate = s.spin_rate;
+  copy_motion(s, m);
   m.x = speed * s.t;
   m.speed = speed;
-  for (int i = 0; i < 2; ++i) {
-    m.s_wheel[i] = s.wheels[static_cast<std::size_t>(i)].s_wheel;
-    m.contact_angle[i] = s.wheels[static_cast<std::size_t>(i)].contact_angle;
-    m.normal_force[i] = s.wheels[static_cast<std::size_t>(i)].normal_force;
-  }
+  for (int i = 0; i < 2; ++i) m.contact_angle[i] = s.wheels[static_cast<std::size_t>(i)].contact_angle;
   m.model = s.model;
   return m;
 }
@@ -214,20 +220,7 @@ run_summary_t to_summary_message(WheelsetSimulation& sim, const std::string& run
   m.t_end = sim.time();
   m.wall_time = wall_time;
   try {
-    const WheelsetSnapshot s = sim.snapshot();
-    m.y = s.y;
-    m.z = s.z;
-    m.roll = s.roll;
-    m.yaw = s.yaw;
-    m.y_dot = s.y_dot;
-    m.z_dot = s.z_dot;
-    m.roll_dot = s.roll_dot;
-    m.yaw_dot = s.yaw_dot;
-    m.spin_rate = s.spin_rate;
-    for (int i = 0; i < 2; ++i) {
-      m.normal_force[i] = s.wheels[static_cast<std::size_t>(i)].normal_force;
-      m.s_wheel[i] = s.wheels[static_cast<std::size_t>(i)].s_wheel;
-    }
+    copy_motion(sim.snapshot(), m);
   } catch (const std::exception& e) {
     if (m.message.empty()) m.message = std::string("final state unavailable: ") + e.what();
   }

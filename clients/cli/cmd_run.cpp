@@ -153,7 +153,7 @@ int run_run(const std::vector<std::string>& args) {
       {"--y0", true, "initial lateral shift [m]", "0"},
       {"--yaw0", true, "initial yaw angle [rad]", "0"},
       {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
-      {"--swap-at", true, "swap the model at simulated times: T:M[,T2:M2...]", "none"},
+      {"--swap-at", true, "swap the model at the first step at or after simulated times: T:M[,T2:M2...]", "none"},
       {"--history", true, "write the state at every output period here (CSV)", "none"},
       {"--output-period", true, "simulated time between states [s]", "0.001"},
       {"--rtol", true, "relative tolerance of the integrator [-]", "1e-6"},

@@ -605,8 +605,7 @@ bool WheelsetSimulation::advance() {
   try {
     if (pending_swap_) perform_swap(std::exchange(pending_swap_, nullptr));
     const double t_end = spec_.integrator.t_end;
-    const bool swap_ahead = scheduled_swap_ && scheduled_swap_time_ > t_;
-    const double t_stop = swap_ahead ? std::min(t_end, scheduled_swap_time_) : t_end;
+    const double t_stop = t_end;
     check_sundials(IDASetStopTime(ida_.mem(), t_stop), "IDASetStopTime");
     last_contact_error_.clear();
     double t_reached = t_;
@@ -633,9 +632,9 @@ bool WheelsetSimulation::advance() {
       state_ = RunState::kFinished;
       return false;
     }
-    if (flag == IDA_TSTOP_RETURN && swap_ahead && t_ >= scheduled_swap_time_) {
-      perform_swap(std::exchange(scheduled_swap_, nullptr));
-    }
+    // A scheduled swap acts at the first step boundary at or after its time, as a live one does
+    // at the first boundary after it arrived (no stop time: the steps stay those of the live run).
+    if (scheduled_swap_ && t_ >= scheduled_swap_time_) perform_swap(std::exchange(scheduled_swap_, nullptr));
     if (counters().steps >= spec_.integrator.max_steps) {
       fail("more than " + std::to_string(spec_.integrator.max_steps) + " steps before t_end");
       return false;

@@ -84,7 +84,8 @@ class WheelsetSimulation {
 
   /// Takes effect at the next step boundary (the next advance()).
   void request_swap(std::shared_ptr<ContactEvaluator> next);
-  /// A swap to next at exactly time t (the integrator stops there): reproduces a swap recorded at t.
+  /// A swap to next at the first step boundary at or after time t [s]: reproduces, bit for bit, a
+  /// live swap recorded at t (which took effect at a step boundary).
   void schedule_swap(double t, std::shared_ptr<ContactEvaluator> next);
   /// Ends the run at the next step boundary with RunState::kStopped.
   void request_stop() { stop_requested_ = true; }

@@ -13,6 +13,7 @@ WRC_PACKAGES=(
   liblcm-java libjchart2d-java default-jdk-headless   # lcm-spy, its charts, javac/jar for the types jar
   libgtest-dev libbenchmark-dev   # unit tests and benchmarks
   iproute2 nftables util-linux    # private network namespaces and packet-loss injection in bus tests
+  gnuplot-nox                 # `wrc plot`: PNG/SVG pictures through its cairo terminals (pngcairo, svg), no X11
 )
 
 wrc_missing_packages() {

@@ -1,0 +1,114 @@
+// wrc plot area: the paper's figures 1-3, bottom: the contact area of one wheel in the common
+// tangent plane E, as the outlines of the region distance < eps0 for eps0 = 25, 50, ... um, with the
+// Hertz ellipse at the common point for a given normal force.
+
+#include <cmath>
+#include <iostream>
+
+#include "cli/plot/contour_lines.hpp"
+#include "cli/plot/plot_kind.hpp"
+#include "cli/plot/plot_options.hpp"
+#include "cli/profile_options.hpp"
+#include "core/contact/hertz.hpp"
+#include "core/geometry/contact_area.hpp"
+#include "core/models/contact_model.hpp"
+#include "core/models/contact_model_options.hpp"
+#include "core/models/patch_builder.hpp"
+
+namespace wrc::cli::plot {
+namespace {
+
+int run_area(const std::vector<std::string>& args) {
+  auto specs = profile_option_specs();
+  specs.push_back({"--y", true, "lateral shift of the wheelset [m] (> 0 towards the left rail)", ""});
+  specs.push_back({"--roll", true, "roll angle [rad] (> 0 raises the left wheel)", "0"});
+  specs.push_back({"--yaw", true, "yaw angle [rad]", "0"});
+  specs.push_back({"--wheel-side", true, "left or right", "left"});
+  specs.push_back({"--eps0", true, "largest level [m] (levels every 25 um up to it)", "1.5e-4"});
+  specs.push_back({"--normal-force", true, "normal force of the Hertz ellipse [N] (0: no ellipse)", "75000"});
+  specs.push_back({"--grid", true, "grid nodes per direction [-]", "161"});
+  specs.push_back({"--half-width", true, "half width of the square grid in E [m]", "0.02"});
+  for (const auto& spec : image_option_specs("area.png")) specs.push_back(spec);
+  Options opt("plot area", "--y Y [--roll PHI] [--yaw PSI] [--wheel-side left|right] [--eps0 E] [--out FILE] [options]",
+              specs, args);
+  if (opt.help_requested()) {
+    std::cout << opt.help()
+              << "\nThe paper's figures 1-3, bottom: the wheel lowered onto the rail in the common point P; in the\n"
+                 "common tangent plane E (xi rolling, eta lateral, towards +y) the outlines of the region where\n"
+                 "the distance between the undeformed surfaces along the normal is below eps0 = 25, 50, ... um,\n"
+                 "and the Hertz ellipse at P for --normal-force (material of the contact models).\n";
+    return 0;
+  }
+  const GeometrySpec spec = geometry_spec_from_options(opt);
+  const WheelsetGeometry geometry = make_geometry(spec);
+  const WheelsetPose pose = pose_from_options(opt, geometry.track().nominal_radius);
+  const WheelSide side = side_from_options(opt);
+  const double eps0 = opt.number("--eps0", 150e-6, 25e-6, 0.01);
+  const double normal_force = opt.number("--normal-force", 75e3, 0.0, 1e7);
+  ContactAreaOptions options;
+  options.n_xi = options.n_eta = opt.integer("--grid", 161, 3, 2001);
+  options.half_width_xi = options.half_width_eta = opt.number("--half-width", 0.02, 1e-4, 0.1);
+  const ImageRequest image = image_from_options(opt, "area.png");
+
+  const ContactArea area = compute_contact_area(geometry, side, pose, options);
+  GnuplotJob job;
+  std::string plots;
+  const double step = 25e-6;
+  for (int k = 1; k * step <= eps0 * (1 + 1e-12); ++k) {
+    const double level = k * step;
+    const auto segments = level_line(area.grid.xi, area.grid.eta, area.grid.distance, level);
+    if (segments.empty()) continue;
+    const std::string name = format("level_%d.dat", k);
+    auto out = job.open_data(name);
+    out << "# eta[m] xi[m]: segments of the outline distance = " << level << " m\n";
+    for (const auto& s : segments) out << s.y0 << " " << s.x0 << "\n" << s.y1 << " " << s.x1 << "\n\n";
+    plots += (plots.empty() ? "" : ", ") + quoted(job.data_path(name)) +
+             format(" using ($1*1e3):($2*1e3) with lines lw 1.5 lc palette frac %.3f title 'ε0 = %.0f µm'",
+                    (k - 1) / std::max(1.0, std::floor(eps0 / step + 1e-9) - 1), level * 1e6);
+  }
+  std::string ellipse_note;
+  if (normal_force > 0) {
+    const ContactModelOptions model_options;
+    const ContactMaterial material;
+    try {
+      const PatchShape shape = contact_shape(area.common, model_options.lateral_curvature_floor);
+      const HertzContact hertz = hertz_from_force(
+          shape.shape, contact_modulus(material.shear_modulus, material.poisson_ratio), normal_force);
+      auto out = job.open_data("hertz.dat");
+      for (int i = 0; i <= 360; ++i) {
+        const double t = 2 * M_PI * i / 360;
+        out << hertz.b * std::sin(t) << " " << hertz.a * std::cos(t) << "\n";
+      }
+      plots += (plots.empty() ? "" : ", ") + quoted(job.data_path("hertz.dat")) +
+               format(" using ($1*1e3):($2*1e3) with lines lw 2.5 dt 2 lc rgb 'black' title 'Hertz ellipse, "
+                      "N = %.0f kN (a = %.2f mm, b = %.2f mm)'",
+                      normal_force * 1e-3, hertz.a * 1e3, hertz.b * 1e3);
+    } catch (const std::exception& e) {
+      std::cerr << "wrc plot area: no Hertz ellipse at the common point: " << e.what() << "\n";
+    }
+  }
+  {
+    auto out = job.open_data("common.dat");
+    out << "0 0\n";
+  }
+  plots += (plots.empty() ? "" : ", ") + quoted(job.data_path("common.dat")) +
+           " using 1:2 with points pt 2 ps 2 lc rgb 'black' title 'common point P'";
+  const std::string title = format("Contact area, %s wheel: ", side_name(side)) + geometry_title(spec) + "\n" +
+                            pose_title(pose) +
+                            format(", P at s = %.2f mm, contact angle %.2f°", area.common.s * 1e3,
+                                   area.common.contact_angle * 180 / M_PI);
+  std::string script = "set title " + quoted(title) + "\n";
+  script += "set grid\nset size ratio -1\nset key below\nunset colorbox\n"
+            "set palette defined (0 '#1f77b4', 0.5 '#2ca02c', 1 '#d62728')\n"
+            "set xlabel 'lateral coordinate η in the tangent plane [mm]'\n"
+            "set ylabel 'rolling coordinate ξ in the tangent plane [mm]'\n";
+  script += "plot " + plots + "\n";
+  job.render(script, image);
+  return report_written(image);
+}
+
+const PlotKindRegistrar registrar{
+    {"area", "contact area below eps0 in the common tangent plane with the Hertz ellipse (figures 1-3)", run_area, 2}};
+
+}  // namespace
+}  // namespace wrc::cli::plot

@@ -1,0 +1,134 @@
+// `wrc plot KIND` as the user runs it: each kind writes a PNG of the size asked for (read from the
+// PNG header) or an SVG from a small case; a bad option and a missing gnuplot give one-line errors.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "child_process.hpp"
+
+namespace wrc::bus::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kCli = WRC_CLI_PATH;
+
+bool gnuplot_installed() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+
+struct PngSize {
+  bool valid = false;
+  std::uint32_t width = 0, height = 0;
+};
+
+// Width and height from the IHDR chunk, which follows the 8-byte signature.
+PngSize png_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char header[24] = {};
+  in.read(reinterpret_cast<char*>(header), sizeof header);
+  PngSize size;
+  if (in.gcount() != 24) return size;
+  const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (!std::equal(signature, signature + 8, header) || std::string(reinterpret_cast<char*>(header + 12), 4) != "IHDR")
+    return size;
+  auto be32 = [&](int at) {
+    return std::uint32_t(header[at]) << 24 | std::uint32_t(header[at + 1]) << 16 | std::uint32_t(header[at + 2]) << 8 |
+           std::uint32_t(header[at + 3]);
+  };
+  size.valid = true;
+  size.width = be32(16);
+  size.height = be32(20);
+  return size;
+}
+
+class PlotTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!gnuplot_installed()) GTEST_SKIP() << "gnuplot is not installed (Debian's gnuplot-nox)";
+    dir_ = fs::temp_directory_path() / ("wrc-plot-test-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    if (!dir_.empty()) fs::remove_all(dir_, ignored);
+  }
+
+  // Runs `wrc plot ARGS --out FILE --width 640 --height 480` and checks the PNG it writes.
+  void expect_png(const std::string& args, const std::string& name) {
+    const std::string out = (dir_ / name).string();
+    int status = -1;
+    const std::string text =
+        run_command(kCli + " plot " + args + " --out " + out + " --width 640 --height 480 2>&1", &status);
+    ASSERT_EQ(status, 0) << text;
+    EXPECT_NE(text.find("wrote " + out), std::string::npos) << text;
+    ASSERT_TRUE(fs::exists(out)) << text;
+    EXPECT_GT(fs::file_size(out), 1000u);
+    const PngSize size = png_size(out);
+    ASSERT_TRUE(size.valid) << out << " is not a PNG";
+    EXPECT_EQ(size.width, 640u);
+    EXPECT_EQ(size.height, 480u);
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(PlotTest, HelpListsTheKinds) {
+  int status = -1;
+  const std::string text = run_command(kCli + " plot --help", &status);
+  EXPECT_EQ(status, 0);
+  for (const char* kind : {"distance", "area"})
+    EXPECT_NE(text.find(std::string("\n  ") + kind + " "), std::string::npos) << kind << " missing in\n" << text;
+}
+
+TEST_F(PlotTest, Distance) { expect_png("distance --y 0.003", "distance.png"); }
+
+TEST_F(PlotTest, DistanceSvg) {
+  const std::string out = (dir_ / "distance.svg").string();
+  int status = -1;
+  const std::string text = run_command(kCli + " plot distance --y 0.006 --roll 0.001 --out " + out + " 2>&1", &status);
+  ASSERT_EQ(status, 0) << text;
+  std::ifstream in(out);
+  std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("width=\"1200\""), std::string::npos);
+}
+
+TEST_F(PlotTest, Area) { expect_png("area --y 0.003 --grid 61", "area.png"); }
+
+// Bad input: one line on stderr naming the bad value, no picture.
+TEST_F(PlotTest, BadOptionsGiveOneLineErrors) {
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {"distance --y 0.003 --out " + (dir_ / "x.jpg").string(), "must end in .png or .svg"},
+      {"distance --y 0.003 --width 5 --out " + (dir_ / "x.png").string(), "--width 5"},
+      {"distance --y abc", "--y"},
+      {"nosuchkind", "unknown kind 'nosuchkind'"},
+  };
+  for (const auto& c : cases) {
+    int status = -1;
+    const std::string text = run_command(kCli + " plot " + c.args + " 2>&1 >/dev/null", &status);
+    EXPECT_NE(status, 0) << c.args;
+    EXPECT_NE(text.find(c.message), std::string::npos) << c.args << ": " << text;
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << c.args << ": " << text;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+// Without gnuplot on PATH: one line naming the package.
+TEST_F(PlotTest, MissingGnuplotGivesOneLineError) {
+  const std::string out = (dir_ / "nognuplot.png").string();
+  int status = -1;
+  const std::string text = run_command("PATH=/nonexistent " + kCli + " plot distance --y 0.003 --out " + out + " 2>&1", &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(text.find("gnuplot-nox"), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace wrc::bus::test

@@ -2,6 +2,8 @@
 // PNG header) or an SVG from a small case; a bad option and a missing gnuplot give one-line errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -80,7 +82,7 @@ TEST_F(PlotTest, HelpListsTheKinds) {
   int status = -1;
   const std::string text = run_command(kCli + " plot --help", &status);
   EXPECT_EQ(status, 0);
-  for (const char* kind : {"distance", "area"})
+  for (const char* kind : {"distance", "area", "geometry", "run", "conicity"})
     EXPECT_NE(text.find(std::string("\n  ") + kind + " "), std::string::npos) << kind << " missing in\n" << text;
 }
 
@@ -99,6 +101,25 @@ TEST_F(PlotTest, DistanceSvg) {
 
 TEST_F(PlotTest, Area) { expect_png("area --y 0.003 --grid 61", "area.png"); }
 
+TEST_F(PlotTest, Geometry) { expect_png("geometry --y-from -0.008 --y-to 0.008 --y-step 2e-4", "geometry.png"); }
+
+// A small history in the format of `wrc run --history`, two runs overlaid (as figures 5-6).
+TEST_F(PlotTest, Run) {
+  for (const char* model : {"onepoint", "spline"}) {
+    std::ofstream out(dir_ / (std::string(model) + ".csv"));
+    out << "t,y,z,roll,yaw,y_dot,z_dot,roll_dot,yaw_dot,spin_rate,s_left,s_right,angle_left,angle_right,"
+           "normal_force_left,normal_force_right,model\n";
+    for (int i = 0; i <= 50; ++i) {
+      const double t = 0.02 * i, y = 0.004 * std::exp(-t) * std::cos(8 * t);
+      out << t << "," << y << ",0.46,0,0,0,0,0,0,65,0," << -2 * y << ",0.02,0.02,75000," << 75000 + 5e6 * y << ","
+          << model << "\n";
+    }
+  }
+  expect_png("run " + (dir_ / "onepoint.csv").string() + " " + (dir_ / "spline.csv").string(), "run.png");
+}
+
+TEST_F(PlotTest, Conicity) { expect_png("conicity --a-from 0.001 --a-to 0.008 --a-step 0.001 --samples 64", "conicity.png"); }
+
 // Bad input: one line on stderr naming the bad value, no picture.
 TEST_F(PlotTest, BadOptionsGiveOneLineErrors) {
   const struct {
@@ -108,6 +129,9 @@ TEST_F(PlotTest, BadOptionsGiveOneLineErrors) {
       {"distance --y 0.003 --width 5 --out " + (dir_ / "x.png").string(), "--width 5"},
       {"distance --y abc", "--y"},
       {"nosuchkind", "unknown kind 'nosuchkind'"},
+      {"run " + (dir_ / "missing.csv").string(), "cannot read the run history"},
+      {"run", "give at least one history file"},
+      {"geometry --y-from 0.01 --y-to -0.01", "--y-to"},
   };
   for (const auto& c : cases) {
     int status = -1;
@@ -126,6 +150,26 @@ TEST_F(PlotTest, MissingGnuplotGivesOneLineError) {
   const std::string text = run_command("PATH=/nonexistent " + kCli + " plot distance --y 0.003 --out " + out + " 2>&1", &status);
   EXPECT_NE(status, 0);
   EXPECT_NE(text.find("gnuplot-nox"), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// gnuplot failing: its exit status is checked and its stderr reported on one line, no picture.
+TEST_F(PlotTest, FailingGnuplotIsReported) {
+  const fs::path fake = dir_ / "bin";
+  fs::create_directories(fake);
+  {
+    std::ofstream script(fake / "gnuplot");
+    script << "#!/bin/sh\necho 'line 3: undefined variable: boom' >&2\nexit 1\n";
+  }
+  fs::permissions(fake / "gnuplot", fs::perms::owner_all);
+  const std::string out = (dir_ / "failed.png").string();
+  int status = -1;
+  const std::string text = run_command("PATH=" + fake.string() + ":/usr/bin:/bin " + kCli +
+                                           " plot distance --y 0.003 --out " + out + " 2>&1",
+                                       &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(text.find("gnuplot failed (exit status 1): line 3: undefined variable: boom"), std::string::npos) << text;
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
   EXPECT_FALSE(fs::exists(out));
 }

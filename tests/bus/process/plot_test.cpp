@@ -82,7 +82,7 @@ TEST_F(PlotTest, HelpListsTheKinds) {
   int status = -1;
   const std::string text = run_command(kCli + " plot --help", &status);
   EXPECT_EQ(status, 0);
-  for (const char* kind : {"distance", "area", "geometry", "run", "conicity"})
+  for (const char* kind : {"distance", "area", "geometry", "run", "conicity", "profiles", "displacement"})
     EXPECT_NE(text.find(std::string("\n  ") + kind + " "), std::string::npos) << kind << " missing in\n" << text;
 }
 
@@ -119,6 +119,10 @@ TEST_F(PlotTest, Run) {
 }
 
 TEST_F(PlotTest, Conicity) { expect_png("conicity --a-from 0.001 --a-to 0.008 --a-step 0.001 --samples 64", "conicity.png"); }
+
+TEST_F(PlotTest, Profiles) { expect_png("profiles --y 0.005", "profiles.png"); }
+
+TEST_F(PlotTest, Displacement) { expect_png("displacement --grid 21", "displacement.png"); }
 
 // Bad input: one line on stderr naming the bad value, no picture.
 TEST_F(PlotTest, BadOptionsGiveOneLineErrors) {

@@ -1,10 +1,12 @@
 // wrc plot area: the paper's figures 1-3, bottom: the contact area of one wheel in the common
 // tangent plane E, as the outlines of the region distance < eps0 for eps0 = 25, 50, ... um, with the
-// Hertz ellipse at the common point for a given normal force.
+// Hertz ellipse at the common point for a given normal force, and with --spline the ellipse of the
+// spline model (fitted in-process, the options of wrc fit) at its fitted contact point.
 
 #include <cmath>
 #include <iostream>
 
+#include "cli/fit_options.hpp"
 #include "cli/plot/contour_lines.hpp"
 #include "cli/plot/plot_kind.hpp"
 #include "cli/plot/plot_options.hpp"
@@ -14,9 +16,19 @@
 #include "core/models/contact_model.hpp"
 #include "core/models/contact_model_options.hpp"
 #include "core/models/patch_builder.hpp"
+#include "core/spline/spline_geometry_fit.hpp"
 
 namespace wrc::cli::plot {
 namespace {
+
+// Writes the ellipse with semi-axes a (along xi) and b (along eta) [m] centred at (xi, eta) [m] as
+// eta xi rows.
+void write_ellipse(std::ofstream& out, double a, double b, double xi, double eta) {
+  for (int i = 0; i <= 360; ++i) {
+    const double t = 2 * M_PI * i / 360;
+    out << eta + b * std::sin(t) << " " << xi + a * std::cos(t) << "\n";
+  }
+}
 
 int run_area(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
@@ -28,6 +40,8 @@ int run_area(const std::vector<std::string>& args) {
   specs.push_back({"--normal-force", true, "normal force of the Hertz ellipse [N] (0: no ellipse)", "75000"});
   specs.push_back({"--grid", true, "grid nodes per direction [-]", "161"});
   specs.push_back({"--half-width", true, "half width of the square grid in E [m]", "0.02"});
+  specs.push_back({"--spline", false, "also the spline model's ellipse (fits the model first, a few seconds)", ""});
+  for (const auto& spec : fit_option_specs()) specs.push_back(spec);
   for (const auto& spec : image_option_specs("area.png")) specs.push_back(spec);
   Options opt("plot area", "--y Y [--roll PHI] [--yaw PSI] [--wheel-side left|right] [--eps0 E] [--out FILE] [options]",
               specs, args);
@@ -36,7 +50,9 @@ int run_area(const std::vector<std::string>& args) {
               << "\nThe paper's figures 1-3, bottom: the wheel lowered onto the rail in the common point P; in the\n"
                  "common tangent plane E (xi rolling, eta lateral, towards +y) the outlines of the region where\n"
                  "the distance between the undeformed surfaces along the normal is below eps0 = 25, 50, ... um,\n"
-                 "and the Hertz ellipse at P for --normal-force (material of the contact models).\n";
+                 "and the Hertz ellipse at P for --normal-force (material of the contact models). --spline adds the\n"
+                 "ellipse of the spline model (fitted with the wrc fit options given) at its fitted contact point;\n"
+                 "the pose must lie in the spline model's box (--box).\n";
     return 0;
   }
   const GeometrySpec spec = geometry_spec_from_options(opt);
@@ -48,6 +64,8 @@ int run_area(const std::vector<std::string>& args) {
   ContactAreaOptions options;
   options.n_xi = options.n_eta = opt.integer("--grid", 161, 3, 2001);
   options.half_width_xi = options.half_width_eta = opt.number("--half-width", 0.02, 1e-4, 0.1);
+  const bool with_spline = opt.has("--spline");
+  const SplineFitOptions fit_options = fit_options_from(opt);
   const ImageRequest image = image_from_options(opt, "area.png");
 
   const ContactArea area = compute_contact_area(geometry, side, pose, options);
@@ -66,26 +84,40 @@ int run_area(const std::vector<std::string>& args) {
              format(" using ($1*1e3):($2*1e3) with lines lw 1.5 lc palette frac %.3f title 'ε0 = %.0f µm'",
                     (k - 1) / std::max(1.0, std::floor(eps0 / step + 1e-9) - 1), level * 1e6);
   }
-  std::string ellipse_note;
+  const ContactModelOptions model_options;
+  const ContactMaterial material;
+  const double modulus = contact_modulus(material.shear_modulus, material.poisson_ratio);
   if (normal_force > 0) {
-    const ContactModelOptions model_options;
-    const ContactMaterial material;
     try {
       const PatchShape shape = contact_shape(area.common, model_options.lateral_curvature_floor);
-      const HertzContact hertz = hertz_from_force(
-          shape.shape, contact_modulus(material.shear_modulus, material.poisson_ratio), normal_force);
+      const HertzContact hertz = hertz_from_force(shape.shape, modulus, normal_force);
       auto out = job.open_data("hertz.dat");
-      for (int i = 0; i <= 360; ++i) {
-        const double t = 2 * M_PI * i / 360;
-        out << hertz.b * std::sin(t) << " " << hertz.a * std::cos(t) << "\n";
-      }
+      write_ellipse(out, hertz.a, hertz.b, 0, 0);
       plots += (plots.empty() ? "" : ", ") + quoted(job.data_path("hertz.dat")) +
-               format(" using ($1*1e3):($2*1e3) with lines lw 2.5 dt 2 lc rgb 'black' title 'Hertz ellipse, "
+               format(" using ($1*1e3):($2*1e3) with lines lw 2.5 dt 2 lc rgb 'black' title 'Hertz ellipse at P, "
                       "N = %.0f kN (a = %.2f mm, b = %.2f mm)'",
                       normal_force * 1e-3, hertz.a * 1e3, hertz.b * 1e3);
     } catch (const std::exception& e) {
       std::cerr << "wrc plot area: no Hertz ellipse at the common point: " << e.what() << "\n";
     }
+  }
+  if (with_spline && normal_force > 0) {
+    const SplineFit fit = fit_spline_geometry(geometry, fit_options);
+    const SplineContactGeometry& splines = *fit.model;
+    if (!splines.inside(side, area.pose)) throw std::runtime_error("--spline: " + splines.outside_reason(side, area.pose));
+    SplineEvaluation evaluation;
+    splines.evaluate(side, area.pose, SplineDerivatives::kValue, evaluation);
+    const ContactPoint fitted = splines.contact_point(side, area.pose, evaluation);
+    const HertzContact hertz = hertz_from_force(splines.patch_shape(evaluation).shape, modulus, normal_force);
+    // The fitted contact point projected onto E.
+    const Eigen::Vector3d offset = fitted.wheel_point - area.origin;
+    const double xi = offset.dot(area.t1), eta = offset.dot(area.t2);
+    auto out = job.open_data("spline.dat");
+    write_ellipse(out, hertz.a, hertz.b, xi, eta);
+    plots += (plots.empty() ? "" : ", ") + quoted(job.data_path("spline.dat")) +
+             format(" using ($1*1e3):($2*1e3) with lines lw 2.5 dt 4 lc rgb '#9467bd' title 'spline model ellipse "
+                    "(a = %.2f mm, b = %.2f mm, centre η = %.2f mm)'",
+                    hertz.a * 1e3, hertz.b * 1e3, eta * 1e3);
   }
   {
     auto out = job.open_data("common.dat");

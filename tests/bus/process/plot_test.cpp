@@ -101,6 +101,9 @@ TEST_F(PlotTest, DistanceSvg) {
 
 TEST_F(PlotTest, Area) { expect_png("area --y 0.003 --grid 61", "area.png"); }
 
+// With the spline model's ellipse (an in-process fit of a few seconds).
+TEST_F(PlotTest, AreaWithSplineEllipse) { expect_png("area --y 0.003 --grid 41 --spline", "area_spline.png"); }
+
 TEST_F(PlotTest, Geometry) { expect_png("geometry --y-from -0.008 --y-to 0.008 --y-step 2e-4", "geometry.png"); }
 
 // A small history in the format of `wrc run --history`, two runs overlaid (as figures 5-6).
@@ -136,6 +139,7 @@ TEST_F(PlotTest, BadOptionsGiveOneLineErrors) {
       {"run " + (dir_ / "missing.csv").string(), "cannot read the run history"},
       {"run", "give at least one history file"},
       {"geometry --y-from 0.01 --y-to -0.01", "--y-to"},
+      {"area --y 0.008 --grid 21 --spline --samples 5x5", "outside the spline model's box: y = 0.008 m"},
   };
   for (const auto& c : cases) {
     int status = -1;

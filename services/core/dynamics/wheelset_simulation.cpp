@@ -304,10 +304,8 @@ RunCounters WheelsetSimulation::ida_counters() const {
   c.nonlin_iters = v;
   check_sundials(IDAGetNumNonlinSolvConvFails(mem, &v), "IDAGetNumNonlinSolvConvFails");
   c.nonlin_conv_fails = v;
-  if (formulation_ == ContactFormulation::kRigid) {
-    check_sundials(IDAGetNumGEvals(mem, &v), "IDAGetNumGEvals");
-    c.root_evals = v;
-  }
+  // 0 for a segment without event functions (elastic), whichever formulation is now current.
+  if (IDAGetNumGEvals(mem, &v) == IDA_SUCCESS) c.root_evals = v;
   int order = 0;
   check_sundials(IDAGetLastOrder(mem, &order), "IDAGetLastOrder");
   c.last_order = order;

@@ -1,6 +1,7 @@
 // wrc-dynamicsd as a real process with real contact services, driven by `wrc run` and `wrc swap`
 // (every test in a private network namespace): every model runs and writes its summary; a live
-// swap made from another process is listed and reproduced bit for bit by --swap-at; 5 % packet
+// swap made from another process is listed and reproduced bit for bit by --swap-at; a swap to a
+// missing service is refused with the reason; 5 % packet
 // loss and a contact service killed with SIGKILL (restarted by the launcher) end in the same final
 // state as an undisturbed run, bit for bit.
 #include <signal.h>
@@ -169,6 +170,31 @@ TEST_F(DynamicsServiceTest, PacketLossGivesTheSameFinalState) {
   ASSERT_EQ(lossy["state"], "finished") << lossy.dump();
   EXPECT_GT(lossy["counters"]["contact_retries"].get<long>(), 0) << "the loss rule did not act";
   expect_same_final_state(clean, lossy);
+}
+
+// A swap to a model whose service is not on the bus is refused: the run keeps its model and its
+// summary says why.
+TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
+  const std::string log = temp_path("launch.log");
+  auto launcher = launch({"contact-multipoint", "dynamics"}, log);
+  for (const char* model : {"multipoint", "dynamicsd"})
+    ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
+  const std::vector<std::string> args = run_args("multipoint", 10.0, temp_path("refused.json"));
+  ChildProcess cli(WRC_CLI_PATH, args, temp_path("refused.log"));
+  ASSERT_TRUE(wait_running_past(run_id(temp_path("refused.json")), 0.5, 60.0)) << read_text(temp_path("refused.log"));
+  int status = -1;
+  const std::string out = run_command(std::string(WRC_CLI_PATH) + " swap spline 2>&1", &status);
+  ASSERT_EQ(status, 0) << out;
+  ASSERT_TRUE(handle_until([&] { return cli.wait(0.0); }, kRunDeadline)) << read_text(temp_path("refused.log"));
+  const nlohmann::json s = summary(args);
+  EXPECT_EQ(s["state"], "finished") << s.dump();
+  EXPECT_EQ(s["model"], "multipoint");
+  EXPECT_TRUE(s["swaps"].empty());
+  EXPECT_NE(s["message"].get<std::string>().find("swap to spline refused, keeping multipoint: no spline service"),
+            std::string::npos)
+      << s["message"];
+  launcher->signal(SIGINT);
+  launcher->wait(20.0);
 }
 
 // The contact service killed with SIGKILL in the middle of a run: the launcher restarts it, the

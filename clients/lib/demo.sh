@@ -71,7 +71,8 @@ if [ "$ready" = 1 ]; then
   printf '%-10s %10s %10s %9s %7s %9s %9s\n' model y[mm] yaw[mrad] wall[s] steps restarts queries
   for model in spline multipoint interp onepoint; do
     summary="$report_dir/run-$model.json"
-    if wrc run --model "$model" --t-end 2 --summary "$summary" 2>"$report_dir/run-$model.log"; then
+    if wrc run --model "$model" --t-end 2 --summary "$summary" --history "$report_dir/run-$model.csv" \
+        --output-period 0.002 2>"$report_dir/run-$model.log"; then
       v() { sed -n "s/^ *\"$1\": \([^,]*\),\{0,1\}$/\1/p" "$summary" | head -1; }
       awk -v m="$model" -v y="$(v y)" -v yaw="$(v yaw)" -v w="$(v wall_time)" -v s="$(v steps)" \
           -v r="$(v restarts)" -v q="$(v contact_queries)" \
@@ -80,7 +81,6 @@ if [ "$ready" = 1 ]; then
       echo "$model: run failed:"; tail -3 "$report_dir/run-$model.log"
     fi
   done
-  echo "Summaries (final state, counters, parameters): $report_dir/run-<model>.json"
 else
   echo "the contact services did not report READY; launcher log:"; cat "$log"
 fi
@@ -88,5 +88,22 @@ kill -TERM $launcher 2>/dev/null || true
 wait $launcher 2>/dev/null || true
 section "Launcher log"
 cat "$log"
+
+section "The paper's figures and the contact-geometry plots (wrc plot)"
+figures="$report_dir/figures"
+mkdir -p "$figures"
+plot() { local name=$1; shift; if wrc plot "$@" --out "$figures/$name.png" 2>"$figures/$name.log"; then
+  echo "  $name.png"; rm -f "$figures/$name.log"; else echo "  $name: $(tail -1 "$figures/$name.log")"; fi; }
+plot fig1-distance distance --y 0.0052 --roll -0.0003
+plot fig1-area area --y 0.0052 --roll -0.0003 --spline
+plot fig4-displacement displacement
+runs=()
+for model in onepoint spline; do [ -s "$report_dir/run-$model.csv" ] && runs+=("$report_dir/run-$model.csv"); done
+[ "${#runs[@]}" -gt 0 ] && plot fig5-6-run run "${runs[@]}"
+plot geometry geometry --y-from -0.008 --y-to 0.008
+plot conicity conicity --a-to 0.008
+plot profiles profiles --y 0.005
 echo
 echo "The spline model's accuracy report: $report_dir/fit-10x2x2.json"
+echo "Run summaries: $report_dir/run-<model>.json"
+echo "Figures: $figures"

@@ -92,7 +92,7 @@ cat "$log"
 section "The paper's figures and the contact-geometry plots (wrc plot)"
 figures="$report_dir/figures"
 mkdir -p "$figures"
-plot() { local name=$1; shift; if wrc plot "$@" --out "$figures/$name.png" 2>"$figures/$name.log"; then
+plot() { local name=$1; shift; if wrc plot "$@" --out "$figures/$name.png" >/dev/null 2>"$figures/$name.log"; then
   echo "  $name.png"; rm -f "$figures/$name.log"; else echo "  $name: $(tail -1 "$figures/$name.log")"; fi; }
 plot fig1-distance distance --y 0.0052 --roll -0.0003
 plot fig1-area area --y 0.0052 --roll -0.0003 --spline

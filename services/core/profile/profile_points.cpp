@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/profile/profile_error.hpp"
+#include "core/profile/profile_limits.hpp"
 
 namespace wrc {
 
@@ -13,6 +14,14 @@ ProfilePoints validate_profile_points(ProfilePoints points) {
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(points.lateral[i]) || !std::isfinite(points.height[i])) {
       throw ProfileError(points.source, points.line[i], "NaN or infinite value");
+    }
+    for (const double value : {points.lateral[i], points.height[i]}) {
+      if (std::fabs(value) > kMaxProfileCoordinate) {
+        std::ostringstream reason;
+        reason << "value " << value << " m is beyond +-" << kMaxProfileCoordinate
+               << " m (no wheel or rail profile reaches that far: is the length unit off?)";
+        throw ProfileError(points.source, points.line[i], reason.str());
+      }
     }
   }
   if (n < kMinProfilePoints) {

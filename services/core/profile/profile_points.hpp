@@ -20,10 +20,11 @@ struct ProfilePoints {
 /// Fewest points a profile file may have.
 constexpr std::size_t kMinProfilePoints = 4;
 
-/// Checks the points and returns them ordered by increasing lateral coordinate: every value finite,
+/// Checks the points and returns them ordered by increasing lateral coordinate: every value finite
+/// and within +-kMaxProfileCoordinate (profile_limits.hpp),
 /// at least kMinProfilePoints points, lateral coordinates strictly monotonic in file order (either
 /// direction; a file that runs backwards is reversed).
-/// @throws ProfileError naming the file and the first offending line: "NaN or infinite value",
+/// @throws ProfileError naming the file and the first offending line: "NaN or infinite value", "value ... m is beyond",
 ///         "duplicate lateral coordinate", "lateral coordinate not monotonic", "too few points".
 ProfilePoints validate_profile_points(ProfilePoints points);
 

@@ -24,7 +24,9 @@ bool parse_number(const std::string& token, double& value);
 /// The final path component, for profile names.
 std::string base_name(const std::string& path);
 
-/// All lines of a file. @throws ProfileError(path, 0, "cannot open file") if it cannot be read.
+/// All lines of a file. @throws ProfileError(path, 0, reason): "cannot open file", "not a regular
+/// file (a FIFO)" (checked before opening, so a FIFO or a device is refused at once), "file too
+/// large" (beyond kMaxProfileFileBytes, profile_limits.hpp).
 std::vector<std::string> read_lines(const std::string& path);
 
 }  // namespace profile_text

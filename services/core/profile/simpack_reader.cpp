@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "core/profile/profile_error.hpp"
+#include "core/profile/profile_plausibility.hpp"
 #include "core/profile/profile_points.hpp"
 #include "core/profile/profile_text.hpp"
 #include "core/profile/spline_profile.hpp"
@@ -187,6 +188,7 @@ ProfilePtr read_simpack_profile(const std::string& path, ProfileSide side,
     raw.height[i] = height_sign * raw.height[i] / factor;
   }
   const ProfilePoints points = validate_profile_points(std::move(raw));
+  check_profile_plausibility(points, side);
 
   double cant = 0.0;
   if (side == ProfileSide::kRail) {

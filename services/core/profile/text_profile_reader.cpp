@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "core/profile/profile_error.hpp"
+#include "core/profile/profile_plausibility.hpp"
 #include "core/profile/profile_points.hpp"
 #include "core/profile/profile_text.hpp"
 #include "core/profile/spline_profile.hpp"
@@ -88,7 +89,9 @@ ProfilePtr read_text_profile(const std::string& path, ProfileSide side,
     points.line.push_back(line_no);
   }
   if (side == ProfileSide::kWheel) cant = 0.0;
-  return std::make_shared<SplineProfile>(validate_profile_points(std::move(points)), side,
+  const ProfilePoints checked = validate_profile_points(std::move(points));
+  check_profile_plausibility(checked, side);
+  return std::make_shared<SplineProfile>(checked, side,
                                          "file " + profile_text::base_name(path),
                                          options.built_in_cant.value_or(cant));
 }

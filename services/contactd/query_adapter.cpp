@@ -7,6 +7,7 @@
 
 #include "bus/contact_status.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
+#include "core/models/no_contact_error.hpp"
 #include "core/models/query_validation.hpp"
 
 namespace wrc::contactd {
@@ -290,6 +291,9 @@ void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query
     std::string why;
     try {
       to_result_message(model.evaluate(to_contact_query(query, i)), out);
+    } catch (const NoContactError& e) {
+      status = wrc::contact_reply_t::NO_CONTACT;
+      why = e.what();
     } catch (const OutsideModelError& e) {
       status = wrc::contact_reply_t::OUTSIDE_MODEL;
       why = e.what();

@@ -45,7 +45,8 @@ void to_query_message(const std::vector<ContactQuery>& batch, wrc::contact_query
 
 /// Evaluates every configuration of a validated query with model and fills reply.status,
 /// reply.message and reply.results (one per configuration, in query order). Per configuration:
-/// OutsideModelError -> OUTSIDE_MODEL, ContactConfigurationError -> IMPOSSIBLE_CONFIGURATION, std::invalid_argument -> BAD_REQUEST,
+/// NoContactError -> NO_CONTACT, OutsideModelError -> OUTSIDE_MODEL, ContactConfigurationError -> IMPOSSIBLE_CONFIGURATION,
+/// std::invalid_argument -> BAD_REQUEST,
 /// any other exception -> INTERNAL_ERROR; such a configuration gets no patches and zero
 /// resultants. The overall status is the worst one (bus::contact_status_severity: OK < NO_CONTACT <
 /// OUTSIDE_MODEL < IMPOSSIBLE_CONFIGURATION < BAD_REQUEST < INTERNAL_ERROR) and the message that of the first configuration with that status,

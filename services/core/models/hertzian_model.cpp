@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
+#include "core/models/contact_range.hpp"
 #include "core/models/flange_climb.hpp"
 #include "core/models/one_point_model.hpp"
 #include "core/models/query_validation.hpp"
@@ -27,6 +28,7 @@ ContactResult HertzianContactModel::evaluate(const ContactQuery& query) const {
   ContactResult result;
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight})
     result.wheels[static_cast<size_t>(side)] = add_wheel_patches(side, context, result);
+  check_contact_range(query, result);
   for (const ContactPatch& patch : result.patches) add_to_resultant(patch, motion.centre, result);
   return result;
 }

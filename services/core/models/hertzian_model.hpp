@@ -19,7 +19,8 @@ namespace wrc {
 class HertzianContactModel : public ContactModel {
  public:
   /// validate_contact_query(), then add_wheel_patches() for the left and the right wheel, then
-  /// the resultant of every patch about the wheelset centre.
+  /// check_contact_range() (contact_range.hpp: ContactConfigurationError or NoContactError outside
+  /// the models' range), then the resultant of every patch about the wheelset centre.
   ContactResult evaluate(const ContactQuery& query) const final;
   const WheelsetGeometry& geometry() const final { return *geometry_; }
   const ContactModelOptions& options() const { return options_; }

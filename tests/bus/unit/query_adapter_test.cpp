@@ -8,6 +8,7 @@
 /// overall status being the worst one with that configuration's message.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -18,6 +19,7 @@
 #include "bus/contact_status.hpp"
 #include "contactd/query_adapter.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "core/models/no_contact_error.hpp"
 #include "core/models/query_validation.hpp"
 #include "core/profile/profile_factory.hpp"
 
@@ -261,6 +263,7 @@ TEST(QueryAdapter, StatusPerExceptionKind) {
     const char* reason;
   };
   const Case cases[] = {
+      {[] { throw NoContactError("lifted"); }, wrc::contact_reply_t::NO_CONTACT, "lifted"},
       {[] { throw OutsideModelError("outside the box"); }, wrc::contact_reply_t::OUTSIDE_MODEL, "outside the box"},
       {[] { throw ContactConfigurationError("flange climb"); }, wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION,
        "flange climb"},
@@ -336,6 +339,36 @@ TEST(QueryAdapter, StatusesOfRealModels) {
   EXPECT_EQ(reply.results[1].status, wrc::contact_reply_t::OUTSIDE_MODEL);
   EXPECT_EQ(reply.status, wrc::contact_reply_t::OUTSIDE_MODEL);
   EXPECT_NE(reply.message.find("configuration 1 (y=0.006"), std::string::npos) << reply.message;
+}
+
+// Real model, elastic formulation: a wheelset lowered 0.1 mm is answered, one 50 mm above its rails
+// is NO_CONTACT and one 160 mm into them IMPOSSIBLE_CONFIGURATION, each with the reason.
+TEST(QueryAdapter, ContactRangeOfARealModel) {
+  wrc::contact_query_t q = distinct_query();
+  q.formulation = wrc::contact_query_t::ELASTIC;
+  q.num_configurations = 1;
+  q.configurations.resize(1);
+  wrc::wheelset_configuration_t& c = q.configurations[0];
+  c.y = 0.0;
+  c.roll = 0.0;
+  c.yaw = 0.0;
+  const auto onepoint = make_contact_model("onepoint", s1002_uic60());
+  ContactQuery probe;
+  probe.pose.z = 0.46;
+  const ContactResult at_nominal = onepoint->evaluate(probe);
+  const double touching = 0.46 - std::min(at_nominal.wheels[0].gap, at_nominal.wheels[1].gap);
+  wrc::contact_reply_t reply{};
+  c.z = touching - 1e-4;
+  evaluate_query(*onepoint, q, reply);
+  EXPECT_EQ(reply.status, wrc::contact_reply_t::OK) << reply.message;
+  c.z = touching + 0.05;
+  evaluate_query(*onepoint, q, reply);
+  EXPECT_EQ(reply.status, wrc::contact_reply_t::NO_CONTACT) << reply.message;
+  EXPECT_NE(reply.message.find("lifted"), std::string::npos) << reply.message;
+  c.z = 0.3;
+  evaluate_query(*onepoint, q, reply);
+  EXPECT_EQ(reply.status, wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION) << reply.message;
+  EXPECT_NE(reply.message.find("penetration"), std::string::npos) << reply.message;
 }
 
 }  // namespace

@@ -9,13 +9,14 @@
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
+#include "core/geometry/wheelset_geometry.hpp"
 
 namespace wrc::cli {
 namespace {
 
 int run_geometry(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--yaw", true, "yaw angle of the wheelset [rad]", "0"});
+  specs.push_back({"--yaw", true, "yaw angle of the wheelset [rad], within +-0.06 (validated range)", "0"});
   specs.push_back({"--y-from", true, "first lateral shift [m] (> 0 towards the left rail)", ""});
   specs.push_back({"--y-to", true, "last lateral shift [m]", ""});
   specs.push_back({"--y-step", true, "lateral step [m]", ""});
@@ -32,7 +33,7 @@ int run_geometry(const std::vector<std::string>& args) {
   const double y_from = opt.required_number("--y-from", -0.05, 0.05);
   const double y_to = opt.required_number("--y-to", -0.05, 0.05);
   const double step = opt.required_number("--y-step", 1e-7, 0.05);
-  const double yaw = opt.number("--yaw", 0.0, -0.1, 0.1);
+  const double yaw = opt.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
   const bool csv = opt.choice("--format", {"csv", "table"}, "table") == "csv";
   if (y_to < y_from) throw UsageError("--y-to " + std::to_string(y_to) + " is below --y-from " + std::to_string(y_from));
   const long count = std::lround(std::floor((y_to - y_from) / step + 1e-9)) + 1;

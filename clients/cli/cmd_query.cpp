@@ -165,7 +165,7 @@ int run_query(const std::vector<std::string>& args) {
       {"--model", true, "contact model: onepoint, interp, multipoint or spline", ""},
       {"--y", true, "lateral shift of the wheelset [m], > 0 towards the left rail", ""},
       {"--roll", true, "roll angle [rad], > 0 raises the left wheel", "0 (elastic without --z: rigid solution)"},
-      {"--yaw", true, "yaw angle [rad]", "0"},
+      {"--yaw", true, "yaw angle [rad], within +-0.06 (validated range)", "0"},
       {"--z", true, "height of the wheelset centre above the top-of-rail plane [m]",
        "rigid: closer wheel just touching; elastic: that minus --penetration"},
       {"--penetration", true, "elastic without --z: how far the centre is lowered below touching [m]", "1e-4"},
@@ -205,7 +205,7 @@ int run_query(const std::vector<std::string>& args) {
   const std::string model = o.choice("--model", contact_model_names(), "");
   if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
   const double y = o.required_number("--y", -0.5, 0.5);
-  const double yaw = o.number("--yaw", 0.0, -0.5, 0.5);
+  const double yaw = o.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
   const std::string formulation = o.choice("--formulation", {"rigid", "elastic"}, "rigid");
   const double speed = o.number("--speed", 30.0, 1e-6, 1000.0);
   const double load = o.number("--load", kDefaultLoad, 0.0, 1e8);
@@ -260,8 +260,7 @@ int run_query(const std::vector<std::string>& args) {
   bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
   const std::string wanted = o.text("--instance");
   std::optional<bus::ServiceStatus> service;
-  handle_until(*lcm, bus::monotonic_seconds() + kDiscoveryTime,
-               [&] { return (service = pick_service(monitor, model, key, wanted, true)).has_value(); });
+  service = discover_service(*lcm, monitor, model, key, wanted, kDiscoveryTime);
   std::unique_ptr<StartedService> started;
   if (!service && !wanted.empty()) {
     throw std::runtime_error("no READY instance '" + wanted + "' of model " + model + " with geometry_key " + key +
@@ -308,7 +307,7 @@ int run_query(const std::vector<std::string>& args) {
       *lcm, names.name(bus::channel::kContactQuery, model), names.name(bus::channel::kContactReply, client_id),
       bus::sender_name("wrc-query", client_id));
   auto result = client.call(query, policy);
-  const bool answered = result && result.reply->status == wrc::contact_reply_t::OK;
+  const bool answered = static_cast<bool>(result);  // an error status is in the reply, not in the log
   if (started_geometry) {
     started_geometry->stop();
     if (answered) std::filesystem::remove(started_geometry->log());

@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,7 +14,9 @@
 #include "bus/build_paths.hpp"
 #include "bus/clock.hpp"
 #include "bus/spawn_child.hpp"
+#include "bus/service_options.hpp"
 #include "bus/stop_children.hpp"
+#include "cli/log_cleanup.hpp"
 
 namespace wrc::cli {
 
@@ -21,8 +24,12 @@ StartedService::StartedService(const std::string& path, const std::vector<std::s
     : log_(std::move(log)) {
   std::vector<std::string> words{path};
   words.insert(words.end(), args.begin(), args.end());
+  remove_on_signal(log_);  // before the fork: a signal right after it finds the log registered
   pid_ = bus::spawn_tied_child(words, SIGTERM, log_);  // the service drains when the command dies
-  if (pid_ < 0) throw std::runtime_error("fork failed for " + path);
+  if (pid_ < 0) {
+    keep_on_signal(log_);
+    throw std::runtime_error("fork failed for " + path);
+  }
 }
 
 StartedService::~StartedService() { stop(); }
@@ -38,6 +45,7 @@ bool StartedService::alive() {
 }
 
 void StartedService::stop() {
+  keep_on_signal(log_);  // stopped: the caller decides whether its log stays
   if (!alive()) return;
   bus::stop_children({pid_}, 5.0);
   pid_ = -1;
@@ -75,6 +83,24 @@ std::optional<bus::ServiceStatus> pick_service(const bus::HeartbeatMonitor& moni
     if (ready ? s.available() : s.last.state == wrc::heartbeat_t::STARTING) return s;
   }
   return std::nullopt;
+}
+
+std::optional<bus::ServiceStatus> discover_service(lcm::LCM& lcm, const bus::HeartbeatMonitor& monitor,
+                                                   const std::string& model, const std::string& geometry_key,
+                                                   const std::string& instance, double window) {
+  const double t0 = bus::monotonic_seconds();
+  handle_until(lcm, t0 + window, [&] {
+    const std::optional<bus::ServiceStatus> found = pick_service(monitor, model, geometry_key, instance, true);
+    if (!found) return false;
+    if (!instance.empty()) return true;
+    // Every instance beating at least as often as the slowest one heard (or the default period)
+    // has beaten once since t0.
+    double period = bus::ServiceOptions{}.heartbeat_period;
+    for (const auto& s : monitor.services(bus::monotonic_seconds()))
+      if (s.last.model == model && s.alive) period = std::max(period, s.last.period);
+    return bus::monotonic_seconds() >= t0 + kDiscoveryPeriodMargin * period;
+  });
+  return pick_service(monitor, model, geometry_key, instance, true);
 }
 
 std::unique_ptr<StartedService> ensure_service(lcm::LCM& lcm, const bus::HeartbeatMonitor& monitor,

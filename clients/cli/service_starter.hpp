@@ -17,7 +17,8 @@
 
 namespace wrc::cli {
 
-/// A service process this command started.
+/// A service process this command started. Its log is removed should the command end by a signal
+/// before stop() (log_cleanup.hpp).
 class StartedService {
  public:
   /// Starts path with args, output to log. @throws std::runtime_error when fork fails.
@@ -49,6 +50,20 @@ bool handle_until(lcm::LCM& lcm, double deadline, const std::function<bool()>& d
 std::optional<bus::ServiceStatus> pick_service(const bus::HeartbeatMonitor& monitor, const std::string& model,
                                                const std::string& geometry_key, const std::string& instance,
                                                bool ready);
+
+/// Heartbeat periods discover_service() listens after the first match [-]: a little more than one,
+/// for the delivery jitter.
+inline constexpr double kDiscoveryPeriodMargin = 1.1;
+
+/// The READY instance of model (with geometry_key when not empty) that pick_service() chooses,
+/// after listening for up to window [s]: with a named instance, as soon as it is heard; otherwise,
+/// once one is heard, until kDiscoveryPeriodMargin times the longest heartbeat period (of the
+/// instances of model heard, and the services' default) has passed since the start: every
+/// instance beating at least as often has been heard then, so the smallest name is not missed
+/// because another one beat first. Never past the window. nullopt: none heard.
+std::optional<bus::ServiceStatus> discover_service(lcm::LCM& lcm, const bus::HeartbeatMonitor& monitor,
+                                                   const std::string& model, const std::string& geometry_key,
+                                                   const std::string& instance, double window);
 
 /// Where services are started and how.
 struct StartContext {

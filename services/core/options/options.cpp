@@ -1,12 +1,22 @@
 #include "core/options/options.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
 namespace wrc {
+namespace {
+
+// "-yaw", "-x": a dash and a letter, a mistyped option even where positional words are allowed
+// (a negative number "-0.05" or "-.5" is not one).
+bool looks_like_short_option(const std::string& arg) {
+  return arg.size() > 1 && arg[0] == '-' && std::isalpha(static_cast<unsigned char>(arg[1]));
+}
+
+}  // namespace
 
 double parse_finite(const std::string& text, const std::string& what) {
   errno = 0;
@@ -39,6 +49,9 @@ Options::Options(std::string program, std::string label, std::string synopsis, s
       continue;
     }
     if (arg.rfind("--", 0) != 0 || arg.size() == 2) {
+      if (!pass_on && looks_like_short_option(arg))
+        throw UsageError(label_ + "unexpected argument '" + arg + "' (options start with --; see " + program_ +
+                         " --help)");
       (pass_on ? passed_on_ : positional_).push_back(arg);
       continue;
     }

@@ -51,7 +51,8 @@ class Options {
  public:
   /// Parses the arguments of `wrc <command>` against specs. Unknown options, missing values and
   /// repeated options throw UsageError, and so does any argument not starting with -- (a stray
-  /// word, a mistyped `-yaw`) unless positional is kAllowed. `--help` is always accepted (see
+  /// word, a mistyped `-yaw`) unless positional is kAllowed; a dash and a letter (`-yaw`) is
+  /// refused even then (a negative number is not). `--help` is always accepted (see
   /// help_requested()).
   Options(std::string command, std::string synopsis, std::vector<OptionSpec> specs,
           const std::vector<std::string>& args, Positional positional = Positional::kRejected);

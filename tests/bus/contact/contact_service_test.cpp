@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 #include <memory>
 
@@ -518,6 +519,79 @@ TEST_F(ContactServiceTest, QueryCommandPrintsPatches) {
   out = run_command(cli + " --model onepoint 2>&1", &status);
   EXPECT_NE(status, 0);
   EXPECT_NE(out.find("--y"), std::string::npos) << out;
+}
+
+// `wrc query` outside the models' range: the wheelset 160 mm into the rails (elastic) is
+// IMPOSSIBLE_CONFIGURATION naming the penetration, one lifted 100 mm is NO_CONTACT, a rigid z far
+// from contact is refused; each exits non-zero with the reason. A yaw beyond 0.06 rad and a stray
+// single-dash word are usage errors.
+TEST_F(ContactServiceTest, QueryCommandRefusesOutOfRange) {
+  const std::string cli = std::string(WRC_CLI_PATH) + " query --build-dir " + WRC_TEST_BUILD_DIR;
+  auto service = start_contactd("onepoint", "r");
+  ASSERT_TRUE(wait_ready_while("onepoint", "r", *service));
+  int status = -1;
+  std::string out = run_command(cli + " --model onepoint --y 0.003 --formulation elastic --z 0.3 2>&1", &status);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << out;
+  EXPECT_NE(out.find("IMPOSSIBLE_CONFIGURATION"), std::string::npos) << out;
+  EXPECT_NE(out.find("penetration"), std::string::npos) << out;
+  out = run_command(cli + " --model onepoint --y 0.003 --formulation elastic --z 0.56 2>&1", &status);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << out;
+  EXPECT_NE(out.find("NO_CONTACT"), std::string::npos) << out;
+  EXPECT_NE(out.find("lifted"), std::string::npos) << out;
+  out = run_command(cli + " --model onepoint --y 0.003 --z 0.56 2>&1", &status);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << out;
+  EXPECT_NE(out.find("IMPOSSIBLE_CONFIGURATION"), std::string::npos) << out;
+  EXPECT_NE(out.find("beyond +-25 mm"), std::string::npos) << out;
+  out = run_command(cli + " --model onepoint --y 0.003 --yaw 0.1 2>&1", &status);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << out;
+  EXPECT_NE(out.find("--yaw"), std::string::npos) << out;
+  out = run_command(cli + " --model onepoint --y 0.003 -yaw 0.05 2>&1", &status);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << out;
+  EXPECT_NE(out.find("unexpected argument '-yaw'"), std::string::npos) << out;
+}
+
+// With two READY instances, `wrc query` asks the smallest name even when the other one (beating five
+// times as often) is heard first.
+TEST_F(ContactServiceTest, QueryCommandPicksTheSmallestInstance) {
+  auto later = start_contactd("onepoint", "b");
+  ASSERT_TRUE(wait_ready_while("onepoint", "b", *later));
+  auto smallest = std::make_unique<ChildProcess>(
+      WRC_CONTACTD_PATH, std::vector<std::string>{"--model", "onepoint", "--instance", "a", "--heartbeat-period", "0.5"});
+  ASSERT_TRUE(wait_ready_while("onepoint", "a", *smallest));
+  const std::string cli = std::string(WRC_CLI_PATH) + " query --build-dir " + WRC_TEST_BUILD_DIR;
+  for (int i = 0; i < 3; ++i) {
+    int status = -1;
+    const std::string err = temp_path("pick" + std::to_string(i) + ".err");
+    const std::string out = run_command(cli + " --model onepoint --y 0.001 2>" + err, &status);
+    ASSERT_EQ(status, 0) << out << read_text(err);
+    EXPECT_NE(read_text(err).find("instance a answered"), std::string::npos) << read_text(err);
+  }
+}
+
+// A `wrc query` ended by a signal while the service it started is loading leaves no log behind.
+TEST_F(ContactServiceTest, KilledQueryRemovesItsServiceLog) {
+  for (int sig : {SIGTERM, SIGINT}) {
+    const std::string err = temp_path("killed" + std::to_string(sig) + ".err");
+    ChildProcess query(WRC_CLI_PATH,
+                       {"query", "--build-dir", WRC_TEST_BUILD_DIR, "--model", "interp", "--y", "0.001"}, err);
+    std::string log;
+    ASSERT_TRUE(handle_until(
+        [&] {
+          const std::string text = read_text(err);
+          const auto at = text.find("(log ");
+          const auto end = text.find(')', at);
+          if (at == std::string::npos || end == std::string::npos) return false;
+          log = text.substr(at + 5, end - at - 5);
+          return std::ifstream(log).good();
+        },
+        10.0))
+        << read_text(err);
+    query.signal(sig);
+    int status = 0;
+    ASSERT_TRUE(query.wait(10.0, &status));
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << status;
+    EXPECT_FALSE(std::ifstream(log).good()) << log << " left behind";
+  }
 }
 
 }  // namespace

@@ -621,5 +621,17 @@ TEST(CommandErrors, BadInputFailsWithOneLine) {
   expect_one_line_error(points + " --wheel-side middle", {"--wheel-side", "'middle'"});
 }
 
+// `wrc geometry` refuses a yaw beyond the validated 0.06 rad as `points` does; a single-dash word
+// is an error even for the commands that take positional words (swap, launch).
+TEST(CommandErrors, YawRangeAndSingleDashWords) {
+  const std::string geometry = "geometry --y-from 0 --y-to 0.001 --y-step 0.001";
+  expect_one_line_error(geometry + " --yaw 0.1", {"--yaw", "0.1", "0.06"});
+  expect_one_line_error(geometry + " --yaw -0.07", {"--yaw", "-0.07"});
+  EXPECT_NE(run_ok(geometry + " --yaw 0.06 --format csv").find("y,z,roll"), std::string::npos);
+  expect_one_line_error("points --y 0.001 --yaw 0.1", {"--yaw", "0.1"});
+  expect_one_line_error("swap onepoint -yaw", {"unexpected argument '-yaw'", "options start with --"});
+  expect_one_line_error("launch -yaw 0.05", {"unexpected argument '-yaw'", "options start with --"});
+}
+
 }  // namespace
 }  // namespace wrc::bus::test

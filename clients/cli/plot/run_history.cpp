@@ -7,6 +7,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <lcm/lcm-cpp.hpp>
+
+#include "wrc/wheelset_state_t.hpp"
+
 namespace wrc::cli::plot {
 namespace {
 
@@ -20,9 +24,47 @@ std::vector<std::string> split(const std::string& line) {
   return fields;
 }
 
+// An LCM log (wrc record) starts with the event sync word 0xEDA1DA01.
+bool is_lcm_log(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char magic[4] = {0, 0, 0, 0};
+  in.read(reinterpret_cast<char*>(magic), 4);
+  return in && magic[0] == 0xED && magic[1] == 0xA1 && magic[2] == 0xDA && magic[3] == 0x01;
+}
+
+// The wheelset states of the first run in a log (channel WHEELSET_STATE with any prefix), sorted
+// by time; repeated states (the same time) once.
+RunHistory read_log_history(const std::string& path) {
+  lcm::LogFile log(path, "r");
+  if (!log.good()) throw std::runtime_error("cannot read the LCM log '" + path + "'");
+  const std::string channel = "WHEELSET_STATE";
+  std::map<double, wheelset_state_t> states;
+  std::string run_id;
+  for (const lcm::LogEvent* e = log.readNextEvent(); e != nullptr; e = log.readNextEvent()) {
+    const std::string& name = e->channel;
+    if (name.size() < channel.size() || name.compare(name.size() - channel.size(), channel.size(), channel) != 0)
+      continue;
+    wheelset_state_t m;
+    if (m.decode(e->data, 0, e->datalen) < 0) continue;  // not a state (the trailer is ignored)
+    if (run_id.empty()) run_id = m.run_id;
+    if (m.run_id == run_id) states[m.t] = m;
+  }
+  if (states.empty()) throw std::runtime_error("'" + path + "' holds no wheelset states (WHEELSET_STATE)");
+  RunHistory history;
+  for (const auto& [t, m] : states) {
+    history.t.push_back(t);
+    history.y.push_back(m.y);
+    history.s_right.push_back(m.s_wheel[1]);
+    history.normal_force_right.push_back(m.normal_force[1]);
+    if (history.models.empty() || history.models.back() != m.model) history.models.push_back(m.model);
+  }
+  return history;
+}
+
 }  // namespace
 
 RunHistory read_run_history(const std::string& path) {
+  if (is_lcm_log(path)) return read_log_history(path);
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read the run history '" + path + "'");
   std::string line;

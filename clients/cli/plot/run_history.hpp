@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// A wheelset run's time history as `wrc run --history FILE.csv` writes it (header line
-/// t,y,z,roll,yaw,...,s_left,s_right,...,normal_force_left,normal_force_right,model).
+/// t,y,z,roll,yaw,...,s_left,s_right,...,normal_force_left,normal_force_right,model), or from the
+/// wheelset states in an LCM log that `wrc record` wrote during the run.
 
 #include <string>
 #include <vector>
@@ -17,8 +18,8 @@ struct RunHistory {
   std::vector<std::string> models;         ///< the contact models of the run, in order of appearance
 };
 
-/// Reads a history file; throws std::runtime_error naming the file and the line for a missing
-/// column, a bad number, or no rows.
+/// Reads a history file or an LCM log (the states of its first run); throws std::runtime_error
+/// naming the file and the line for a missing column, a bad number, or no rows.
 RunHistory read_run_history(const std::string& path);
 
 }  // namespace wrc::cli::plot

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "bus/guarded_subscription.hpp"
 #include "bus_fixture.hpp"
 #include "wrc/run_status_t.hpp"
+#include "wrc/wheelset_state_t.hpp"
 
 namespace wrc::bus::test {
 namespace {
@@ -195,6 +197,65 @@ TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
       << s["message"];
   launcher->signal(SIGINT);
   launcher->wait(20.0);
+}
+
+// `wrc record` logs a run; `wrc plot run LOG` draws the same states as the run's --history file
+// (every state of the log equals the CSV row of the same time), and `wrc replay LOG` plays them
+// back onto the bus.
+TEST_F(DynamicsServiceTest, RecordedRunGivesTheHistoryAndReplays) {
+  const std::string log_file = temp_path("run.lcmlog");
+  ChildProcess recorder(WRC_CLI_PATH, {"record", log_file}, temp_path("record.log"));
+  handle_until([] { return false; }, 0.5);
+  std::vector<std::string> args = run_args("spline", 0.3, temp_path("recorded.json"));
+  const std::string csv = temp_path("recorded.csv");
+  args.insert(args.end(), {"--history", csv, "--output-period", "0.005"});
+  const nlohmann::json s = run(args, "recorded");
+  ASSERT_EQ(s["state"], "finished") << s.dump();
+  handle_until([] { return false; }, 0.3);
+  recorder.signal(SIGINT);
+  ASSERT_TRUE(recorder.wait(10.0)) << read_text(temp_path("record.log"));
+  // The CSV rows by time.
+  std::map<double, double> csv_y;
+  {
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    while (std::getline(in, line)) {
+      const double t = std::stod(line.substr(0, line.find(',')));
+      const std::string rest = line.substr(line.find(',') + 1);
+      csv_y[t] = std::stod(rest.substr(0, rest.find(',')));
+    }
+  }
+  ASSERT_EQ(csv_y.size(), 61u);  // 0.3 s at 5 ms, both ends
+  lcm::LogFile log(log_file, "r");
+  ASSERT_TRUE(log.good());
+  std::map<double, double> log_y;
+  for (const lcm::LogEvent* e = log.readNextEvent(); e != nullptr; e = log.readNextEvent()) {
+    if (e->channel != names_.name(channel::kWheelsetState)) continue;
+    wheelset_state_t m;
+    ASSERT_GE(m.decode(e->data, 0, e->datalen), 0);
+    if (m.run_id == run_id(temp_path("recorded.json"))) log_y[m.t] = m.y;
+  }
+  EXPECT_EQ(log_y, csv_y);
+  if (std::system("gnuplot --version >/dev/null 2>&1") == 0) {
+    int status = -1;
+    const std::string png = temp_path("from-log.png");
+    const std::string out = run_command(std::string(WRC_CLI_PATH) + " plot run " + log_file + " --out " + png + " 2>&1",
+                                        &status);
+    EXPECT_EQ(status, 0) << out;
+    EXPECT_GT(read_text(png).size(), 1000u);
+  }
+  // Replayed with the recorded timing, every state arrives again.
+  long replayed = 0;
+  lcm::Subscription* sub = lcm_->subscribeFunction(
+      regex_escape(names_.name(channel::kWheelsetState)),
+      +[](const lcm::ReceiveBuffer*, const std::string&, long* count) { ++*count; }, &replayed);
+  sub->setQueueCapacity(10000);
+  ChildProcess player(WRC_CLI_PATH, {"replay", log_file}, temp_path("replay.log"));
+  handle_until([&] { return player.wait(0.0); }, 60.0);
+  handle_until([] { return false; }, 0.3);
+  lcm_->unsubscribe(sub);
+  EXPECT_GE(replayed, static_cast<long>(log_y.size()));
 }
 
 // The contact service killed with SIGKILL in the middle of a run: the launcher restarts it, the

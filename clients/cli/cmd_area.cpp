@@ -42,10 +42,8 @@ void print_summary(const ContactArea& area, const std::vector<double>& threshold
 
 int run_area(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--y", true, "lateral shift of the wheelset [m] (> 0 towards the left rail)", ""});
-  specs.push_back({"--roll", true, "roll angle [rad] (> 0 raises the left wheel)", "0"});
-  specs.push_back({"--yaw", true, "yaw angle [rad]", "0"});
-  specs.push_back({"--wheel-side", true, "left or right", "left"});
+  for (auto& spec : pose_option_specs()) specs.push_back(spec);
+  specs.push_back(side_option_spec());
   specs.push_back({"--eps0", true, "threshold of the table's last row [m] (rows every 25 um up to it)", "1.5e-4"});
   specs.push_back({"--grid", true, "grid nodes per direction [-]", "61"});
   specs.push_back({"--half-width", true, "half width of the square grid in E [m]", "0.02"});

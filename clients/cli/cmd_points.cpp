@@ -14,12 +14,10 @@ namespace {
 
 int run_points(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--y", true, "lateral shift of the wheelset [m] (> 0 towards the left rail)", ""});
-  specs.push_back({"--roll", true, "roll angle [rad] (> 0 raises the left wheel)", "0"});
-  specs.push_back({"--yaw", true, "yaw angle [rad]", "0"});
+  for (auto& spec : pose_option_specs()) specs.push_back(spec);
   specs.push_back({"--z", true, "height of the wheelset centre above the top of rail [m]; distances are shifted by it",
                    "r0"});
-  specs.push_back({"--wheel-side", true, "left or right", "left"});
+  specs.push_back(side_option_spec());
   specs.push_back({"--format", true, "csv or table", "table"});
   Options opt("points", "--y Y [--roll PHI] [--yaw PSI] [--wheel-side left|right] [options]", specs, args);
   if (opt.help_requested()) {

@@ -6,6 +6,14 @@ WheelsetGeometry geometry_from_options(const Options& options) {
   return make_geometry(geometry_spec_from_options(options));
 }
 
+std::vector<OptionSpec> pose_option_specs() {
+  return {{"--y", true, "lateral shift of the wheelset [m] (> 0 towards the left rail)", ""},
+          {"--roll", true, "roll angle [rad] (> 0 raises the left wheel)", "0"},
+          {"--yaw", true, "yaw angle [rad]", "0"}};
+}
+
+OptionSpec side_option_spec() { return {"--wheel-side", true, "left or right", "left"}; }
+
 WheelsetPose pose_from_options(const Options& options, double z) {
   WheelsetPose pose;
   pose.y = options.required_number("--y", -0.05, 0.05);

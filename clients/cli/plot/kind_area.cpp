@@ -32,10 +32,8 @@ void write_ellipse(std::ofstream& out, double a, double b, double xi, double eta
 
 int run_area(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--y", true, "lateral shift of the wheelset [m] (> 0 towards the left rail)", ""});
-  specs.push_back({"--roll", true, "roll angle [rad] (> 0 raises the left wheel)", "0"});
-  specs.push_back({"--yaw", true, "yaw angle [rad]", "0"});
-  specs.push_back({"--wheel-side", true, "left or right", "left"});
+  for (auto& spec : pose_option_specs()) specs.push_back(spec);
+  specs.push_back(side_option_spec());
   specs.push_back({"--eps0", true, "largest level [m] (levels every 25 um up to it)", "1.5e-4"});
   specs.push_back({"--normal-force", true, "normal force of the Hertz ellipse [N] (0: no ellipse)", "75000"});
   specs.push_back({"--grid", true, "grid nodes per direction [-]", "161"});

@@ -19,7 +19,7 @@ int run_displacement(const std::vector<std::string>& args) {
   specs.push_back({"--y-max", true, "the map covers y in [-Y, Y] [m]", "0.01"});
   specs.push_back({"--roll-max", true, "the map covers roll in [-R, R] [rad]", "0.02"});
   specs.push_back({"--yaw", true, "yaw angle [rad]", "0"});
-  specs.push_back({"--wheel-side", true, "left or right", "left"});
+  specs.push_back(side_option_spec());
   specs.push_back({"--grid", true, "nodes per direction [-]", "81"});
   for (const auto& spec : image_option_specs("displacement.png")) specs.push_back(spec);
   Options opt("plot displacement", "[--y-max Y] [--roll-max R] [--yaw PSI] [--wheel-side left|right] [--grid N] "

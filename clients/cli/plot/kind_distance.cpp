@@ -15,10 +15,8 @@ namespace {
 
 int run_distance(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--y", true, "lateral shift of the wheelset [m] (> 0 towards the left rail)", ""});
-  specs.push_back({"--roll", true, "roll angle [rad] (> 0 raises the left wheel)", "0"});
-  specs.push_back({"--yaw", true, "yaw angle [rad]", "0"});
-  specs.push_back({"--wheel-side", true, "left or right", "left"});
+  for (auto& spec : pose_option_specs()) specs.push_back(spec);
+  specs.push_back(side_option_spec());
   specs.push_back({"--samples", true, "points along C [-]", "4000"});
   for (const auto& spec : image_option_specs("distance.png")) specs.push_back(spec);
   Options opt("plot distance", "--y Y [--roll PHI] [--yaw PSI] [--wheel-side left|right] [--out FILE] [options]",

@@ -346,6 +346,7 @@ void WheelsetSimulation::begin_segment(std::vector<double> y, bool first) {
     yp_ = std::make_unique<SerialVector>(n, ctx_.get());
     id_ = std::make_unique<SerialVector>(n, ctx_.get());
     atol_ = std::make_unique<SerialVector>(n, ctx_.get());
+    output_state_ = std::make_unique<SerialVector>(n, ctx_.get());
   }
   std::copy(y.begin(), y.end(), y_->data());
   std::copy(yp.begin(), yp.end(), yp_->data());
@@ -450,7 +451,7 @@ void WheelsetSimulation::record_step_contact(bool restart) {
 void WheelsetSimulation::emit_outputs_until(double t) {
   const double period = spec_.integrator.output_period;
   const double t_end = spec_.integrator.t_end;
-  SerialVector tmp(y_->size(), ctx_.get());
+  SerialVector& tmp = *output_state_;
   while (next_output_ <= t) {
     check_sundials(IDAGetDky(ida_.mem(), next_output_, 0, tmp.get()), "IDAGetDky");
     if (next_output_ == t) N_VScale(1.0, y_->get(), tmp.get());  // exactly the step's state

@@ -151,6 +151,7 @@ class WheelsetSimulation {
 
   SundialsContext ctx_;
   std::unique_ptr<SerialVector> y_, yp_, id_, atol_;
+  std::unique_ptr<SerialVector> output_state_;  // the state interpolated at an output time
   IdaSolver ida_;
   double t_ = 0;
   double next_output_ = 0;

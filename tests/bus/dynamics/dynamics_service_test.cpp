@@ -205,7 +205,9 @@ TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
 TEST_F(DynamicsServiceTest, RecordedRunGivesTheHistoryAndReplays) {
   const std::string log_file = temp_path("run.lcmlog");
   ChildProcess recorder(WRC_CLI_PATH, {"record", log_file}, temp_path("record.log"));
-  handle_until([] { return false; }, 0.5);
+  // lcm-logger creates its file once it listens (a loaded machine may take a while to start it).
+  ASSERT_TRUE(handle_until([&] { return std::ifstream(log_file).good(); }, 30.0)) << read_text(temp_path("record.log"));
+  handle_until([] { return false; }, 0.3);
   std::vector<std::string> args = run_args("spline", 0.3, temp_path("recorded.json"));
   const std::string csv = temp_path("recorded.csv");
   args.insert(args.end(), {"--history", csv, "--output-period", "0.005"});

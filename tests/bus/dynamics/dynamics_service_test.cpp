@@ -285,11 +285,11 @@ TEST_F(DynamicsServiceTest, KilledContactServiceIsWaitedForAndTheRunEndsTheSame)
   EXPECT_GT(killed["counters"]["contact_timeouts"].get<long>() + killed["counters"]["contact_retries"].get<long>(), 0)
       << "killed pid " << killed_pid << " at t = " << last_status_.t << "\n" << killed["counters"].dump() << "\n"
       << read_text(temp_path("killed.log"));
+  // A new process serves (the killed one's entry may still look alive for a few periods).
   int restarted_pid = 0;
   for (const ServiceStatus& s : monitor_->services(monotonic_seconds()))
-    if (s.last.model == "multipoint" && s.available()) restarted_pid = s.last.pid;
+    if (s.last.model == "multipoint" && s.available() && s.last.pid != killed_pid) restarted_pid = s.last.pid;
   EXPECT_GT(restarted_pid, 0);
-  EXPECT_NE(restarted_pid, killed_pid);
   expect_same_final_state(clean, killed);
   launcher->signal(SIGINT);
   launcher->wait(20.0);

@@ -8,15 +8,17 @@
 
 #include "bus/bus_auth.hpp"
 #include "bus/clock.hpp"
+#include "bus/lcm_url.hpp"
 #include "bus/shutdown_signal.hpp"
 
 namespace wrc::bus {
 
 std::unique_ptr<lcm::LCM> open_lcm(const std::string& url, const std::string& bus_key_option) {
   load_bus_key(bus_key_option);
-  auto lcm = std::make_unique<lcm::LCM>(url);
+  const std::string effective = effective_lcm_url(url);
+  auto lcm = std::make_unique<lcm::LCM>(effective);
   if (!lcm->good()) {
-    throw std::runtime_error("cannot open LCM at '" + (url.empty() ? std::string("default URL") : url) +
+    throw std::runtime_error("cannot open LCM at '" + (effective.empty() ? std::string("default URL") : effective) +
                              "' (is there a multicast route? see `ip route`)");
   }
   return lcm;

@@ -5,6 +5,7 @@
 
 #include "bus/bus_auth.hpp"
 #include "bus/clock.hpp"
+#include "bus/lcm_url.hpp"
 
 namespace wrc::bus::test {
 
@@ -19,7 +20,7 @@ void BusTest::SetUp() {
   std::filesystem::remove(key_path_);
   install_bus_key(read_or_create_bus_key(key_path_));
   ::setenv("WRC_BUS_KEY", key_path_.c_str(), 1);
-  lcm_ = std::make_unique<lcm::LCM>("");
+  lcm_ = std::make_unique<lcm::LCM>(effective_lcm_url(""));
   ASSERT_TRUE(lcm_->good()) << "LCM not usable; run this test through clients/lib/netns.sh";
   monitor_ = std::make_unique<HeartbeatMonitor>(*lcm_, names_.name(channel::kHeartbeat));
   const std::string id = make_client_id("test");

@@ -24,27 +24,54 @@ wrc_missing_packages() {
   echo "${missing[@]}"
 }
 
+# Set-up output: one short line per step on stderr; the package manager's and the compiler's output
+# go to the log file named on the first line, whose end is shown only when a step fails.
+WRC_SETUP_LOG=${WRC_SETUP_LOG:-$WRC_BUILD_DIR/setup.log}
+
+# wrc_step TITLE COMMAND...: runs COMMAND with its output appended to the set-up log; prints
+# "wrc: TITLE ... done (Ns)" or, on a failure, the log's last 60 lines and its path.
+wrc_step() {
+  local title=$1 start=$SECONDS
+  shift
+  printf 'wrc: %s ... ' "$title" >&2
+  if "$@" >>"$WRC_SETUP_LOG" 2>&1; then
+    printf 'done (%ds)\n' $((SECONDS - start)) >&2
+  else
+    printf 'FAILED\n' >&2
+    echo "wrc: the last lines of $WRC_SETUP_LOG:" >&2
+    tail -n 60 "$WRC_SETUP_LOG" | sed 's/^/    /' >&2
+    echo "wrc: $title failed; the whole output is in $WRC_SETUP_LOG" >&2
+    return 1
+  fi
+}
+
+wrc_apt_install() {
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq || { echo "wrc: apt-get update failed"; return 1; }
+  # shellcheck disable=SC2086
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "$@"
+}
+
 wrc_install_packages() {
   local missing
   missing=$(wrc_missing_packages)
   [ -z "$missing" ] && return 0
-  echo "wrc: installing Debian packages: $missing" >&2
-  local sudo=""
-  [ "$(id -u)" -ne 0 ] && sudo="sudo"
-  $sudo apt-get update -qq >&2 || { echo "wrc: apt-get update failed" >&2; return 1; }
   # shellcheck disable=SC2086
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends $missing >&2 \
-    || { echo "wrc: apt-get install failed for: $missing" >&2; return 1; }
+  wrc_step "installing $(wc -w <<<"$missing") Debian packages ($missing)" wrc_apt_install $missing
 }
 
 # wrc_build: configure (once) and build everything into $WRC_BUILD_DIR.
 wrc_build() {
   if [ ! -f "$WRC_BUILD_DIR/CMakeCache.txt" ]; then
-    cmake -S "$WRC_ROOT" -B "$WRC_BUILD_DIR" -DCMAKE_BUILD_TYPE=Release >&2 || return 1
+    wrc_step "configuring (cmake, Release)" cmake -S "$WRC_ROOT" -B "$WRC_BUILD_DIR" -DCMAKE_BUILD_TYPE=Release || return 1
   fi
-  cmake --build "$WRC_BUILD_DIR" -j "$(nproc)" >&2 || return 1
+  wrc_step "building with $(nproc) jobs" cmake --build "$WRC_BUILD_DIR" -j "$(nproc)" || return 1
 }
 
 wrc_setup() {
+  mkdir -p "$(dirname "$WRC_SETUP_LOG")"
+  : >"$WRC_SETUP_LOG"
+  echo "wrc: set-up output goes to $WRC_SETUP_LOG" >&2
   wrc_install_packages && wrc_build
 }

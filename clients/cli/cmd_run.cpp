@@ -67,10 +67,9 @@ std::vector<dynamics::ScheduledSwap> parse_swaps(const std::string& text, double
 }
 
 nlohmann::json summary_json(const run_summary_t& s, const dynamics::RunRequest& request, const std::string& key) {
-  const char* states[] = {"idle", "running", "finished", "failed", "stopped"};
   nlohmann::json j;
   j["run_id"] = s.run_id;
-  j["state"] = s.state >= 0 && s.state <= 4 ? states[s.state] : "unknown";
+  j["state"] = dynamics::run_state_name(s.state);
   j["message"] = s.message;
   j["model"] = s.model;
   j["initial_model"] = request.model;
@@ -313,8 +312,7 @@ int run_run(const std::vector<std::string>& args) {
   out << summary_json(*summary, request, key).dump(2) << "\n";
   if (!out) throw std::runtime_error(summary_path + ": write error");
   if (o.has("--history")) write_history(o.text("--history"), history);
-  const char* state_names[] = {"idle", "running", "finished", "failed", "stopped"};
-  std::cerr << "run: " << request.run_id << " " << state_names[std::clamp<int>(summary->state, 0, 4)] << " at t = "
+  std::cerr << "run: " << request.run_id << " " << dynamics::run_state_name(summary->state) << " at t = "
             << summary->t_end << " s with " << summary->model << ": y = " << summary->y << " m, yaw = " << summary->yaw
             << " rad; " << summary->wall_time << " s wall, " << summary->stats.steps << " steps, "
             << summary->stats.restarts << " restarts"

@@ -1,7 +1,9 @@
 // wrc status: lists the service processes on the bus from their heartbeats, with the first 12 hex
 // digits of the geometry key and of the model hash each computes with ("-" when none) and the
-// messages each dropped (unsigned/bad signature/replayed/malformed). Two processes claiming one
-// model and instance name show as two lines, the newer one DUPLICATE with its reason.
+// messages each dropped (unsigned/bad signature/replayed/malformed), and below it what the process
+// is doing (its heartbeat's activity: the run and its simulated time, the fit and its stage, the
+// query rate, what a service waits for). Two processes claiming one model and instance name show
+// as two lines, the newer one DUPLICATE with its reason.
 
 #include <cmath>
 #include <iomanip>
@@ -48,7 +50,8 @@ int run_status(const std::vector<std::string>& args) {
                                    "first 12 hex digits of its geometry key and model hash (- when none)\n"
                                    "messages it dropped (DROPPED u/s/r/m: unsigned, bad signature, replayed\n"
                                    "or stale, malformed) and its request channel; a DUPLICATE line is followed\n"
-                                   "by why it refuses to serve.\n";
+                                   "by why it refuses to serve. Below each line, what the process is doing\n"
+                                   "(\"doing: run r1: spline, t = 0.84 of 2 s, ...\", \"fitting ...\", a query rate).\n";
     return 0;
   }
   const double duration = options.number("--duration", 1.5, 0.05, 3600.0);
@@ -64,7 +67,8 @@ int run_status(const std::vector<std::string>& args) {
   std::ostringstream out;
   if (format == "csv") {
     out << "model,instance,pid,state,alive,version,uptime,handled,rejected,latency_p95,geometry_key,model_hash,"
-           "dropped_unsigned,dropped_bad_signature,dropped_replayed,dropped_malformed,state_reason,request_channel\n";
+           "dropped_unsigned,dropped_bad_signature,dropped_replayed,dropped_malformed,state_reason,request_channel,"
+           "activity\n";
   } else {
     out << std::left << std::setw(12) << "MODEL" << std::setw(10) << "INSTANCE" << std::setw(8) << "PID"
         << std::setw(10) << "STATE" << std::setw(10) << "UPTIME[s]" << std::setw(10) << "HANDLED"
@@ -85,7 +89,7 @@ int run_status(const std::vector<std::string>& args) {
           << hb.requests_rejected << "," << hb.latency_p95 << "," << short_hash(hb.geometry_key) << ","
           << short_hash(hb.model_hash) << "," << hb.dropped_unsigned << "," << hb.dropped_bad_signature << ","
           << hb.dropped_replayed << "," << hb.dropped_malformed << ",\"" << hb.state_reason << "\","
-          << hb.request_channel << "\n";
+          << hb.request_channel << ",\"" << hb.activity << "\"\n";
     } else {
       std::ostringstream uptime;
       uptime << std::fixed << std::setprecision(1) << hb.uptime;
@@ -96,6 +100,7 @@ int run_status(const std::vector<std::string>& args) {
           << (std::to_string(hb.dropped_unsigned) + "/" + std::to_string(hb.dropped_bad_signature) + "/" +
               std::to_string(hb.dropped_replayed) + "/" + std::to_string(hb.dropped_malformed))
           << hb.request_channel << "\n";
+      if (!hb.activity.empty()) out << "  doing: " << hb.activity << "\n";
       if (!hb.state_reason.empty()) out << "  " << state << ": " << hb.state_reason << "\n";
     }
   }

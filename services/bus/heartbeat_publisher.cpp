@@ -67,6 +67,13 @@ void HeartbeatPublisher::publish_now() {
   hb.model_hash = model_hash_;
   hb.started_utime = started_utime_;
   hb.state_reason = state_reason_;
+  if (activity_source_) {
+    try {
+      hb.activity = activity_source_();
+    } catch (const std::exception& e) {
+      hb.activity = std::string("(activity unknown: ") + e.what() + ")";
+    }
+  }
   const DropCounts drops = drop_counts();
   hb.dropped_unsigned = drops.unsigned_messages();
   hb.dropped_bad_signature = drops.bad_signature();

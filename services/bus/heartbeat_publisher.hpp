@@ -7,6 +7,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <functional>
 #include <string>
 
 #include "bus/header_stamper.hpp"
@@ -43,6 +44,8 @@ class HeartbeatPublisher {
   /// a model with no precomputed data).
   void set_model_hash(std::string hash) { model_hash_ = std::move(hash); }
 
+  /// What the process is doing, asked for at every heartbeat (heartbeat_t::activity; one line).
+  void set_activity_source(std::function<std::string()> source) { activity_source_ = std::move(source); }
   /// Publishes if a period has passed since the last heartbeat; returns true when it did.
   bool tick();
   /// Publishes now and restarts the period.
@@ -76,6 +79,7 @@ class HeartbeatPublisher {
   ServiceLoad load_;
   std::string geometry_key_;
   std::string model_hash_;
+  std::function<std::string()> activity_source_;
   HeaderStamper stamper_;
   std::int64_t published_ = 0;
 };

@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <future>
 #include <iostream>
 #include <memory>
@@ -35,6 +36,7 @@
 #include "bus/service_loop.hpp"
 #include "bus/service_main.hpp"
 #include "bus/service_options.hpp"
+#include "bus/serving_activity.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "contactd/contactd_options.hpp"
 #include "contactd/instance_filter.hpp"
@@ -100,6 +102,9 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   HeartbeatPublisher heartbeat(*lcm, names.name(channel::kHeartbeat),
                                {"wrc-contactd", model_name, instance, request_channel}, service.heartbeat_period);
   heartbeat.set_geometry_key(key);
+  // What the process does, for `wrc status`: each phase below replaces it.
+  std::function<std::string()> activity = [&] { return "starting"; };
+  heartbeat.set_activity_source([&activity] { return activity(); });
   heartbeat.publish_now();  // STARTING
 
   const wrc::ContactModelEntry& entry = wrc::contact_model_entry(model_name);
@@ -118,6 +123,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     // (the interpolated model takes a while); LCM is only used from this thread.
     std::cerr << sender << ": building the " << model_name << " model (wheel " << options.geometry.wheel << ", rail "
               << options.geometry.rail << ", geometry key " << key << ")\n";
+    activity = [&] { return "building the " + model_name + " model"; };
     auto pending = std::async(std::launch::async, build, std::cref(options));
     while (pending.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
       if (ShutdownSignal::requested()) {
@@ -153,6 +159,11 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     }
     splines = std::make_unique<wrc::contactd::SplineModelSource>(*lcm, names, sender, options.geometry,
                                                                  wrc::SplineFitOptions{}, kModelRequestPeriod);
+    activity = [&] {
+      const std::string& p = splines->last_progress();
+      return "waiting for spline model " + splines->model_key().substr(0, 12) + " from wrc-geometryd" +
+             (p.empty() ? std::string() : " (" + p + ")");
+    };
     std::cerr << sender << ": waiting for spline model " << splines->model_key().substr(0, 12)
               << " from wrc-geometryd (geometry key " << key << ")\n";
     while (!model) {
@@ -211,6 +222,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     reply.results.clear();
   });
 
+  activity = ServingActivity(model_name + " queries", [&server] { return server.counters().answered; });
   ServiceLoop loop(*lcm, heartbeat);
   loop.add_load_source(&server);
   if (splines) {

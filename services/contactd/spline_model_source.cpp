@@ -73,7 +73,10 @@ void SplineModelSource::on_model(const spline_model_t& reference, const std::str
 }
 
 void SplineModelSource::on_progress(const progress_t& progress) {
-  if (progress.request_id != request_id_ || progress.message.rfind("rejected: ", 0) != 0) return;
+  if (progress.request_id != request_id_) return;
+  last_progress_ = progress.message;
+  if (progress.total > 0) last_progress_ += ", " + std::to_string(100 * progress.done / progress.total) + " %";
+  if (progress.message.rfind("rejected: ", 0) != 0) return;
   rejections_.reject(progress_subscription_->channel(), "wrc-geometryd rejected the request: " + progress.message);
 }
 

@@ -44,6 +44,9 @@ class SplineModelSource {
   const std::string& model_hash() const { return model_hash_; }
   /// Requests sent so far.
   int requests_sent() const { return requests_sent_; }
+  /// What wrc-geometryd last reported for this service's request (its stage and fraction done;
+  /// empty before any report), for the heartbeat's activity.
+  const std::string& last_progress() const { return last_progress_; }
 
  private:
   void on_model(const spline_model_t& reference, const std::string& channel);
@@ -58,6 +61,7 @@ class SplineModelSource {
   double retry_period_;
   std::string geometry_key_;
   std::string model_key_;
+  std::string last_progress_;
   std::string model_hash_;
   std::int64_t request_id_ = 0;
   int requests_sent_ = 0;

@@ -1,6 +1,9 @@
 #include "dynamicsd/dynamics_service.hpp"
 
+#include <algorithm>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "bus/clock.hpp"
 #include "bus/signed_publish.hpp"
@@ -9,6 +12,7 @@
 #include "core/spline/spline_geometry_fit.hpp"
 #include "dynamicsd/bus_contact.hpp"
 #include "wrc/integrator_stats_t.hpp"
+#include "wrc/progress_t.hpp"
 #include "wrc/run_status_t.hpp"
 #include "wrc/wheelset_state_t.hpp"
 
@@ -191,7 +195,44 @@ void DynamicsService::publish_status(bool force) {
   const double wall = running() ? now - wall_start_ : wall_time_;
   integrator_stats_t stats = to_stats_message(simulation_->counters(), request_.run_id, simulation_->time(), wall);
   publish(bus::channel::kIntegratorStats, stats);
+  publish_progress(wall);
   if (!running() && summary_) publish(bus::channel::kRunSummary, *summary_);
+}
+
+void DynamicsService::publish_progress(double wall) {
+  constexpr long kUnits = 1000;  // progress in thousandths of the simulated interval
+  const double t = simulation_->time();
+  const double t_end = request_.spec.integrator.t_end;
+  const double fraction = t_end > 0.0 ? std::clamp(t / t_end, 0.0, 1.0) : 1.0;
+  progress_t p{};
+  p.request_id = request_id_;
+  p.task = "run " + request_.run_id + " " + simulation_->model();
+  p.done = running() ? static_cast<std::int64_t>(fraction * kUnits) : kUnits;
+  p.total = kUnits;
+  p.elapsed = wall;
+  p.remaining = !running() ? 0.0 : fraction > 0.0 ? wall * (1.0 - fraction) / fraction : -1.0;
+  const RunCounters c = simulation_->counters();
+  std::ostringstream message;
+  message << std::setprecision(4) << "t = " << t << " of " << t_end << " s, " << c.steps << " steps, " << c.restarts
+          << " restarts";
+  if (!running()) message << "; " << run_state_name(status_code(simulation_->state()));
+  p.message = message.str();
+  publish(bus::channel::kProgress, p);
+}
+
+std::string DynamicsService::activity() const {
+  if (!simulation_) return "idle";
+  const RunCounters c = simulation_->counters();
+  std::ostringstream out;
+  out << std::setprecision(4);
+  if (running()) {
+    out << "run " << request_.run_id << ": " << simulation_->model() << ", t = " << simulation_->time() << " of "
+        << request_.spec.integrator.t_end << " s, " << c.steps << " steps, " << c.restarts << " restarts";
+  } else {
+    out << "idle; last run " << request_.run_id << " " << run_state_name(status_code(simulation_->state())) << " at t = "
+        << simulation_->time() << " s after " << wall_time_ << " s";
+  }
+  return out.str();
 }
 
 void DynamicsService::poll(double budget) {

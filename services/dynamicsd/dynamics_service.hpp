@@ -38,6 +38,8 @@ class DynamicsService {
   /// budget seconds of wall time (whole steps) and publishes what is due.
   void poll(double budget);
   bool running() const { return simulation_ && simulation_->state() == RunState::kRunning; }
+  /// What the service is doing, one line for its heartbeat (heartbeat_t::activity).
+  std::string activity() const;
 
  private:
   void on_command(const run_command_t& command);
@@ -47,6 +49,8 @@ class DynamicsService {
   std::shared_ptr<ContactEvaluator> make_contact(const std::string& model);
   void apply_select();
   void publish_status(bool force);
+  /// progress_t of the running run: fraction of simulated time done, wall time, time remaining.
+  void publish_progress(double wall);
   template <class Message>
   void publish(const char* base, Message& message);
 

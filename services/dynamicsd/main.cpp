@@ -28,6 +28,7 @@ int run(const wrc::bus::ServiceOptions& options, const wrc::bus::NoOwnOptions&) 
                                options.heartbeat_period);
   heartbeat.publish_now();  // STARTING
   wrc::dynamics::DynamicsService service(*lcm, names, sender, [&heartbeat] { heartbeat.tick(); });
+  heartbeat.set_activity_source([&service] { return service.activity(); });
   ServiceLoop loop(*lcm, heartbeat);
   // Whole integrator steps for at most a fifth of a heartbeat period per turn, so that heartbeats
   // and commands keep flowing during a run.

@@ -34,6 +34,17 @@ void require_finite(const char* name, double v) {
 
 }  // namespace
 
+const char* run_state_name(std::int8_t state) {
+  switch (state) {
+    case run_status_t::IDLE: return "idle";
+    case run_status_t::RUNNING: return "running";
+    case run_status_t::FINISHED: return "finished";
+    case run_status_t::FAILED: return "failed";
+    case run_status_t::STOPPED: return "stopped";
+  }
+  return "unknown";
+}
+
 run_command_t to_message(const RunRequest& r) {
   run_command_t m{};
   m.run_id = r.run_id;

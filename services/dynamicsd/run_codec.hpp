@@ -37,6 +37,10 @@ struct RunRequest {
 };
 
 /// The START command of request (header, request_id are the caller's).
+/// Name of a run_status_t state code, as the summary JSON and the logs write it ("idle",
+/// "running", "finished", "failed", "stopped"; "unknown" for any other code).
+const char* run_state_name(std::int8_t state);
+
 run_command_t to_message(const RunRequest& request);
 /// @throws std::invalid_argument naming the first invalid field (unknown model, NaN, range).
 RunRequest from_message(const run_command_t& command);

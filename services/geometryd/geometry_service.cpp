@@ -141,7 +141,7 @@ void GeometryService::on_request(const geometry_request_t& request, const bus::R
   }
 
   const std::int64_t id = next_job_++;
-  Job job{key, task_name(spec, options), {waiter}};
+  Job job{key, task_name(spec, options), {waiter}, "", 0, 0};
   std::cerr << sender_ << ": request " << request.request_id << ": fitting model " << short_key << " (" << job.task
             << (request.recompute ? ", recompute" : "") << ")\n";
   jobs_.emplace(id, std::move(job));
@@ -155,6 +155,9 @@ void GeometryService::poll() {
     if (event.kind == FitEvent::Kind::kProgress) {
       const auto it = jobs_.find(event.job);
       if (it == jobs_.end()) continue;
+      it->second.stage = event.stage;
+      it->second.done = event.done;
+      it->second.total = event.total;
       for (const Waiter& w : it->second.waiters)
         publish_progress(w.request_id, it->second.task, event.done, event.total, event.elapsed, event.remaining,
                          event.stage);
@@ -162,6 +165,22 @@ void GeometryService::poll() {
       finish(event);
     }
   }
+}
+
+std::string GeometryService::activity() const {
+  if (jobs_.empty()) {
+    return "idle; " + std::to_string(counters_.fits) + " models fitted, " + std::to_string(counters_.from_cache) +
+           " answered from the cache";
+  }
+  // Jobs run in the order of their ids: the first one is the worker's.
+  const Job& running = jobs_.begin()->second;
+  std::string out = "fitting " + running.task;
+  if (running.total > 0) {
+    out += " (" + (running.stage.empty() ? std::string("started") : running.stage) + ", " +
+           std::to_string(100 * running.done / running.total) + " %)";
+  }
+  if (jobs_.size() > 1) out += ", " + std::to_string(jobs_.size() - 1) + " more queued";
+  return out;
 }
 
 void GeometryService::finish(const FitEvent& event) {

@@ -71,6 +71,9 @@ class GeometryService : public bus::LoadSource {
   std::int64_t rejected() const { return rejections_.count() + counters_.dropped; }
   /// Jobs queued or running.
   std::size_t pending_jobs() const { return jobs_.size(); }
+  /// What the service is doing, one line for its heartbeat (heartbeat_t::activity): the fit
+  /// running, its stage and fraction done, and how many wait behind it; or idle with its counts.
+  std::string activity() const;
 
   void add_load(bus::ServiceLoad& load) const override;
   double take_busy_time() override;
@@ -88,6 +91,8 @@ class GeometryService : public bus::LoadSource {
     std::string model_key;
     std::string task;  // progress_t.task
     std::vector<Waiter> waiters;
+    std::string stage;       // last progress report: stage, units done of total (0 = none yet)
+    long done = 0, total = 0;
   };
 
   void on_request(const geometry_request_t& request, const bus::ReceivedMessage& info);

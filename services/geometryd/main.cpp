@@ -46,6 +46,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::geometryd::Geometryd
                                service.heartbeat_period);
   heartbeat.publish_now();  // STARTING
 
+  heartbeat.set_activity_source([&server] { return server.activity(); });
   ServiceLoop loop(*lcm, heartbeat);
   loop.add_load_source(&server);
   loop.set_idle_hook([&server] { server.poll(); });

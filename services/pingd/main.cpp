@@ -13,6 +13,7 @@
 #include "bus/line_atomic_stderr.hpp"
 #include "bus/request_server.hpp"
 #include "bus/service_loop.hpp"
+#include "bus/serving_activity.hpp"
 #include "bus/service_options.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "wrc/ping_reply_t.hpp"
@@ -61,6 +62,7 @@ int run(const wrc::bus::ServiceOptions& options) {
     reply.num_payload = 0;
   });
 
+  heartbeat.set_activity_source(ServingActivity("pings", [&server] { return server.counters().answered; }));
   ServiceLoop loop(*lcm, heartbeat);
   loop.add_load_source(&server);
   std::cerr << sender << ": serving " << request_channel << "\n";

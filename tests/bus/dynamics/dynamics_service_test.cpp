@@ -185,6 +185,12 @@ TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
   ChildProcess cli(WRC_CLI_PATH, args, temp_path("refused.log"));
   ASSERT_TRUE(wait_running_past(run_id(temp_path("refused.json")), 0.5, 60.0)) << read_text(temp_path("refused.log"));
   int status = -1;
+  // `wrc status` says what each service is doing: the run with its simulated time, the query rate.
+  const std::string listing = run_command(std::string(WRC_CLI_PATH) + " status --duration 1.2 2>&1", &status);
+  ASSERT_EQ(status, 0) << listing;
+  EXPECT_NE(listing.find("doing: run " + run_id(temp_path("refused.json")) + ": multipoint, t = "), std::string::npos)
+      << listing;
+  EXPECT_NE(listing.find("doing: serving multipoint queries, "), std::string::npos) << listing;
   const std::string out = run_command(std::string(WRC_CLI_PATH) + " swap spline 2>&1", &status);
   ASSERT_EQ(status, 0) << out;
   ASSERT_TRUE(handle_until([&] { return cli.wait(0.0); }, kRunDeadline)) << read_text(temp_path("refused.log"));

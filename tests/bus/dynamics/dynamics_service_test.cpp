@@ -19,6 +19,7 @@
 #include "bus/clock.hpp"
 #include "bus/guarded_subscription.hpp"
 #include "bus_fixture.hpp"
+#include "wrc/progress_t.hpp"
 #include "wrc/run_status_t.hpp"
 #include "wrc/wheelset_state_t.hpp"
 
@@ -181,7 +182,12 @@ TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
   auto launcher = launch({"contact-multipoint", "dynamics"}, log);
   for (const char* model : {"multipoint", "dynamicsd"})
     ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
-  const std::vector<std::string> args = run_args("multipoint", 10.0, temp_path("refused.json"));
+  // Long enough (about 10 s of wall time) for `wrc status` and `wrc swap` to act while it runs.
+  const std::vector<std::string> args = run_args("multipoint", 25.0, temp_path("refused.json"));
+  // The run's progress_t: fraction of the simulated interval, with the time remaining once it moves.
+  std::vector<progress_t> progress;
+  GuardedSubscription<progress_t> progress_sub(*lcm_, names_.name(channel::kProgress), "test progress",
+                                               [&](const progress_t& p, const ReceivedMessage&) { progress.push_back(p); });
   ChildProcess cli(WRC_CLI_PATH, args, temp_path("refused.log"));
   ASSERT_TRUE(wait_running_past(run_id(temp_path("refused.json")), 0.5, 60.0)) << read_text(temp_path("refused.log"));
   int status = -1;
@@ -198,6 +204,23 @@ TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
   EXPECT_EQ(s["state"], "finished") << s.dump();
   EXPECT_EQ(s["model"], "multipoint");
   EXPECT_TRUE(s["swaps"].empty());
+  handle_until([] { return false; }, 0.6);  // the last progress report, published as the run ends
+  const std::string task = "run " + run_id(temp_path("refused.json")) + " multipoint";
+  long moving = 0;
+  bool done = false;
+  for (const progress_t& p : progress) {
+    if (p.task != task) continue;
+    EXPECT_EQ(p.total, 1000);
+    EXPECT_GE(p.done, 0);
+    EXPECT_LE(p.done, p.total);
+    if (p.done > 0 && p.done < p.total) {
+      ++moving;
+      EXPECT_GT(p.remaining, 0.0) << p.message;
+    }
+    done = done || (p.done == p.total && p.remaining == 0.0);
+  }
+  EXPECT_GE(moving, 2) << "progress reports while the run moved";
+  EXPECT_TRUE(done) << "a final progress report at 100 %";
   EXPECT_NE(s["message"].get<std::string>().find("swap to spline refused, keeping multipoint: no spline service"),
             std::string::npos)
       << s["message"];

@@ -229,8 +229,8 @@ TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
 }
 
 // `wrc record` logs a run; `wrc plot run LOG` draws the same states as the run's --history file
-// (every state of the log equals the CSV row of the same time), and `wrc replay LOG` plays them
-// back onto the bus.
+// (every state of the log equals the CSV row of the same time, and the two pictures are the same),
+// and `wrc replay LOG` plays them back onto the bus.
 TEST_F(DynamicsServiceTest, RecordedRunGivesTheHistoryAndReplays) {
   const std::string log_file = temp_path("run.lcmlog");
   ChildProcess recorder(WRC_CLI_PATH, {"record", log_file}, temp_path("record.log"));
@@ -286,6 +286,19 @@ TEST_F(DynamicsServiceTest, RecordedRunGivesTheHistoryAndReplays) {
                                         &status);
     EXPECT_EQ(status, 0) << out;
     EXPECT_GT(read_text(png).size(), 1000u);
+    // The same picture as from the live run's history (SVG: no timestamps in it).
+    const std::string svg_log = temp_path("from-log.svg"), svg_csv = temp_path("from-csv.svg");
+    for (const auto& [input, svg] : {std::pair{log_file, svg_log}, std::pair{csv, svg_csv}}) {
+      const std::string plotted =
+          run_command(std::string(WRC_CLI_PATH) + " plot run " + input + " --out " + svg + " 2>&1", &status);
+      EXPECT_EQ(status, 0) << plotted;
+    }
+    // The labels name the input file; everything else (every curve's points) must be equal.
+    std::string from_log = read_text(svg_log);
+    EXPECT_GT(from_log.size(), 1000u);
+    for (std::size_t at = from_log.find("run.lcmlog"); at != std::string::npos; at = from_log.find("run.lcmlog", at))
+      from_log.replace(at, std::string("run.lcmlog").size(), "recorded.csv");
+    EXPECT_EQ(from_log, read_text(svg_csv)) << "the log's plot differs from the history's";
   }
   // Replayed with the recorded timing, every state arrives again (only the state channel is played:
   // the contact traffic in between is what a loaded receiver's socket buffer would drop).

@@ -1,5 +1,6 @@
-// wrc fit: the precomputation of the spline contact model from the command line (in-process, no
-// bus), with a progress bar, and its accuracy report against the exact geometry.
+// wrc fit: the precomputation of the spline contact model from the command line, with a progress
+// bar: in this process with its accuracy report against the exact geometry, or on wrc-geometryd
+// (--service, cli/fit_on_service.hpp).
 
 #include <cmath>
 #include <cstdio>
@@ -10,10 +11,12 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command.hpp"
+#include "cli/fit_on_service.hpp"
 #include "cli/fit_options.hpp"
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/progress_bar.hpp"
+#include "cli/service_starter.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/spline/spline_geometry_fit.hpp"
 #include "core/spline/spline_validation.hpp"
@@ -130,19 +133,29 @@ int run_fit(const std::vector<std::string>& args) {
   for (OptionSpec& s : fit_option_specs()) specs.push_back(std::move(s));
   specs.push_back({"--report", true, "accuracy report to write (JSON)", ""});
   specs.push_back({"--no-validation", false, "skip the validation against the exact geometry", ""});
-  Options opt("fit", "[profile and track options] [--knots NYxNRxNPSI] [--degree D] [--box ...] --report FILE.json",
+  for (OptionSpec& s : fit_on_service_option_specs()) specs.push_back(std::move(s));
+  for (OptionSpec& s : service_start_option_specs()) specs.push_back(std::move(s));
+  Options opt("fit", "[profile and track options] [--knots NYxNRxNPSI] [--degree D] [--box ...] (--report FILE.json | --service)",
               specs, args);
   if (opt.help_requested()) {
     std::cout << opt.help()
               << "\nFits Arnold's spline contact model (weighted least-squares tensor-product splines over\n"
                  "(y, roll, yaw), per wheel) to samples of the exact geometry and reports, per fitted quantity,\n"
                  "max_error and rms_error [SI] against the exact geometry at points that are not samples, in\n"
-                 "the continuous region (the report says what is left out around each jump).\n";
+                 "the continuous region (the report says what is left out around each jump).\n"
+                 "With --service, wrc-geometryd precomputes the model (the one every spline contact service of\n"
+                 "this geometry and these options gets from its cache) and the bar follows its progress; no report.\n";
     return 0;
   }
-  const std::string report_path = opt.required_text("--report");
   const SplineFitOptions options = fit_options_from(opt);
   const GeometrySpec spec = geometry_spec_from_options(opt);
+  if (opt.has("--service")) {
+    if (opt.has("--report")) throw UsageError("--report is for the fit in this process, not with --service");
+    return fit_on_service(opt, spec, options);
+  }
+  for (const char* only_service : {"--recompute", "--wait"})
+    if (opt.has(only_service)) throw UsageError(std::string(only_service) + " needs --service");
+  const std::string report_path = opt.required_text("--report");
   const WheelsetGeometry geometry = make_geometry(spec);
 
   ProgressBar fit_bar("fit");

@@ -180,12 +180,8 @@ int run_query(const std::vector<std::string>& args) {
       {"--timeout", true, "wait for the reply per attempt [s]", "1"},
       {"--retries", true, "re-sends after a timeout", "3"},
       {"--instance", true, "address this instance (must be running)", "from the heartbeats"},
-      {"--start-timeout", true, "wait for a started service to be READY [s]", "300"},
-      {"--channel-prefix", true, "channel prefix of the simulation", "none"},
-      {"--lcm-url", true, "LCM URL", "LCM's default"},
-      {"--bus-key", true, "bus key file (created when missing)", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
-      {"--build-dir", true, "build tree holding wrc-contactd", "this build"},
       {"--format", true, "csv or table", "csv"}};
+  for (auto& spec : service_start_option_specs()) specs.push_back(spec);
   for (auto& spec : profile_option_specs()) specs.push_back(spec);
   const Options o("query", "--model M --y Y [options]", specs, args);
   if (o.help_requested()) {

@@ -94,11 +94,11 @@ int run_record(const std::vector<std::string>& args) {
                  "`wrc plot run FILE` draws a run's time histories from it; `wrc replay FILE` plays it back.\n";
     return 0;
   }
-  if (o.positional().size() != 1) throw UsageError("record: give exactly one FILE");
+  if (o.positional().size() != 1) throw UsageError("give exactly one FILE");
   const std::string file = o.positional().front();
   struct stat existing {};
   if (!o.has("--force") && ::stat(file.c_str(), &existing) == 0)
-    throw UsageError("record: " + file + " exists (--force overwrites it)");
+    throw UsageError(file + " exists (--force overwrites it)");
   const std::string pattern =
       o.has("--channel-prefix") ? bus::regex_escape(o.text("--channel-prefix") + ".") + ".*" : std::string(".*");
   lcm::LCM lcm(bus::effective_lcm_url(o.has("--lcm-url") ? o.text("--lcm-url") : std::string()));
@@ -121,7 +121,7 @@ int run_replay(const std::vector<std::string>& args) {
                  "(scaled by --speed), so that `wrc spy` shows it as if live.\n";
     return 0;
   }
-  if (o.positional().size() != 1) throw UsageError("replay: give exactly one FILE");
+  if (o.positional().size() != 1) throw UsageError("give exactly one FILE");
   std::vector<std::string> words{"--speed=" + std::to_string(o.number("--speed", 1.0, 1e-3, 1e3))};
   if (o.has("--channels")) words.push_back("--regexp=" + o.text("--channels"));
   if (o.has("--lcm-url")) words.push_back("--lcm-url=" + o.text("--lcm-url"));

@@ -161,11 +161,8 @@ int run_run(const std::vector<std::string>& args) {
       {"--timeout", true, "contact query timeout per attempt [s]", "0.2"},
       {"--retries", true, "contact query re-sends per round", "3"},
       {"--contact-wait", true, "longest wait for a (restarted) contact service [s]", "10"},
-      {"--start-timeout", true, "wait for a started service to be READY [s]", "300"},
-      {"--channel-prefix", true, "channel prefix of the simulation", "none"},
-      {"--lcm-url", true, "LCM URL", "LCM's default"},
-      {"--bus-key", true, "bus key file (created when missing)", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
-      {"--build-dir", true, "build tree holding the services", "this build"}};
+  };
+  for (auto& spec : service_start_option_specs()) specs.push_back(spec);
   for (auto& spec : profile_option_specs()) specs.push_back(spec);
   const Options o("run", "--model M --summary FILE.json [options]", specs, args);
   if (o.help_requested()) {
@@ -213,13 +210,7 @@ int run_run(const std::vector<std::string>& args) {
   bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
   handle_until(*lcm, bus::monotonic_seconds() + kDiscoveryTime, [] { return false; });
 
-  StartContext context;
-  context.command = "run";
-  context.build_dir = o.text("--build-dir", bus::build_dir());
-  context.instance = "r" + std::to_string(::getpid());
-  if (o.has("--channel-prefix")) context.bus_args.insert(context.bus_args.end(), {"--channel-prefix", o.text("--channel-prefix")});
-  if (o.has("--lcm-url")) context.bus_args.insert(context.bus_args.end(), {"--lcm-url", o.text("--lcm-url")});
-  context.start_timeout = o.number("--start-timeout", 300.0, 0.1, 3600.0);
+  const StartContext context = start_context_from(o, "run", "r" + std::to_string(::getpid()));
   std::vector<std::unique_ptr<StartedService>> started;
   auto keep = [&](std::unique_ptr<StartedService> s) {
     if (s) started.push_back(std::move(s));

@@ -103,6 +103,25 @@ std::optional<bus::ServiceStatus> discover_service(lcm::LCM& lcm, const bus::Hea
   return pick_service(monitor, model, geometry_key, instance, true);
 }
 
+std::vector<OptionSpec> service_start_option_specs() {
+  return {{"--start-timeout", true, "wait for a started service to be READY [s]", "300"},
+          {"--channel-prefix", true, "channel prefix of the simulation", "none"},
+          {"--lcm-url", true, "LCM URL", "LCM's default"},
+          {"--bus-key", true, "bus key file (created when missing)", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
+          {"--build-dir", true, "build tree holding the services", "this build"}};
+}
+
+StartContext start_context_from(const Options& o, const std::string& command, const std::string& instance) {
+  StartContext context;
+  context.command = command;
+  context.build_dir = o.text("--build-dir", bus::build_dir());
+  context.instance = instance;
+  if (o.has("--channel-prefix")) context.bus_args.insert(context.bus_args.end(), {"--channel-prefix", o.text("--channel-prefix")});
+  if (o.has("--lcm-url")) context.bus_args.insert(context.bus_args.end(), {"--lcm-url", o.text("--lcm-url")});
+  context.start_timeout = o.number("--start-timeout", 300.0, 0.1, 3600.0);
+  return context;
+}
+
 std::unique_ptr<StartedService> ensure_service(lcm::LCM& lcm, const bus::HeartbeatMonitor& monitor,
                                                const StartContext& context, const std::string& model,
                                                const std::string& geometry_key, const std::string& executable,

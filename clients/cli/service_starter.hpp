@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bus/heartbeat_monitor.hpp"
+#include "cli/options.hpp"
 
 namespace wrc::cli {
 
@@ -73,6 +74,14 @@ struct StartContext {
   std::vector<std::string> bus_args;  ///< --channel-prefix / --lcm-url passed on
   double start_timeout = 300.0;       ///< [s] wait for READY
 };
+
+/// The options of a command that may start services (one list for run, query and fit --service):
+/// --start-timeout, --channel-prefix, --lcm-url, --bus-key, --build-dir.
+std::vector<OptionSpec> service_start_option_specs();
+
+/// The StartContext those options give: command names the log lines and files, instance is the
+/// name given to the services it starts.
+StartContext start_context_from(const Options& options, const std::string& command, const std::string& instance);
 
 /// A READY service of model (heartbeat model name) with geometry_key, waiting for a starting one;
 /// when none, starts executable with args (plus instance, heartbeat period and bus_args), waits

@@ -174,7 +174,7 @@ std::string GeometryService::activity() const {
   }
   // Jobs run in the order of their ids: the first one is the worker's.
   const Job& running = jobs_.begin()->second;
-  std::string out = "fitting " + running.task;
+  std::string out = running.task;
   if (running.total > 0) {
     out += " (" + (running.stage.empty() ? std::string("started") : running.stage) + ", " +
            std::to_string(100 * running.done / running.total) + " %)";

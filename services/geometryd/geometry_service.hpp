@@ -72,7 +72,8 @@ class GeometryService : public bus::LoadSource {
   /// Jobs queued or running.
   std::size_t pending_jobs() const { return jobs_.size(); }
   /// What the service is doing, one line for its heartbeat (heartbeat_t::activity): the fit
-  /// running, its stage and fraction done, and how many wait behind it; or idle with its counts.
+  /// running (its progress_t task), its stage and fraction done, and how many wait behind it; or
+  /// idle with its counts.
   std::string activity() const;
 
   void add_load(bus::ServiceLoad& load) const override;

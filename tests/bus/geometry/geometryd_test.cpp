@@ -311,6 +311,14 @@ TEST_F(GeometryServiceTest, HeartbeatsKeepComingDuringADefaultFit) {
     }
   }
   EXPECT_LT(max_gap, 2 * kPeriod) << "heartbeat gap during the fit";
+  // What the heartbeats say it is doing: the fit with its stage while it runs, idle afterwards.
+  int fitting = 0;
+  for (const Beat& b : beats_)
+    if (b.at > t0 + kPeriod && b.at < t1 - kPeriod)
+      fitting += b.message.activity.rfind("spline fit S1002/UIC60 10x2x2 (", 0) == 0 ? 1 : 0;
+  EXPECT_GE(fitting, 1) << "no heartbeat named the running fit";
+  ASSERT_FALSE(beats_.empty());
+  EXPECT_EQ(beats_.back().message.activity, "idle; 1 models fitted, 0 answered from the cache");
   EXPECT_GE(during, static_cast<int>((t1 - t0) / kPeriod) - 1) << "fit took " << (t1 - t0) << " s";
 
   const auto& progress = progress_[21];
@@ -344,6 +352,29 @@ TEST_F(GeometryServiceTest, HeartbeatsKeepComingDuringADefaultFit) {
   std::printf("%s\n", text.substr(text.rfind('\n', fitted_line) + 1, text.find('\n', fitted_line) - text.rfind('\n', fitted_line) - 1).c_str());
   std::printf("default model: answered after %.3f s (%s, %lld B on disk), heartbeat max gap %.3f s\n", t1 - t0,
               first->file_path.empty() ? "inline" : "file", static_cast<long long>(first->file_size), max_gap);
+}
+
+// `wrc fit --service`: the front end asks the running service, follows its progress (the bar,
+// one line per 10 % off a terminal) and names the model; the service's cache keeps it and answers
+// the same command again from there.
+TEST_F(GeometryServiceTest, FitCommandPrecomputesOnTheService) {
+  start_service();
+  const SplineFitOptions options = small_options();
+  const std::string key = geometryd::model_key(geometry_key(GeometrySpec{}), options);
+  const std::string command = std::string(WRC_CLI_PATH) +
+                              " fit --service --knots 4x1x1 --degree 3x1x1 --samples 3x3 --sample-step 5e-4 2>&1";
+  int status = -1;
+  const std::string first = run_command(command, &status);
+  ASSERT_EQ(status, 0) << first;
+  EXPECT_NE(first.find("spline model " + key.substr(0, 12) + ", model hash "), std::string::npos) << first;
+  EXPECT_NE(first.find("fit on wrc-geometryd: done in "), std::string::npos) << first;
+  EXPECT_NE(first.find(" %"), std::string::npos) << "no progress line:\n" << first;
+  const std::string file = (fs::path(cache_dir_) / (key + ".splinemodel")).string();
+  EXPECT_NE(first.find("model inline in the answer ("), std::string::npos) << "a small model travels inline\n" << first;
+  EXPECT_TRUE(fs::exists(file)) << "the cache keeps every model";
+  const std::string again = run_command(command, &status);
+  ASSERT_EQ(status, 0) << again;
+  EXPECT_NE(read_text(log_).find("from the cache"), std::string::npos) << read_text(log_);
 }
 
 // SIGTERM during a fit: a DRAINING heartbeat and a clean exit at once, without waiting for the fit.
@@ -450,7 +481,7 @@ TEST_F(GeometryServiceTest, LaunchStartsItAndStatusListsIt) {
   EXPECT_EQ(status, 0);
   EXPECT_NE(out.find("geometryd,0,"), std::string::npos) << out;
   EXPECT_NE(out.find(",READY,1,"), std::string::npos) << out;
-  EXPECT_NE(out.find("," + names_.name(channel::kGeometryRequest) + "\n"), std::string::npos) << out;
+  EXPECT_NE(out.find("," + names_.name(channel::kGeometryRequest) + ",\"idle; "), std::string::npos) << out;
   EXPECT_TRUE(fs::is_directory(cache_dir_)) << "the service did not use $WRC_CACHE_DIR";
   launcher.signal(SIGINT);
   ASSERT_TRUE(launcher.wait(10.0, &status)) << read_text(log);

@@ -1,0 +1,111 @@
+#include "cli/fit_on_service.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "bus/bus_auth.hpp"
+#include "bus/channels.hpp"
+#include "bus/clock.hpp"
+#include "bus/guarded_subscription.hpp"
+#include "bus/header_stamper.hpp"
+#include "bus/heartbeat_monitor.hpp"
+#include "bus/service_loop.hpp"
+#include "bus/shutdown_signal.hpp"
+#include "bus/signed_publish.hpp"
+#include "cli/progress_bar.hpp"
+#include "cli/service_starter.hpp"
+#include "core/identity/geometry_key.hpp"
+#include "geometryd/spline_model_codec.hpp"
+#include "wrc/geometry_request_t.hpp"
+#include "wrc/progress_t.hpp"
+#include "wrc/spline_model_t.hpp"
+
+namespace wrc::cli {
+namespace {
+
+constexpr double kDiscoveryTime = 1.5;    // [s] listen for a running wrc-geometryd before starting one
+constexpr double kResendPeriod = 2.0;     // [s] re-send the request while nothing at all is heard of it
+constexpr std::size_t kKeyDigits = 12;    // hex digits of a key shown
+
+}  // namespace
+
+std::vector<OptionSpec> fit_on_service_option_specs() {
+  return {{"--service", false, "precompute on wrc-geometryd (started when none runs) instead of in this process", ""},
+          {"--recompute", false, "with --service: fit again even when the model is in the service's cache", ""},
+          {"--wait", true, "with --service: longest wait for the model [s]", "600"}};
+}
+
+int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOptions& fit) {
+  const double wait = o.number("--wait", 600.0, 1.0, 86400.0);
+  const std::string key = geometry_key(spec);
+  const std::string model_key = geometryd::model_key(key, fit);
+  const bus::ChannelNames names(o.text("--channel-prefix"));
+  bus::prepare_bus_key(o.text("--bus-key"), "fit");  // a service it starts uses this key
+  bus::ShutdownSignal::install();
+  auto lcm = bus::open_lcm(o.text("--lcm-url"));
+  bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
+  handle_until(*lcm, bus::monotonic_seconds() + kDiscoveryTime, [] { return false; });
+  std::unique_ptr<StartedService> started = ensure_service(
+      *lcm, monitor, start_context_from(o, "fit", "f" + std::to_string(::getpid())), "geometryd", "", "wrc-geometryd", {});
+
+  const std::int64_t request_id = static_cast<std::int64_t>(bus::wall_utime());
+  ProgressBar bar("fit on wrc-geometryd");
+  std::optional<spline_model_t> answer;
+  std::string failure;
+  bool heard = false;
+  bus::GuardedSubscription<progress_t> progress(
+      *lcm, names.name(bus::channel::kProgress), "fit progress", [&](const progress_t& p, const bus::ReceivedMessage&) {
+        if (p.request_id != request_id) return;
+        heard = true;
+        if (p.message.rfind("rejected: ", 0) == 0 || p.message.rfind("failed: ", 0) == 0) failure = p.message;
+        else bar.update(p.done, p.total, p.message);
+      });
+  bus::GuardedSubscription<spline_model_t> models(
+      *lcm, names.name(bus::channel::kSplineModel), "fit answer", [&](const spline_model_t& m, const bus::ReceivedMessage&) {
+        if (m.request_id == request_id && m.model_key == model_key) answer = m;
+      }, 100, 1 << 20);
+
+  geometry_request_t request{};
+  bus::HeaderStamper stamper(bus::sender_name("wrc-fit", std::to_string(::getpid())));
+  request.request_id = request_id;
+  request.track = geometryd::to_message(spec);
+  request.fit = geometryd::to_message(fit);
+  request.recompute = o.has("--recompute");
+  std::cerr << "fit: asking wrc-geometryd for spline model " << model_key.substr(0, kKeyDigits) << " (geometry key "
+            << key.substr(0, kKeyDigits) << (request.recompute ? ", recompute" : "") << ")\n";
+  const double deadline = bus::monotonic_seconds() + wait;
+  double next_send = 0.0;
+  while (!answer && failure.empty()) {
+    const double now = bus::monotonic_seconds();
+    if (bus::ShutdownSignal::requested()) throw std::runtime_error("interrupted while waiting for the model");
+    if (now > deadline)
+      throw std::runtime_error("no spline model from wrc-geometryd within --wait " + std::to_string(wait) + " s");
+    // A request lost on the way is sent again; once the service answers with progress, it is working on it.
+    if (!heard && now >= next_send) {
+      stamper.stamp(request.header);
+      bus::publish_signed(*lcm, names.name(bus::channel::kGeometryRequest), request);
+      next_send = now + kResendPeriod;
+    }
+    if (lcm->handleTimeout(100) < 0) throw std::runtime_error("LCM failed while waiting for the model");
+  }
+  bar.finish();
+  if (!failure.empty()) throw std::runtime_error("wrc-geometryd: " + failure);
+  const spline_model_t& m = *answer;
+  std::printf("spline model %s, model hash %s\n", m.model_key.substr(0, kKeyDigits).c_str(),
+              m.model_hash.substr(0, kKeyDigits).c_str());
+  std::printf("answered in %.3f s; the model's precomputation took %.3f s (sampling %.3f s, fitting %.3f s)\n",
+              bus::monotonic_seconds() - (deadline - wait), m.sampling_seconds + m.fitting_seconds, m.sampling_seconds,
+              m.fitting_seconds);
+  if (m.file_path.empty()) std::printf("model inline in the answer (%d B)\n", m.getEncodedSize());
+  else std::printf("model file %s (%lld B, SHA-256 checked by its readers)\n", m.file_path.c_str(), static_cast<long long>(m.file_size));
+  if (started) started->stop_and_forget();
+  return 0;
+}
+
+}  // namespace wrc::cli

@@ -20,7 +20,8 @@ std::string mm(double metres) {
 }  // namespace
 
 void check_contact_range(const ContactQuery& query, const ContactResult& result) {
-  const std::string at = " at " + describe_pose(query.pose);
+  // The pose is written out only for an error: formatting it costs more than the checks.
+  const auto at = [&query] { return " at " + describe_pose(query.pose); };
   if (query.formulation == ContactFormulation::kRigid) {
     // The wheel nearer to contact: a roll may lift the other one (its load is the caller's).
     const std::size_t w = std::fabs(result.wheels[0].gap) <= std::fabs(result.wheels[1].gap) ? 0 : 1;
@@ -29,20 +30,20 @@ void check_contact_range(const ContactQuery& query, const ContactResult& result)
       throw ContactConfigurationError(std::string("rigid contact: the ") + wheel_name(w) + " wheel, the nearer to " +
                                       "contact, has a gap of " + mm(gap) + ", beyond +-" + mm(kMaxRigidGap) + " (" +
                                       (gap > 0 ? "lifted off" : "sunk into") +
-                                      " its rail: z is not a contact height)" + at);
+                                      " its rail: z is not a contact height)" + at());
     return;
   }
   for (const ContactPatch& patch : result.patches) {
     if (patch.penetration > kMaxElasticPenetration)
       throw ContactConfigurationError("elastic contact: penetration " + mm(patch.penetration) + " at s = " +
                                       mm(patch.point.s) + " is beyond " + mm(kMaxElasticPenetration) +
-                                      ", where Hertz's theory holds (the wheelset is sunk into its rails)" + at);
+                                      ", where Hertz's theory holds (the wheelset is sunk into its rails)" + at());
   }
   const double lowest = std::fmin(result.wheels[0].gap, result.wheels[1].gap);
   if (lowest > kMaxElasticLift)
     throw NoContactError("no contact: the wheelset is lifted, the left wheel " + mm(result.wheels[0].gap) +
                          " and the right wheel " + mm(result.wheels[1].gap) + " above its rail (more than " +
-                         mm(kMaxElasticLift) + ")" + at);
+                         mm(kMaxElasticLift) + ")" + at());
 }
 
 }  // namespace wrc

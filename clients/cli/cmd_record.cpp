@@ -72,7 +72,9 @@ long record_until_interrupted(lcm::LCM& lcm, lcm::LogFile& log, const std::strin
   std::cerr << "recording " << (pattern == ".*" ? std::string("every channel") : "channels " + pattern) << " into "
             << file << " (Ctrl-C ends)\n";
   while (!bus::ShutdownSignal::requested()) {
-    if (lcm.handleTimeout(100) < 0) throw std::runtime_error("LCM failed while recording into " + file);
+    // A signal interrupts the wait (the handler does not restart it): that is the end, not a failure.
+    if (lcm.handleTimeout(100) < 0 && !bus::ShutdownSignal::requested())
+      throw std::runtime_error("LCM failed while recording into " + file);
   }
   // What already arrived is written before the file closes.
   while (lcm.handleTimeout(0) > 0) {

@@ -244,7 +244,10 @@ TEST_F(DynamicsServiceTest, RecordedRunGivesTheHistoryAndReplays) {
   ASSERT_EQ(s["state"], "finished") << s.dump();
   handle_until([] { return false; }, 0.3);
   recorder.signal(SIGINT);
-  ASSERT_TRUE(recorder.wait(10.0)) << read_text(temp_path("record.log"));
+  int recorder_status = -1;
+  ASSERT_TRUE(recorder.wait(10.0, &recorder_status)) << read_text(temp_path("record.log"));
+  EXPECT_TRUE(WIFEXITED(recorder_status) && WEXITSTATUS(recorder_status) == 0) << read_text(temp_path("record.log"));
+  EXPECT_NE(read_text(temp_path("record.log")).find("recorded "), std::string::npos) << read_text(temp_path("record.log"));
   // The CSV rows by time.
   std::map<double, double> csv_y;
   {

@@ -92,7 +92,8 @@ int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOp
       bus::publish_signed(*lcm, names.name(bus::channel::kGeometryRequest), request);
       next_send = now + kResendPeriod;
     }
-    if (lcm->handleTimeout(100) < 0) throw std::runtime_error("LCM failed while waiting for the model");
+    if (lcm->handleTimeout(100) < 0 && !bus::ShutdownSignal::requested())
+      throw std::runtime_error("LCM failed while waiting for the model");
   }
   bar.finish();
   if (!failure.empty()) throw std::runtime_error("wrc-geometryd: " + failure);

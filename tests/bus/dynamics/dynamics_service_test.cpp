@@ -38,7 +38,10 @@ class DynamicsServiceTest : public BusTest {
         *lcm_, names_.name(channel::kRunStatus), "test run status",
         [this](const run_status_t& s, const ReceivedMessage&) { last_status_ = s; });
   }
-  void TearDown() override { ::unsetenv("WRC_CACHE_DIR"); }
+  void TearDown() override {
+    ::unsetenv("WRC_CACHE_DIR");
+    BusTest::TearDown();
+  }
 
   // `wrc run` arguments; the run is named after its summary file.
   std::vector<std::string> run_args(const std::string& model, double t_end, const std::string& summary) const {

@@ -5,7 +5,7 @@
 // a model being fitted waits for that fit instead of starting another; invalid requests are
 // answered with a "rejected: " progress naming the field, garbage is counted, and the service
 // keeps answering; `wrc launch` starts it and `wrc status` lists it. Every test has a cache
-// directory of its own under its temporary directory, removed afterwards.
+// directory of its own under its temporary directory, removed afterwards when the test passed.
 #include <signal.h>
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -86,8 +86,7 @@ class GeometryServiceTest : public BusTest {
     }
     service_.reset();
     for (auto* s : subscriptions_) lcm_->unsubscribe(s);
-    std::error_code ec;
-    fs::remove_all(temp_dir_, ec);  // the cache and the logs
+    BusTest::TearDown();  // the cache and the logs
   }
 
   void on_progress(const lcm::ReceiveBuffer*, const std::string&, const wrc::progress_t* p) {

@@ -1,5 +1,6 @@
 #include "bus_fixture.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -26,6 +27,16 @@ void BusTest::SetUp() {
   const std::string id = make_client_id("test");
   client_ = std::make_unique<PingClient>(*lcm_, names_.name(channel::kPing),
                                          names_.name(channel::kPingReply, id), id);
+}
+
+void BusTest::TearDown() {
+  if (temp_dir_.empty()) return;
+  if (HasFailure()) {
+    std::fprintf(stderr, "kept %s for inspection\n", temp_dir_.c_str());
+    return;
+  }
+  std::error_code ec;
+  std::filesystem::remove_all(temp_dir_, ec);
 }
 
 bool BusTest::handle_until(const std::function<bool()>& pred, double timeout) {

@@ -27,6 +27,9 @@ using PingClient = RequestClient<wrc::ping_request_t, wrc::ping_reply_t>;
 class BusTest : public ::testing::Test {
  protected:
   void SetUp() override;
+  /// Removes the test's temporary directory (logs, key, caches) when the test passed; keeps it,
+  /// and says where, when it failed. Fixtures overriding TearDown call this last.
+  void TearDown() override;
 
   /// Handles messages until pred() or timeout [s]; returns pred().
   bool handle_until(const std::function<bool()>& pred, double timeout);

@@ -1,5 +1,6 @@
 #include "bus_fixture.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -12,9 +13,9 @@ namespace wrc::bus::test {
 
 void BusTest::SetUp() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  temp_dir_ = (std::filesystem::temp_directory_path() /
-               ("wrc-bus-" + std::string(info->name()) + "-" + std::to_string(::getpid())))
-                  .string();
+  std::string name = info->name();  // "Case/1" for a parameterised test: one directory, not two
+  std::replace(name.begin(), name.end(), '/', '_');
+  temp_dir_ = (std::filesystem::temp_directory_path() / ("wrc-bus-" + name + "-" + std::to_string(::getpid()))).string();
   std::filesystem::create_directories(temp_dir_);
   // A bus key of this test's own: the services it starts find it through $WRC_BUS_KEY.
   key_path_ = temp_path("bus.key");

@@ -22,7 +22,6 @@
 #include <string>
 #include <vector>
 
-#include "bus/build_paths.hpp"
 #include "bus/bus_auth.hpp"
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
@@ -78,30 +77,12 @@ double touching_height(const WheelsetGeometry& geometry, double y, double roll, 
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const auto point = geometry.common_point(side, pose);
     if (!point) {
-      throw std::runtime_error("the " + std::string(side == WheelSide::kLeft ? "left" : "right") +
+      throw std::runtime_error("the " + std::string(side_name(side)) +
                                " wheel has no contact point with its rail at y = " + std::to_string(y) + " m");
     }
     gap = std::min(gap, point->distance);
   }
   return pose.z - gap;
-}
-
-// wrc-geometryd, started (tied to this process) when no instance of it is alive: the spline
-// service asks it for its model. Null when one runs.
-std::unique_ptr<StartedService> start_geometry_service(const bus::HeartbeatMonitor& monitor, const std::string& build,
-                                                       const std::string& instance, const Options& o) {
-  for (const bus::ServiceStatus& s : monitor.services(bus::monotonic_seconds()))
-    if (s.last.model == "geometryd" && s.available()) return nullptr;
-  const auto path = bus::find_service_executable("wrc-geometryd", build);
-  if (!path) throw std::runtime_error("no wrc-geometryd runs and it is not built in " + build);
-  std::vector<std::string> args{"--instance", instance, "--heartbeat-period", "0.2"};
-  if (o.has("--channel-prefix")) args.insert(args.end(), {"--channel-prefix", o.text("--channel-prefix")});
-  if (o.has("--lcm-url")) args.insert(args.end(), {"--lcm-url", o.text("--lcm-url")});
-  const std::string log =
-      (std::filesystem::temp_directory_path() / ("wrc-query-geometryd-" + instance + ".log")).string();
-  std::cerr << "query: no wrc-geometryd heard; starting " << *path << " --instance " << instance << " (log " << log
-            << ")\n";
-  return std::make_unique<StartedService>(*path, args, log);
 }
 
 // ---- output --------------------------------------------------------------------------------------
@@ -269,32 +250,17 @@ int run_query(const std::vector<std::string>& args) {
   }
   std::unique_ptr<StartedService> started_geometry;  // for a model whose data wrc-geometryd computes
   if (!service) {
-    const std::string build = o.text("--build-dir", bus::build_dir());
-    const auto path = bus::find_service_executable("wrc-contactd", build);
-    if (!path) throw std::runtime_error("no " + model + " service runs and wrc-contactd is not built in " + build);
-    const std::string instance = "q" + std::to_string(::getpid());
-    if (contact_model_entry(model).needs_data) started_geometry = start_geometry_service(monitor, build, instance, o);
-    std::vector<std::string> service_args{"--model", model, "--instance", instance, "--heartbeat-period", "0.2"};
+    const StartContext context = start_context_from(o, "query", "q" + std::to_string(::getpid()));
+    if (contact_model_entry(model).needs_data)
+      started_geometry = ensure_service(*lcm, monitor, context, "geometryd", "", "wrc-geometryd", {});
+    std::vector<std::string> service_args{"--model", model};
     for (auto& a : geometry_arguments(spec)) service_args.push_back(a);
-    if (o.has("--channel-prefix")) service_args.insert(service_args.end(), {"--channel-prefix", o.text("--channel-prefix")});
-    if (o.has("--lcm-url")) service_args.insert(service_args.end(), {"--lcm-url", o.text("--lcm-url")});
-    const std::string log =
-        (std::filesystem::temp_directory_path() / ("wrc-query-contactd-" + instance + ".log")).string();
-    std::cerr << "query: no " << model << " service heard; starting " << *path << " --instance " << instance
-              << " (log " << log << ")\n";
-    started = std::make_unique<StartedService>(*path, service_args, log);
     const double t0 = bus::monotonic_seconds();
-    handle_until(*lcm, t0 + start_timeout, [&] {
-      return (service = pick_service(monitor, model, key, instance, true)).has_value() || !started->alive();
-    });
-    if (!service) {
-      const bool died = !started->alive();
-      throw std::runtime_error("the started " + model + " service " +
-                               (died ? std::string("exited") : "was not READY within " + number(start_timeout) + " s") +
-                               "; its log:\n" + tail_of(log));
-    }
-    std::cerr << "query: " << model << " service " << instance << " READY after " << number(bus::monotonic_seconds() - t0)
-              << " s\n";
+    started = ensure_service(*lcm, monitor, context, model, key, "wrc-contactd", service_args);
+    service = pick_service(monitor, model, key, started ? context.instance : "", true);
+    if (started)
+      std::cerr << "query: " << model << " service " << context.instance << " READY after "
+                << number(bus::monotonic_seconds() - t0) << " s\n";
   }
   query.instance = service->last.instance;
 

@@ -1,23 +1,12 @@
 #include "core/models/contact_range.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "core/models/no_contact_error.hpp"
 #include "core/models/one_point_model.hpp"
+#include "core/numerics/length_text.hpp"
 
 namespace wrc {
-namespace {
-
-const char* wheel_name(std::size_t index) { return index == 0 ? "left" : "right"; }
-
-std::string mm(double metres) {
-  std::ostringstream out;
-  out << metres * 1e3 << " mm";
-  return out.str();
-}
-
-}  // namespace
 
 void check_contact_range(const ContactQuery& query, const ContactResult& result) {
   // The pose is written out only for an error: formatting it costs more than the checks.
@@ -27,23 +16,24 @@ void check_contact_range(const ContactQuery& query, const ContactResult& result)
     const std::size_t w = std::fabs(result.wheels[0].gap) <= std::fabs(result.wheels[1].gap) ? 0 : 1;
     const double gap = result.wheels[w].gap;
     if (std::fabs(gap) > kMaxRigidGap)
-      throw ContactConfigurationError(std::string("rigid contact: the ") + wheel_name(w) + " wheel, the nearer to " +
-                                      "contact, has a gap of " + mm(gap) + ", beyond +-" + mm(kMaxRigidGap) + " (" +
+      throw ContactConfigurationError(std::string("rigid contact: the ") + side_name(static_cast<WheelSide>(w)) +
+                                      " wheel, the nearer to contact, has a gap of " + in_mm(gap) + ", beyond +-" +
+                                      in_mm(kMaxRigidGap) + " (" +
                                       (gap > 0 ? "lifted off" : "sunk into") +
                                       " its rail: z is not a contact height)" + at());
     return;
   }
   for (const ContactPatch& patch : result.patches) {
     if (patch.penetration > kMaxElasticPenetration)
-      throw ContactConfigurationError("elastic contact: penetration " + mm(patch.penetration) + " at s = " +
-                                      mm(patch.point.s) + " is beyond " + mm(kMaxElasticPenetration) +
+      throw ContactConfigurationError("elastic contact: penetration " + in_mm(patch.penetration) + " at s = " +
+                                      in_mm(patch.point.s) + " is beyond " + in_mm(kMaxElasticPenetration) +
                                       ", where Hertz's theory holds (the wheelset is sunk into its rails)" + at());
   }
   const double lowest = std::fmin(result.wheels[0].gap, result.wheels[1].gap);
   if (lowest > kMaxElasticLift)
-    throw NoContactError("no contact: the wheelset is lifted, the left wheel " + mm(result.wheels[0].gap) +
-                         " and the right wheel " + mm(result.wheels[1].gap) + " above its rail (more than " +
-                         mm(kMaxElasticLift) + ")" + at());
+    throw NoContactError("no contact: the wheelset is lifted, the left wheel " + in_mm(result.wheels[0].gap) +
+                         " and the right wheel " + in_mm(result.wheels[1].gap) + " above its rail (more than " +
+                         in_mm(kMaxElasticLift) + ")" + at());
 }
 
 }  // namespace wrc

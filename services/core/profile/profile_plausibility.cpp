@@ -5,17 +5,12 @@
 #include <sstream>
 #include <string>
 
+#include "core/numerics/length_text.hpp"
 #include "core/profile/profile_error.hpp"
 #include "core/profile/profile_limits.hpp"
 
 namespace wrc {
 namespace {
-
-std::string mm(double metres) {
-  std::ostringstream out;
-  out << metres * 1e3 << " mm";
-  return out.str();
-}
 
 [[noreturn]] void implausible(const ProfilePoints& p, ProfileSide side, int line, const std::string& what) {
   throw ProfileError(p.source, line,
@@ -36,10 +31,12 @@ void check_width(const ProfilePoints& p, ProfileSide side) {
   const double width = p.lateral.back() - p.lateral.front();
   if (width < kMinProfileWidth)
     implausible(p, side, 0,
-                "width " + mm(width) + " is below " + mm(kMinProfileWidth) + " (is the length unit off, m for mm?)");
+                "width " + in_mm(width) + " is below " + in_mm(kMinProfileWidth) +
+                    " (is the length unit off, m for mm?)");
   if (width > kMaxProfileWidth)
     implausible(p, side, 0,
-                "width " + mm(width) + " is above " + mm(kMaxProfileWidth) + " (is the length unit off, mm for m?)");
+                "width " + in_mm(width) + " is above " + in_mm(kMaxProfileWidth) +
+                    " (is the length unit off, mm for m?)");
 }
 
 void check_height_range(const ProfilePoints& p, ProfileSide side) {
@@ -47,8 +44,9 @@ void check_height_range(const ProfilePoints& p, ProfileSide side) {
   const double range = *high - *low;
   const double limit = side == ProfileSide::kWheel ? kMaxWheelHeightRange : kMaxRailHeightRange;
   if (range > limit)
-    implausible(p, side, 0, "height range " + mm(range) + " (from " + mm(*low) + " to " + mm(*high) + ") is above " +
-                                mm(limit));
+    implausible(p, side, 0,
+                "height range " + in_mm(range) + " (from " + in_mm(*low) + " to " + in_mm(*high) + ") is above " +
+                    in_mm(limit));
 }
 
 void check_spikes(const ProfilePoints& p, ProfileSide side) {
@@ -61,8 +59,8 @@ void check_spikes(const ProfilePoints& p, ProfileSide side) {
     const double height = std::min(std::fabs(rise_before), std::fabs(rise_after));
     if (height > kMinSpikeHeight && slope_before > kMinSpikeSlope && slope_after > kMinSpikeSlope)
       implausible(p, side, p.line[i],
-                  "a spike of " + mm(height) + " " + (rise_before > 0 ? "above" : "below") +
-                      " both neighbouring points (height " + mm(p.height[i]) + " at " + mm(p.lateral[i]) + ")");
+                  "a spike of " + in_mm(height) + " " + (rise_before > 0 ? "above" : "below") +
+                      " both neighbouring points (height " + in_mm(p.height[i]) + " at " + in_mm(p.lateral[i]) + ")");
   }
 }
 
@@ -72,7 +70,8 @@ void check_wheel_shape(const ProfilePoints& p) {
     const double flange = *std::max_element(p.height.begin(), p.height.end()) - taping;
     if (flange > kMaxFlangeHeight)
       implausible(p, ProfileSide::kWheel, 0,
-                  "flange height " + mm(flange) + " above the taping line (s = 0) is above " + mm(kMaxFlangeHeight));
+                  "flange height " + in_mm(flange) + " above the taping line (s = 0) is above " +
+                      in_mm(kMaxFlangeHeight));
   }
   // Least-squares slope of the points.
   const double n = static_cast<double>(p.lateral.size());
@@ -108,8 +107,8 @@ void check_rail_shape(const ProfilePoints& p) {
   const double mean = area / (u1 - u0);
   if (mean < -kMaxRailSagBelowChord)
     implausible(p, ProfileSide::kRail, 0,
-                "it lies " + mm(-mean) + " below the chord between its ends on average (more than " +
-                    mm(kMaxRailSagBelowChord) + "): the head is concave, upside down (negative contact angles)");
+                "it lies " + in_mm(-mean) + " below the chord between its ends on average (more than " +
+                    in_mm(kMaxRailSagBelowChord) + "): the head is concave, upside down (negative contact angles)");
 }
 
 }  // namespace

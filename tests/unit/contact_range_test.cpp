@@ -16,14 +16,6 @@
 namespace wrc {
 namespace {
 
-ContactModelOptions small_table() {
-  ContactModelOptions o;
-  o.interp.y_points = 5;
-  o.interp.roll_points = 2;
-  o.interp.yaw_points = 2;
-  return o;
-}
-
 // A centred wheelset at height z [m] in the given formulation.
 ContactQuery query_at(double z, ContactFormulation formulation) {
   ContactQuery q;
@@ -56,7 +48,7 @@ void expect_refused(const ContactModel& model, const ContactQuery& q, const std:
 class ContactRange : public ::testing::TestWithParam<std::string> {
  protected:
   std::shared_ptr<const ContactModel> model() const {
-    return make_contact_model(GetParam(), test::s1002_uic60_geometry(), small_table(), test::quick_spline_data());
+    return make_contact_model(GetParam(), test::s1002_uic60_geometry(), test::small_table_options(), test::quick_spline_data());
   }
 };
 

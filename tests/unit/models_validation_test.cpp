@@ -21,14 +21,6 @@ namespace {
 
 std::shared_ptr<const WheelsetGeometry> s1002_uic60() { return test::s1002_uic60_geometry(); }
 
-ContactModelOptions small_table() {
-  ContactModelOptions o;
-  o.interp.y_points = 5;
-  o.interp.roll_points = 2;
-  o.interp.yaw_points = 2;
-  return o;
-}
-
 ContactQuery good_query() {
   ContactQuery q;
   q.pose.z = 0.46;
@@ -54,7 +46,7 @@ void expect_invalid(const ContactModel& model, const ContactQuery& q, const std:
 TEST(ModelsValidation, BadQueriesThrowNamingTheField) {
   auto geometry = s1002_uic60();
   for (const std::string& name : contact_model_names()) {
-    const auto model = make_contact_model(name, geometry, small_table(), test::quick_spline_data());
+    const auto model = make_contact_model(name, geometry, test::small_table_options(), test::quick_spline_data());
     const double nan = std::numeric_limits<double>::quiet_NaN();
     struct Case {
       std::function<void(ContactQuery&)> spoil;
@@ -106,7 +98,7 @@ TEST(ModelsValidation, BadQueriesThrowNamingTheField) {
 TEST(ModelsValidation, WheelOffTheRailIsAConfigurationError) {
   auto geometry = s1002_uic60();
   for (const std::string& name : contact_model_names()) {
-    const auto model = make_contact_model(name, geometry, small_table(), test::quick_spline_data());
+    const auto model = make_contact_model(name, geometry, test::small_table_options(), test::quick_spline_data());
     for (ContactFormulation formulation : {ContactFormulation::kRigid, ContactFormulation::kElastic}) {
       ContactQuery q = good_query();
       q.pose.y = 0.05;
@@ -133,7 +125,7 @@ TEST(ModelsValidation, FactoryNames) {
   auto geometry = s1002_uic60();
   EXPECT_EQ(contact_model_names(), (std::vector<std::string>{"onepoint", "interp", "multipoint", "spline"}));
   for (const std::string& name : contact_model_names()) {
-    EXPECT_EQ(make_contact_model(name, geometry, small_table(), test::quick_spline_data())->name(), name);
+    EXPECT_EQ(make_contact_model(name, geometry, test::small_table_options(), test::quick_spline_data())->name(), name);
     EXPECT_EQ(contact_model_entry(name).needs_data, name == "spline");
   }
   try {
@@ -204,7 +196,7 @@ TEST(ModelsValidation, ConformalCurvatureFloorAndError) {
 // every patch is flagged and its ellipse is the Hertz ellipse of (A, 100 A). The spline model's
 // Hertz shapes are fitted with the floor of its fit, so it refuses another floor, naming both.
 TEST(ModelsValidation, FloorIsAppliedInTheModels) {
-  ContactModelOptions options = small_table();
+  ContactModelOptions options = test::small_table_options();
   options.lateral_curvature_floor = 100.0;
   auto geometry = s1002_uic60();
   try {

@@ -3,7 +3,7 @@
 /// A spline contact model of S1002 on UIC60 for unit tests, fitted once per test binary: the
 /// default box and knots on a coarser sample grid (0.25 mm in y, 5 x 5 in roll and yaw) so that
 /// the fit takes a fraction of a second, and the default model (SplineFitOptions{}) for the
-/// accuracy tests.
+/// accuracy tests; and a small interpolation table for tests that build every model.
 
 #include <memory>
 
@@ -38,6 +38,16 @@ inline const SplineFit& quick_spline_fit() {
 inline const SplineFit& default_spline_fit() {
   static const SplineFit fit = fit_spline_geometry(*s1002_uic60_geometry(), SplineFitOptions{});
   return fit;
+}
+
+/// Model options with a small interpolation table (5 x 2 x 2 configurations), quick to build, for
+/// tests of behaviour every model shares.
+inline ContactModelOptions small_table_options() {
+  ContactModelOptions o;
+  o.interp.y_points = 5;
+  o.interp.roll_points = 2;
+  o.interp.yaw_points = 2;
+  return o;
 }
 
 /// Model data for make_contact_model(): the quick model's splines.

@@ -36,7 +36,7 @@ int run_geometry(const std::vector<std::string>& args) {
   const double yaw = opt.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
   const bool csv = opt.choice("--format", {"csv", "table"}, "table") == "csv";
   if (y_to < y_from) throw UsageError("--y-to " + std::to_string(y_to) + " is below --y-from " + std::to_string(y_from));
-  const long count = std::lround(std::floor((y_to - y_from) / step + 1e-9)) + 1;
+  const long count = inclusive_step_count(y_from, y_to, step);
   if (count > 2000000) throw UsageError("--y-step gives more than 2e6 rows");
 
   const WheelsetGeometry geometry = geometry_from_options(opt);

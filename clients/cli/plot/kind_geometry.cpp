@@ -33,7 +33,7 @@ int run_geometry(const std::vector<std::string>& args) {
   const double step = opt.number("--y-step", 5e-5, 1e-7, 0.05);
   const double yaw = opt.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
   if (!(y_to > y_from)) throw UsageError(format("--y-to %g is not above --y-from %g", y_to, y_from));
-  const long count = std::lround(std::floor((y_to - y_from) / step + 1e-9)) + 1;
+  const long count = inclusive_step_count(y_from, y_to, step);
   if (count > 200000) throw UsageError(format("--y-step %g gives more than 200000 shifts", step));
   const GeometrySpec spec = geometry_spec_from_options(opt);
   const WheelsetGeometry geometry = make_geometry(spec);

@@ -76,27 +76,37 @@ void BM_Evaluate(benchmark::State& state) {
 }
 BENCHMARK(BM_Evaluate)->ArgsProduct({{0, 1, 2, 3}, {0, 1}})->Unit(benchmark::kMicrosecond);
 
-// What one contact query of both wheels needs from the splines: per wheel one basis evaluation
-// with second derivatives, every fitted quantity's value, z's gradient and Hessian and the flange
-// clearance's gradient (SplineContactGeometry::evaluate with kHessian), at the 25 rigid poses.
+// Both wheels' spline evaluation at the 25 rigid poses: per wheel one basis evaluation and the
+// contraction (SplineContactGeometry::evaluate). range(0): derivatives (0 values only, 1 with z's
+// gradient, 2 with z's gradient and Hessian: the kernel computes both for 1 and 2, plus the flange
+// clearance's gradient); range(1): fields evaluated. What one contact query of both wheels needs:
+// Args(2, kSplineQueryFieldCount = 22). Every fitted quantity: Args(2, 26).
 void BM_SplineBothWheels(benchmark::State& state) {
   const wrc::SplineContactGeometry& model = *spline_fit().model;
   const std::vector<wrc::ContactQuery> qs = queries(wrc::ContactFormulation::kRigid);
   const auto derivatives = static_cast<wrc::SplineDerivatives>(state.range(0));
+  const int fields = static_cast<int>(state.range(1));
   wrc::SplineEvaluation left, right;
   size_t i = 0;
   for (auto _ : state) {
-    model.evaluate(wrc::WheelSide::kLeft, qs[i].pose, derivatives, left);
-    model.evaluate(wrc::WheelSide::kRight, qs[i].pose, derivatives, right);
+    model.evaluate(wrc::WheelSide::kLeft, qs[i].pose, derivatives, left, fields);
+    model.evaluate(wrc::WheelSide::kRight, qs[i].pose, derivatives, right, fields);
     benchmark::DoNotOptimize(left.value.data());
     benchmark::DoNotOptimize(right.z_hessian.data());
     i = (i + 1) % qs.size();
   }
   state.SetItemsProcessed(state.iterations());
-  state.counters["functions"] = wrc::kSplineFieldCount;
+  state.counters["fields"] = fields;
   state.counters["terms/wheel"] = 64;
+  state.SetLabel(fields == wrc::kSplineQueryFieldCount && derivatives == wrc::SplineDerivatives::kHessian
+                     ? "what a query needs"
+                     : fields == wrc::kSplineFieldCount ? "every field" : "");
 }
-BENCHMARK(BM_SplineBothWheels)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kNanosecond);
+BENCHMARK(BM_SplineBothWheels)
+    ->Args({0, wrc::kSplineFieldCount})
+    ->Args({2, wrc::kSplineQueryFieldCount})
+    ->Args({2, wrc::kSplineFieldCount})
+    ->Unit(benchmark::kNanosecond);
 
 // The default spline model's precomputation: exact-geometry sampling of both wheels (two threads
 // on this machine) and the weighted least-squares fits.

@@ -16,7 +16,9 @@ namespace wrc {
 ///  - flange clearance > 0 (tread and flange root, where the exact common point's jumps are
 ///    artefacts of the rigid one-point view): the fitted contact point, distance z - z_touch and
 ///    Hertz shape; the patch as in OnePointModel (kRigid: from the wheel's load; kElastic: from
-///    the penetration -distance cos(angle));
+///    the penetration -distance cos(angle)). Only the fields a patch needs are evaluated
+///    (kSplineQueryFieldCount): the patch's contact point has NaN theta, rolling-direction
+///    curvatures and distance_curvature (SplineContactGeometry::evaluate of every field gives them);
 ///  - flange clearance <= 0 (flange contact, a physical discontinuity the model keeps): the exact
 ///    common point and its Hertz shape, as OnePointModel. The fitted clearance is continuous, so
 ///    a simulation locates the switch as the root of that function (an event).

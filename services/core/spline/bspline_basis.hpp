@@ -44,9 +44,17 @@ class BSplineBasis {
   int evaluate(double x, double* value, double* d1, double* d2) const;
 
  private:
+  // Per interval, the Bernstein coefficients of its degree + 1 functions (lanes) on
+  // t = (x - b_i) / (b_{i+1} - b_i): rows 0..degree the values, kFirstRow.. the first derivative's
+  // (degree - 1), kSecondRow.. the second's (degree - 2), in 1 / unit^order.
+  static constexpr int kLanes = kMaxSplineDegree + 1;  // 4, as the evaluation's vector code assumes
+  static constexpr int kFirstRow = kMaxSplineDegree + 1;
+  static constexpr int kSecondRow = kFirstRow + kMaxSplineDegree;
+  static constexpr int kPieceSize = (kSecondRow + kMaxSplineDegree - 1) * kLanes;
   int degree_;
   std::vector<double> breakpoints_;
-  std::vector<double> inverse_differences_;  // per interval, (degree+1)^2 reciprocal knot differences
+  std::vector<double> pieces_;          // intervals x kPieceSize
+  std::vector<double> inverse_widths_;  // 1 / (b_{i+1} - b_i) per interval [1/unit]
 };
 
 }  // namespace wrc

@@ -1,6 +1,8 @@
 #include "core/spline/spline_contact_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -73,6 +75,8 @@ std::string SplineContactGeometry::outside_reason(WheelSide side, const Wheelset
 void SplineContactGeometry::evaluate(WheelSide side, const WheelsetPose& pose, SplineDerivatives derivatives,
                                      SplineEvaluation& out, int value_count) const {
   const std::array<double, 3> x = coordinates(pose);
+  for (int j = std::max(0, value_count); j < kSplineFieldCount; ++j)
+    out.value[static_cast<size_t>(j)] = std::numeric_limits<double>::quiet_NaN();
   if (derivatives == SplineDerivatives::kValue) {
     wheel(side).query(x.data(), value_count, out.value.data(), 0, nullptr);
     return;

@@ -25,7 +25,9 @@ struct SplineBox {
 
 /// One wheel's spline evaluation at one configuration.
 struct SplineEvaluation {
-  std::array<double, kSplineFieldCount> value{};  ///< every field (spline_fields.hpp) [SI]
+  /// The fields evaluated (spline_fields.hpp) [SI]: value[j] for j < the value_count asked of
+  /// SplineContactGeometry::evaluate, NaN for the others.
+  std::array<double, kSplineFieldCount> value{};
   /// d z_touch / d(y, roll, yaw) [m/m, m/rad, m/rad] (kGradient or kHessian).
   std::array<double, 3> z_gradient{};
   /// Second derivatives of z_touch, upper triangle (y,y), (y,roll), (y,yaw), (roll,roll),
@@ -57,14 +59,16 @@ class SplineContactGeometry {
   std::string outside_reason(WheelSide side, const WheelsetPose& pose) const;
 
   /// Evaluates one wheel at pose (no box check: outside, the end polynomials extrapolate): the
-  /// values of the first value_count fields (kSplineQueryFieldCount: what a contact query uses),
+  /// values of the first value_count fields (kSplineQueryFieldCount: what a contact query uses;
+  /// the cost falls with the count, and the fields left out are NaN),
   /// and with kGradient or kHessian the gradient and Hessian of z and the clearance's gradient
   /// (both always the Hessian: one-variable-at-a-time contraction, TensorSplineSet::query).
   void evaluate(WheelSide side, const WheelsetPose& pose, SplineDerivatives derivatives, SplineEvaluation& out,
                 int value_count = kSplineFieldCount) const;
 
   /// The contact point of an evaluation at pose: positions shifted by the pose, the distance
-  /// z - z_touch, the normal renormalised, marked a local minimum.
+  /// z - z_touch, the normal renormalised, marked a local minimum. Fields not evaluated are NaN
+  /// (after a query's kSplineQueryFieldCount: theta, the rolling curvatures and distance_curvature).
   ContactPoint contact_point(WheelSide side, const WheelsetPose& pose, const SplineEvaluation& e) const;
   /// The Hertz shape from the fitted shape fields (floored when the fitted curvatures give
   /// B <= floor * A).

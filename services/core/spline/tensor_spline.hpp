@@ -94,8 +94,9 @@ class TensorSplineSet {
   /// the values of functions 0..value_count-1 into values, and for functions 0..derivative_count-1
   /// (at most 4) their value, gradient (3) and Hessian (6, the hessian_slot order) into
   /// derivatives[10 * n ..]. Degrees (3, 3, 3) and (3, 3, 2) with up to 32 functions run a compiled
-  /// kernel (one pass over the terms for all values; the derivatives contracted one variable at a
-  /// time, 4 functions at once); other bases the general path.
+  /// kernel (one pass over the terms for the values asked, in blocks of 4 functions; the
+  /// derivatives contracted one variable at a time, 4 functions at once); other bases the general
+  /// path. The cost falls with value_count: ask only for the functions needed.
   /// @throws std::invalid_argument for a basis that is not 3-D or a count out of range.
   void query(const double* point, int value_count, double* values, int derivative_count, double* derivatives) const;
 
@@ -104,7 +105,9 @@ class TensorSplineSet {
   int functions_ = 0;
   int stride_ = 0;             // functions_ rounded up for aligned contraction
   std::vector<double> data_;   // [basis index][function]
-  void (*kernel_)() = nullptr; // query(): compiled kernel for these degrees and stride, if any
+  // query(): compiled kernels for these degrees by the number of 4-function blocks of values
+  // asked (1..stride_ / 4, at most 8), null where there is none (general path).
+  std::array<void (*)(), 9> kernels_{};
   std::vector<std::ptrdiff_t> offsets_;  // query(): row offsets of the terms from the first term's row
 };
 

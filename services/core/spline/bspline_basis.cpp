@@ -21,8 +21,9 @@ namespace {
 
 [[noreturn]] void fail(const std::string& message) { throw std::invalid_argument("BSplineBasis: " + message); }
 
-// Construction only. Basis functions N_{i..i+P} of degree P on interval i of breakpoints b (m + 1 values) at x, and
-// derivatives up to order `orders` (0..2) into d1 / d2. The knot t_j of the clamped sequence is
+// Construction only (the pieces' Bernstein coefficients). Basis functions N_{i..i+P} of degree P on
+// interval i of breakpoints b (m + 1 values) at x, and derivatives up to order `orders` (0..2) into
+// d1 / d2. The knot t_j of the clamped sequence is
 // b[clamp(j - P, 0, m)], so the knot vector is never materialised. inverse holds this interval's
 // reciprocal knot differences inv(j, r) = 1 / (t_{span+r+1} - t_{span+1-j+r}), r < j <= P.
 // Derivatives from the lower-degree functions of the same triangle:

@@ -346,11 +346,16 @@ TEST_F(DynamicsServiceTest, KilledContactServiceIsWaitedForAndTheRunEndsTheSame)
   EXPECT_GT(killed["counters"]["contact_timeouts"].get<long>() + killed["counters"]["contact_retries"].get<long>(), 0)
       << "killed pid " << killed_pid << " at t = " << last_status_.t << "\n" << killed["counters"].dump() << "\n"
       << read_text(temp_path("killed.log"));
-  // A new process serves (the killed one's entry may still look alive for a few periods).
+  // A new process serves (the killed one's entry may still look alive for a few periods). A run
+  // that ends soon after the restart may end before the new process's first READY heartbeat has
+  // been read here: wait for it a few heartbeat periods.
   int restarted_pid = 0;
-  for (const ServiceStatus& s : monitor_->services(monotonic_seconds()))
-    if (s.last.model == "multipoint" && s.available() && s.last.pid != killed_pid) restarted_pid = s.last.pid;
-  EXPECT_GT(restarted_pid, 0);
+  handle_until([&] {
+    for (const ServiceStatus& s : monitor_->services(monotonic_seconds()))
+      if (s.last.model == "multipoint" && s.available() && s.last.pid != killed_pid) restarted_pid = s.last.pid;
+    return restarted_pid > 0;
+  }, 5.0);
+  EXPECT_GT(restarted_pid, 0) << read_text(log);
   expect_same_final_state(clean, killed);
   launcher->signal(SIGINT);
   launcher->wait(20.0);

@@ -326,18 +326,31 @@ struct QueryFactors {
   int first[3];
 };
 
+// The lane sums of four vectors p[0..3], {sum p[0], .., sum p[3]}, each (x0 + x1) + (x2 + x3), by
+// two rounds of shuffles and adds (a 4 x 4 transpose folded into the sums).
+typedef double Lanes4 __attribute__((vector_size(32)));
+__attribute__((always_inline)) inline void lane_sums(const Lanes4* p, Lanes4& sums) {
+  typedef long long Index4 __attribute__((vector_size(32)));
+  const Lanes4 s01 = __builtin_shuffle(p[0], p[1], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[0], p[1], Index4{1, 5, 3, 7});
+  const Lanes4 s23 = __builtin_shuffle(p[2], p[3], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[2], p[3], Index4{1, 5, 3, 7});
+  sums = __builtin_shuffle(s01, s23, Index4{0, 1, 4, 5}) + __builtin_shuffle(s01, s23, Index4{2, 3, 6, 7});
+}
+
 // TensorSplineSet::query for degrees Q0 - 1, Q1 - 1, Q2 - 1 and the values of the first S
 // functions of each row (S a multiple of 4, at most the stride; compile-time loop bounds, so that
 // the S / 4 accumulators stay in registers and the terms are one pass: the term's weight is formed
-// from the 1-D factors, its row is base + row offset). Each derivative is contracted for
-// functions 0..3 at once over yaw (orders 0..2), then roll, then y, keeping only total orders
-// <= 2. Measured (callgrind, 26 values with derivatives): 1700 instructions against 1780 for a
-// fully separable contraction of the values too, whose intermediate sums cost more than the
-// term weights they save. Compiled for x86-64-v3 (AVX2, FMA) and the baseline, chosen at run time.
+// from the 1-D factors, its row is base + row offset). The derivatives of function n come from
+// its transposed coefficients (transposed[n]: the query's first term; transposed_offsets: the
+// (b, c) vectors of 4 y terms from there). Measured (callgrind, 26 values, 2 functions with
+// derivatives): the values 1700 instructions against 1780 for a fully separable contraction
+// (its intermediate sums cost more than the term weights they save); the derivatives of functions
+// 0..3 contracted together from the rows cost 900, from the transposed coefficients one by one
+// (see below). Compiled for x86-64-v3 (AVX2, FMA) and the baseline, chosen at run time.
 template <int Q0, int Q1, int Q2, int S>
 WRC_SIMD_CLONES
-void query_kernel(const double* base, const std::ptrdiff_t* offsets, const QueryFactors& q, int value_count,
-                  double* values, int derivative_count, double* derivatives) {
+void query_kernel(const double* base, const std::ptrdiff_t* offsets, const double* const* transposed,
+                  const std::ptrdiff_t* transposed_offsets, const QueryFactors& q, int value_count, double* values,
+                  int derivative_count, double* derivatives) {
   if (value_count > 0) {
     // S / 4 accumulators of four doubles (GCC vector extension: one AVX register each in the
     // x86-64-v3 clone, two SSE registers in the baseline), all functions in one pass over the terms.
@@ -345,13 +358,15 @@ void query_kernel(const double* base, const std::ptrdiff_t* offsets, const Query
     constexpr int kVectors = S / 4;
     Vec4 acc[kVectors];
     for (int k = 0; k < kVectors; ++k) acc[k] = Vec4{0.0, 0.0, 0.0, 0.0};
+    Vec4 yaw;  // the yaw factors (Q2 <= 4 used)
+    std::memcpy(&yaw, q.f[2][0], sizeof yaw);
     int t = 0;
     for (int a = 0; a < Q0; ++a)
       for (int b = 0; b < Q1; ++b) {
         const double wab = q.f[0][0][a] * q.f[1][0][b];
+        const Vec4 w = Vec4{wab, wab, wab, wab} * yaw;  // the weights of the (a, b, c) terms
         for (int c = 0; c < Q2; ++c, ++t) {
-          const double w = wab * q.f[2][0][c];
-          const Vec4 wv = {w, w, w, w};
+          const Vec4 wv = {w[c], w[c], w[c], w[c]};
           const double* row = base + offsets[t];
           for (int k = 0; k < kVectors; ++k) {
             Vec4 r;
@@ -365,43 +380,56 @@ void query_kernel(const double* base, const std::ptrdiff_t* offsets, const Query
     for (int j = 0; j < value_count; ++j) values[j] = all[j];
   }
   if (derivative_count > 0) {
-    // Functions 0..3 at once, one variable at a time: T over yaw (orders 0..2), U over roll, then y.
+    // Per function, its coefficients of the (a, b, c) terms with a, the y index, contiguous
+    // (transposed: one 4-lane vector per (b, c)); contracted over yaw (orders 0..2), then roll
+    // (keeping total orders <= 2), the lanes over y last: the 10 outputs are dot products of the
+    // y factors with 6 vectors.
+    static_assert(Q0 == 4, "the derivative lanes are the 4 cubic y terms");
     typedef double Vec4 __attribute__((vector_size(32)));
 #define WRC_SPLAT(v) (Vec4{(v), (v), (v), (v)})  // a macro: a function returning Vec4 would change the baseline ABI
-    Vec4 T[Q0][Q1][3];
-    for (int a = 0; a < Q0; ++a)
-      for (int b = 0; b < Q1; ++b) {
-        Vec4 t0 = WRC_SPLAT(0), t1 = WRC_SPLAT(0), t2 = WRC_SPLAT(0);
+    Vec4 yaw[3][Q2], roll[3][Q1], y[3];
+    for (int order = 0; order < 3; ++order) {
+      for (int c = 0; c < Q2; ++c) yaw[order][c] = WRC_SPLAT(q.f[2][order][c]);
+      for (int b = 0; b < Q1; ++b) roll[order][b] = WRC_SPLAT(q.f[1][order][b]);
+      std::memcpy(&y[order], q.f[0][order], sizeof y[order]);
+    }
+    // (roll order, yaw order) of the 6 roll-yaw contractions: (0,0), (1,0), (0,1), (2,0), (1,1), (0,2).
+    constexpr int kRoll[6] = {0, 1, 0, 2, 1, 0}, kYaw[6] = {0, 0, 1, 0, 1, 2};
+    // Output slot -> (y order, contraction): value, gradient (y, roll, yaw), Hessian (hessian_slot order).
+    constexpr int kY[10] = {0, 1, 0, 0, 2, 1, 1, 0, 0, 0}, kU[10] = {0, 0, 1, 2, 0, 1, 2, 3, 4, 5};
+    for (int n = 0; n < derivative_count; ++n) {
+      const double* block = transposed[n];
+      Vec4 T[3][Q1];
+      for (int order = 0; order < 3; ++order)
+        for (int b = 0; b < Q1; ++b) T[order][b] = WRC_SPLAT(0.0);
+      for (int b = 0; b < Q1; ++b)
         for (int c = 0; c < Q2; ++c) {
           Vec4 r;
-          std::memcpy(&r, base + offsets[(a * Q1 + b) * Q2 + c], sizeof r);
-          t0 += WRC_SPLAT(q.f[2][0][c]) * r, t1 += WRC_SPLAT(q.f[2][1][c]) * r, t2 += WRC_SPLAT(q.f[2][2][c]) * r;
+          std::memcpy(&r, block + transposed_offsets[b * Q2 + c], sizeof r);
+          for (int order = 0; order < 3; ++order) T[order][b] += yaw[order][c] * r;
         }
-        T[a][b][0] = t0, T[a][b][1] = t1, T[a][b][2] = t2;
+      Vec4 U[6];
+      for (int m = 0; m < 6; ++m) {
+        Vec4 u = WRC_SPLAT(0.0);
+        for (int b = 0; b < Q1; ++b) u += roll[kRoll[m]][b] * T[kYaw[m]][b];
+        U[m] = u;
       }
-    // U[a][k]: (roll order, yaw order) = (0,0), (1,0), (0,1), (2,0), (1,1), (0,2).
-    constexpr int kRoll[6] = {0, 1, 0, 2, 1, 0}, kYaw[6] = {0, 0, 1, 0, 1, 2};
-    Vec4 U[Q0][6];
-    for (int a = 0; a < Q0; ++a)
-      for (int k = 0; k < 6; ++k) {
-        Vec4 u = WRC_SPLAT(0);
-        for (int b = 0; b < Q1; ++b) u += WRC_SPLAT(q.f[1][kRoll[k]][b]) * T[a][b][kYaw[k]];
-        U[a][k] = u;
+      Vec4 p[12];
+      for (int slot = 0; slot < 10; ++slot) p[slot] = y[kY[slot]] * U[kU[slot]];
+      p[10] = p[11] = WRC_SPLAT(0.0);
+      double* out = derivatives + 10 * n;
+      for (int group = 0; group < 3; ++group) {
+        Vec4 sums;
+        lane_sums(p + 4 * group, sums);
+        std::memcpy(out + 4 * group, &sums, sizeof(double) * (group < 2 ? 4 : 2));
       }
-    // Output slot -> (y order, U column): value, gradient (y, roll, yaw), Hessian (hessian_slot order).
-    constexpr int kY[10] = {0, 1, 0, 0, 2, 1, 1, 0, 0, 0}, kU[10] = {0, 0, 1, 2, 0, 1, 2, 3, 4, 5};
-    for (int slot = 0; slot < 10; ++slot) {
-      Vec4 r = WRC_SPLAT(0);
-      for (int a = 0; a < Q0; ++a) r += WRC_SPLAT(q.f[0][kY[slot]][a]) * U[a][kU[slot]];
-      double lanes[4];
-      std::memcpy(lanes, &r, sizeof lanes);
-      for (int n = 0; n < derivative_count; ++n) derivatives[10 * n + slot] = lanes[n];
     }
 #undef WRC_SPLAT
   }
 }
 
-using QueryKernel = void (*)(const double*, const std::ptrdiff_t*, const QueryFactors&, int, double*, int, double*);
+using QueryKernel = void (*)(const double*, const std::ptrdiff_t*, const double* const*, const std::ptrdiff_t*,
+                             const QueryFactors&, int, double*, int, double*);
 
 // The kernel for degrees (q0, q1, q2) - 1 and the values of the first 4 * vectors functions.
 template <int Q0, int Q1, int Q2>
@@ -446,11 +474,23 @@ TensorSplineSet::TensorSplineSet(TensorBasis basis, const Eigen::MatrixXd& coeff
     kernels_[static_cast<size_t>(v)] = reinterpret_cast<void (*)()>(select_kernel(basis_, v));
   if (kernels_[1]) {
     // Row offsets of the (q0 q1 q2) terms of a query from the first term's row.
-    const int n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
+    const int n0 = basis_.basis(0).size(), n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
     for (int a = 0; a <= basis_.basis(0).degree(); ++a)
       for (int b = 0; b <= basis_.basis(1).degree(); ++b)
         for (int c = 0; c <= basis_.basis(2).degree(); ++c)
           offsets_.push_back(static_cast<std::ptrdiff_t>((a * n1 + b) * n2 + c) * stride_);
+    // The derivative functions' coefficients transposed, y index fastest: (i2 * n1 + i1) * n0 + i0.
+    transposed_count_ = std::min(kMaxDerivativeFunctions, functions_);
+    transposed_.assign(static_cast<size_t>(transposed_count_) * basis_.size(), 0.0);
+    for (int j = 0; j < transposed_count_; ++j)
+      for (int i0 = 0; i0 < n0; ++i0)
+        for (int i1 = 0; i1 < n1; ++i1)
+          for (int i2 = 0; i2 < n2; ++i2)
+            transposed_[static_cast<size_t>(j) * basis_.size() + static_cast<size_t>((i2 * n1 + i1) * n0 + i0)] =
+                coefficient((i0 * n1 + i1) * n2 + i2, j);
+    for (int b = 0; b <= basis_.basis(1).degree(); ++b)
+      for (int c = 0; c <= basis_.basis(2).degree(); ++c)
+        transposed_offsets_.push_back(static_cast<std::ptrdiff_t>(c * n1 + b) * n0);
   }
 }
 
@@ -477,7 +517,7 @@ void TensorSplineSet::query(const double* point, int value_count, double* values
                             double* derivatives) const {
   if (basis_.dimension() != 3) throw std::invalid_argument("TensorSplineSet::query: the basis is not 3-D");
   if (value_count < 0 || value_count > functions_ || derivative_count < 0 ||
-      derivative_count > std::min(4, functions_))
+      derivative_count > std::min(kMaxDerivativeFunctions, functions_))
     throw std::invalid_argument("TensorSplineSet::query: value_count = " + std::to_string(value_count) +
                                 " or derivative_count = " + std::to_string(derivative_count) + " out of range");
   QueryFactors q;
@@ -485,19 +525,28 @@ void TensorSplineSet::query(const double* point, int value_count, double* values
   for (int k = 0; k < 3; ++k) {
     const BSplineBasis& b = basis_.basis(k);
     q.first[k] = b.evaluate(point[k], q.f[k][0], orders ? q.f[k][1] : nullptr, orders ? q.f[k][2] : nullptr);
-    // Orders above the degree vanish (degree 0 and 1 bases fill only what they have).
-    for (int order = 1; order < 3; ++order)
-      if (!orders || order > b.degree())
-        for (int a = 0; a <= kMaxSplineDegree; ++a) q.f[k][order][a] = 0.0;
+    // Orders above the degree vanish (degree 0 and 1 bases fill only what they have), and so do
+    // the factors past degree + 1 (the kernels read all four as one vector).
+    if (!orders || b.degree() < kMaxSplineDegree) {
+      for (int order = 0; order < 3; ++order) {
+        const bool computed = order == 0 || (orders && order <= b.degree());
+        for (int a = computed ? b.degree() + 1 : 0; a <= kMaxSplineDegree; ++a) q.f[k][order][a] = 0.0;
+      }
+    }
   }
   // The kernel for the values asked (their count rounded up to a multiple of 4: the padding
   // columns of data_ are zero and go nowhere).
   const size_t blocks = static_cast<size_t>(std::max(1, (value_count + 3) / 4));
   void (*const kernel)() = blocks < kernels_.size() ? kernels_[blocks] : nullptr;
   if (kernel) {
-    const int n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
+    const int n0 = basis_.basis(0).size(), n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
     const double* base = data_.data() + static_cast<size_t>((q.first[0] * n1 + q.first[1]) * n2 + q.first[2]) * stride_;
-    reinterpret_cast<QueryKernel>(kernel)(base, offsets_.data(), q, value_count, values, derivative_count, derivatives);
+    const double* transposed[kMaxDerivativeFunctions];
+    for (int n = 0; n < derivative_count; ++n)
+      transposed[n] = transposed_.data() + static_cast<size_t>(n) * basis_.size() +
+                      static_cast<size_t>((q.first[2] * n1 + q.first[1]) * n0 + q.first[0]);
+    reinterpret_cast<QueryKernel>(kernel)(base, offsets_.data(), transposed, transposed_offsets_.data(), q,
+                                          value_count, values, derivative_count, derivatives);
     return;
   }
   // Other degree combinations: the general tensor-product path.

@@ -19,6 +19,9 @@ constexpr int kMaxTensorDimension = 4;
 /// Largest number of non-zero tensor basis functions at one point: (kMaxSplineDegree + 1)^4.
 constexpr int kMaxTensorTerms = 256;
 
+/// Largest number of functions whose derivatives one TensorSplineSet::query computes.
+constexpr int kMaxDerivativeFunctions = 4;
+
 /// How many derivatives TensorBasis::evaluate computes.
 enum class SplineDerivatives { kValue = 0, kGradient = 1, kHessian = 2 };
 
@@ -92,11 +95,12 @@ class TensorSplineSet {
 
   /// What one query of a 3-D set needs, from one evaluation of the three 1-D bases at point:
   /// the values of functions 0..value_count-1 into values, and for functions 0..derivative_count-1
-  /// (at most 4) their value, gradient (3) and Hessian (6, the hessian_slot order) into
-  /// derivatives[10 * n ..]. Degrees (3, 3, 3) and (3, 3, 2) with up to 32 functions run a compiled
-  /// kernel (one pass over the terms for the values asked, in blocks of 4 functions; the
-  /// derivatives contracted one variable at a time, 4 functions at once); other bases the general
-  /// path. The cost falls with value_count: ask only for the functions needed.
+  /// (at most kMaxDerivativeFunctions) their value, gradient (3) and Hessian (6, the hessian_slot
+  /// order) into derivatives[10 * n ..]. Degrees (3, 3, 3) and (3, 3, 2) with up to 32 functions
+  /// run a compiled kernel (one pass over the terms for the values asked, in blocks of 4
+  /// functions; each derivative function contracted one variable at a time from a transposed copy
+  /// of its coefficients, the 4 y terms as vector lanes); other bases the general path. The cost
+  /// grows with value_count and derivative_count: ask only for what is needed.
   /// @throws std::invalid_argument for a basis that is not 3-D or a count out of range.
   void query(const double* point, int value_count, double* values, int derivative_count, double* derivatives) const;
 
@@ -109,6 +113,11 @@ class TensorSplineSet {
   // asked (1..stride_ / 4, at most 8), null where there is none (general path).
   std::array<void (*)(), 9> kernels_{};
   std::vector<std::ptrdiff_t> offsets_;  // query(): row offsets of the terms from the first term's row
+  // query(): functions 0..transposed_count_-1 again, transposed (y index fastest), for their
+  // derivatives, and the offsets of the query's (roll, yaw) terms in them.
+  int transposed_count_ = 0;
+  std::vector<double> transposed_;
+  std::vector<std::ptrdiff_t> transposed_offsets_;
 };
 
 /// Samples for a weighted least-squares fit (the paper's equation (1) discretised):

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <stdexcept>
 
 #include "core/spline/spline_validation.hpp"
 #include "spline_test_model.hpp"
@@ -130,6 +131,38 @@ TEST(SplineGeometry, VerticalDisplacementGradientMatchesTheExactGeometry) {
   EXPECT_LT(worst[0], 4e-3);   // [m/m]
   EXPECT_LT(worst[1], 1e-3);   // [m/rad]: 0.13 % of the lever arm 0.75 m
   EXPECT_LT(worst[2], 1e-4);   // [m/rad]
+}
+
+// The query's reduced evaluation (SplineModel: the 22 query fields, derivatives of z only) gives
+// bit for bit what the full one gives for those, NaN for what it leaves out, and a derivative
+// field count other than 1 or 2 is refused: the savings of the contact query change no number.
+TEST(SplineGeometry, QueryEvaluationIsTheFullOneRestricted) {
+  const SplineContactGeometry& m = *quick_spline_fit().model;
+  WheelsetPose p;
+  p.y = 0.0031, p.roll = -0.0004, p.yaw = 0.0012, p.z = 0.46;
+  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
+    if (side == WheelSide::kRight) p.y = -p.y;
+    SplineEvaluation full, query;
+    m.evaluate(side, p, SplineDerivatives::kHessian, full);
+    m.evaluate(side, p, SplineDerivatives::kHessian, query, kSplineQueryFieldCount, 1);
+    for (int j = 0; j < kSplineFieldCount; ++j) {
+      if (j < kSplineQueryFieldCount) {
+        EXPECT_EQ(query.value[static_cast<size_t>(j)], full.value[static_cast<size_t>(j)]) << kSplineFields[j].name;
+      } else {
+        EXPECT_TRUE(std::isnan(query.value[static_cast<size_t>(j)])) << kSplineFields[j].name;
+        EXPECT_TRUE(std::isfinite(full.value[static_cast<size_t>(j)])) << kSplineFields[j].name;
+      }
+    }
+    EXPECT_EQ(query.z_gradient, full.z_gradient);
+    EXPECT_EQ(query.z_hessian, full.z_hessian);
+    for (double v : query.clearance_gradient) EXPECT_TRUE(std::isnan(v));
+    for (double v : full.clearance_gradient) EXPECT_TRUE(std::isfinite(v));
+  }
+  SplineEvaluation e;
+  EXPECT_THROW(m.evaluate(WheelSide::kLeft, p, SplineDerivatives::kHessian, e, kSplineFieldCount, 3),
+               std::invalid_argument);
+  EXPECT_THROW(m.evaluate(WheelSide::kLeft, p, SplineDerivatives::kHessian, e, kSplineFieldCount, 0),
+               std::invalid_argument);
 }
 
 // The jumps of the tread contact point are located automatically: on the line roll = yaw = 0 the

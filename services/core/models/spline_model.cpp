@@ -27,7 +27,9 @@ WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContex
   const WheelsetPose& pose = context.query.pose;
   if (!splines_->inside(side, pose)) throw OutsideModelError(splines_->outside_reason(side, pose));
   SplineEvaluation e;
-  splines_->evaluate(side, pose, SplineDerivatives::kGradient, e, kSplineQueryFieldCount);
+  // What a patch and the constraint use: the query fields, z's derivatives (the clearance is an
+  // event function: its value suffices).
+  splines_->evaluate(side, pose, SplineDerivatives::kGradient, e, kSplineQueryFieldCount, 1);
   const double clearance = e.value[kFieldFlangeClearance];
   const double tracked = context.query.tracked_s_wheel[static_cast<size_t>(side)];
   const bool flange_contact = std::isnan(tracked) ? !(clearance > 0.0) : tracked <= splines_->s_split();

@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "core/identity/sha256.hpp"
 
@@ -73,21 +74,28 @@ std::string SplineContactGeometry::outside_reason(WheelSide side, const Wheelset
 }
 
 void SplineContactGeometry::evaluate(WheelSide side, const WheelsetPose& pose, SplineDerivatives derivatives,
-                                     SplineEvaluation& out, int value_count) const {
+                                     SplineEvaluation& out, int value_count, int derivative_fields) const {
+  if (derivative_fields < 1 || derivative_fields > 2)
+    throw std::invalid_argument("SplineContactGeometry::evaluate: derivative_fields = " +
+                                std::to_string(derivative_fields) + " is not 1 (z) or 2 (z and the flange clearance)");
   const std::array<double, 3> x = coordinates(pose);
-  for (int j = std::max(0, value_count); j < kSplineFieldCount; ++j)
-    out.value[static_cast<size_t>(j)] = std::numeric_limits<double>::quiet_NaN();
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (int j = std::max(0, value_count); j < kSplineFieldCount; ++j) out.value[static_cast<size_t>(j)] = kNaN;
   if (derivatives == SplineDerivatives::kValue) {
     wheel(side).query(x.data(), value_count, out.value.data(), 0, nullptr);
     return;
   }
-  // z and the flange clearance are fields 0 and 1: their derivatives come together.
+  // z and the flange clearance are fields 0 and 1: their derivatives come from one query.
   static_assert(kFieldZ == 0 && kFieldFlangeClearance == 1, "the derivative fields lead the list");
   double d[20];
-  wheel(side).query(x.data(), value_count, out.value.data(), 2, d);
+  wheel(side).query(x.data(), value_count, out.value.data(), derivative_fields, d);
   std::copy(d + 1, d + 4, out.z_gradient.begin());
   std::copy(d + 4, d + 10, out.z_hessian.begin());
-  std::copy(d + 11, d + 14, out.clearance_gradient.begin());
+  if (derivative_fields == 2) {
+    std::copy(d + 11, d + 14, out.clearance_gradient.begin());
+  } else {
+    out.clearance_gradient.fill(kNaN);
+  }
 }
 
 ContactPoint SplineContactGeometry::contact_point(WheelSide side, const WheelsetPose& pose,

@@ -33,7 +33,7 @@ struct SplineEvaluation {
   /// Second derivatives of z_touch, upper triangle (y,y), (y,roll), (y,yaw), (roll,roll),
   /// (roll,yaw), (yaw,yaw) [SI] (kHessian).
   std::array<double, 6> z_hessian{};
-  /// d flange_clearance / d(y, roll, yaw) [SI] (kGradient or kHessian).
+  /// d flange_clearance / d(y, roll, yaw) [SI] (kGradient or kHessian with derivative_fields 2).
   std::array<double, 3> clearance_gradient{};
 };
 
@@ -60,11 +60,14 @@ class SplineContactGeometry {
 
   /// Evaluates one wheel at pose (no box check: outside, the end polynomials extrapolate): the
   /// values of the first value_count fields (kSplineQueryFieldCount: what a contact query uses;
-  /// the cost falls with the count, and the fields left out are NaN),
-  /// and with kGradient or kHessian the gradient and Hessian of z and the clearance's gradient
-  /// (both always the Hessian: one-variable-at-a-time contraction, TensorSplineSet::query).
+  /// the cost falls with the count, and the fields left out are NaN), and with kGradient or
+  /// kHessian the gradient and Hessian of z (both always: one-variable-at-a-time contraction,
+  /// TensorSplineSet::query) and, for derivative_fields = 2, the flange clearance's gradient
+  /// (derivative_fields = 1: NaN; a contact query needs only the clearance's value, the event
+  /// function).
+  /// @throws std::invalid_argument for derivative_fields other than 1 or 2.
   void evaluate(WheelSide side, const WheelsetPose& pose, SplineDerivatives derivatives, SplineEvaluation& out,
-                int value_count = kSplineFieldCount) const;
+                int value_count = kSplineFieldCount, int derivative_fields = 2) const;
 
   /// The contact point of an evaluation at pose: positions shifted by the pose, the distance
   /// z - z_touch, the normal renormalised, marked a local minimum. Fields not evaluated are NaN

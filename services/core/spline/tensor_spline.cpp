@@ -326,13 +326,16 @@ struct QueryFactors {
   int first[3];
 };
 
+// Four doubles (GCC vector extension): one AVX register in the x86-64-v3 clones, two SSE registers
+// in the baseline.
+typedef double Vec4 __attribute__((vector_size(32)));
+
 // The lane sums of four vectors p[0..3], {sum p[0], .., sum p[3]}, each (x0 + x1) + (x2 + x3), by
 // two rounds of shuffles and adds (a 4 x 4 transpose folded into the sums).
-typedef double Lanes4 __attribute__((vector_size(32)));
-__attribute__((always_inline)) inline void lane_sums(const Lanes4* p, Lanes4& sums) {
+__attribute__((always_inline)) inline void lane_sums(const Vec4* p, Vec4& sums) {
   typedef long long Index4 __attribute__((vector_size(32)));
-  const Lanes4 s01 = __builtin_shuffle(p[0], p[1], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[0], p[1], Index4{1, 5, 3, 7});
-  const Lanes4 s23 = __builtin_shuffle(p[2], p[3], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[2], p[3], Index4{1, 5, 3, 7});
+  const Vec4 s01 = __builtin_shuffle(p[0], p[1], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[0], p[1], Index4{1, 5, 3, 7});
+  const Vec4 s23 = __builtin_shuffle(p[2], p[3], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[2], p[3], Index4{1, 5, 3, 7});
   sums = __builtin_shuffle(s01, s23, Index4{0, 1, 4, 5}) + __builtin_shuffle(s01, s23, Index4{2, 3, 6, 7});
 }
 
@@ -342,19 +345,19 @@ __attribute__((always_inline)) inline void lane_sums(const Lanes4* p, Lanes4& su
 // from the 1-D factors, its row is base + row offset). The derivatives of function n come from
 // its transposed coefficients (transposed[n]: the query's first term; transposed_offsets: the
 // (b, c) vectors of 4 y terms from there). Measured (callgrind, 26 values, 2 functions with
-// derivatives): the values 1700 instructions against 1780 for a fully separable contraction
-// (its intermediate sums cost more than the term weights they save); the derivatives of functions
-// 0..3 contracted together from the rows cost 900, from the transposed coefficients one by one
-// (see below). Compiled for x86-64-v3 (AVX2, FMA) and the baseline, chosen at run time.
+// derivatives, per wheel): the values about 700 instructions, against about 780 for a fully
+// separable contraction (its intermediate sums cost more than the term weights they save) and more
+// again when merged with the derivatives into one pass (register pressure); the derivatives about
+// 900 contracted for functions 0..3 together from the rows, about 330 one function at a time from
+// the transposed coefficients. Compiled for x86-64-v3 (AVX2, FMA) and the baseline, chosen at run
+// time.
 template <int Q0, int Q1, int Q2, int S>
 WRC_SIMD_CLONES
 void query_kernel(const double* base, const std::ptrdiff_t* offsets, const double* const* transposed,
                   const std::ptrdiff_t* transposed_offsets, const QueryFactors& q, int value_count, double* values,
                   int derivative_count, double* derivatives) {
   if (value_count > 0) {
-    // S / 4 accumulators of four doubles (GCC vector extension: one AVX register each in the
-    // x86-64-v3 clone, two SSE registers in the baseline), all functions in one pass over the terms.
-    typedef double Vec4 __attribute__((vector_size(32)));
+    // S / 4 accumulators of four doubles, all functions in one pass over the terms.
     constexpr int kVectors = S / 4;
     Vec4 acc[kVectors];
     for (int k = 0; k < kVectors; ++k) acc[k] = Vec4{0.0, 0.0, 0.0, 0.0};
@@ -385,7 +388,6 @@ void query_kernel(const double* base, const std::ptrdiff_t* offsets, const doubl
     // (keeping total orders <= 2), the lanes over y last: the 10 outputs are dot products of the
     // y factors with 6 vectors.
     static_assert(Q0 == 4, "the derivative lanes are the 4 cubic y terms");
-    typedef double Vec4 __attribute__((vector_size(32)));
 #define WRC_SPLAT(v) (Vec4{(v), (v), (v), (v)})  // a macro: a function returning Vec4 would change the baseline ABI
     Vec4 yaw[3][Q2], roll[3][Q1], y[3];
     for (int order = 0; order < 3; ++order) {

@@ -22,12 +22,9 @@
 #include <string>
 #include <vector>
 
-#include "bus/bus_auth.hpp"
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
-#include "bus/heartbeat_monitor.hpp"
 #include "bus/request_client.hpp"
-#include "bus/service_loop.hpp"
 #include "bus/spawn_child.hpp"
 #include "bus/stop_children.hpp"
 #include "bus/contact_status.hpp"
@@ -47,7 +44,6 @@ namespace wrc::cli {
 namespace {
 
 constexpr double kDefaultLoad = 154715.0 / 2.0;  // [N] per wheel: the benchmark's axle load shared by two wheels
-constexpr double kDiscoveryTime = 1.5;           // [s] listen for a running service before starting one
 
 // Parses "MxN" (elements per strip x strips), each a whole number in 1..400 (contact_query_t limit).
 void parse_grid(const std::string& text, int* elements_per_strip, int* strips) {
@@ -231,33 +227,32 @@ int run_query(const std::vector<std::string>& args) {
   query.configurations = {c};
 
   // Find the service, or start one.
-  const bus::ChannelNames names(o.text("--channel-prefix"));
-  bus::prepare_bus_key(o.text("--bus-key"), "query");  // it may start services: they use this key
-  auto lcm = bus::open_lcm(o.text("--lcm-url"));
-  bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
+  CommandBus session(o, "query");
   const std::string wanted = o.text("--instance");
   std::optional<bus::ServiceStatus> service;
-  service = discover_service(*lcm, monitor, model, key, wanted, kDiscoveryTime);
+  service = discover_service(*session.lcm, session.monitor, model, key, wanted, kServiceDiscoveryTime);
   std::unique_ptr<StartedService> started;
   if (!service && !wanted.empty()) {
-    throw std::runtime_error("no READY instance '" + wanted + "' of model " + model + " with geometry_key " + key +
-                             " heard within 1.5 s");
+    std::ostringstream msg;
+    msg << "no READY instance '" << wanted << "' of model " << model << " with geometry_key " << key
+        << " heard within " << kServiceDiscoveryTime << " s";
+    throw std::runtime_error(msg.str());
   }
-  if (!service && pick_service(monitor, model, key, "", false)) {
+  if (!service && pick_service(session.monitor, model, key, "", false)) {
     std::cerr << "query: an instance of " << model << " is starting; waiting for it\n";
-    handle_until(*lcm, bus::monotonic_seconds() + start_timeout,
-                 [&] { return (service = pick_service(monitor, model, key, "", true)).has_value(); });
+    handle_until(*session.lcm, bus::monotonic_seconds() + start_timeout,
+                 [&] { return (service = pick_service(session.monitor, model, key, "", true)).has_value(); });
   }
   std::unique_ptr<StartedService> started_geometry;  // for a model whose data wrc-geometryd computes
   if (!service) {
     const StartContext context = start_context_from(o, "query", "q" + std::to_string(::getpid()));
     if (contact_model_entry(model).needs_data)
-      started_geometry = ensure_service(*lcm, monitor, context, "geometryd", "", "wrc-geometryd", {});
+      started_geometry = ensure_service(*session.lcm, session.monitor, context, "geometryd", "", "wrc-geometryd", {});
     std::vector<std::string> service_args{"--model", model};
     for (auto& a : geometry_arguments(spec)) service_args.push_back(a);
     const double t0 = bus::monotonic_seconds();
-    started = ensure_service(*lcm, monitor, context, model, key, "wrc-contactd", service_args);
-    service = pick_service(monitor, model, key, started ? context.instance : "", true);
+    started = ensure_service(*session.lcm, session.monitor, context, model, key, "wrc-contactd", service_args);
+    service = pick_service(session.monitor, model, key, started ? context.instance : "", true);
     if (started)
       std::cerr << "query: " << model << " service " << context.instance << " READY after "
                 << number(bus::monotonic_seconds() - t0) << " s\n";
@@ -266,7 +261,8 @@ int run_query(const std::vector<std::string>& args) {
 
   const std::string client_id = bus::make_client_id("query");
   bus::RequestClient<wrc::contact_query_t, wrc::contact_reply_t> client(
-      *lcm, names.name(bus::channel::kContactQuery, model), names.name(bus::channel::kContactReply, client_id),
+      *session.lcm, session.names.name(bus::channel::kContactQuery, model),
+      session.names.name(bus::channel::kContactReply, client_id),
       bus::sender_name("wrc-query", client_id));
   auto result = client.call(query, policy);
   const bool answered = static_cast<bool>(result);  // an error status is in the reply, not in the log

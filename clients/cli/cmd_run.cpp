@@ -18,13 +18,10 @@
 #include <nlohmann/json.hpp>
 
 #include "bus/build_paths.hpp"
-#include "bus/bus_auth.hpp"
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
 #include "bus/guarded_subscription.hpp"
 #include "bus/header_stamper.hpp"
-#include "bus/heartbeat_monitor.hpp"
-#include "bus/service_loop.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "bus/signed_publish.hpp"
 #include "cli/command.hpp"
@@ -44,7 +41,6 @@
 namespace wrc::cli {
 namespace {
 
-constexpr double kDiscoveryTime = 1.5;    // [s] listen for running services before starting any
 constexpr double kCommandRepeat = 0.5;    // [s] re-send the START until the dynamics acknowledges it
 constexpr double kSilenceLimit = 30.0;    // [s] without any status of the run: the dynamics is gone
 
@@ -203,19 +199,16 @@ int run_run(const std::vector<std::string>& args) {
   request.geometry = geometry_spec_from_options(o);
   const std::string key = geometry_key(request.geometry);
 
-  const bus::ChannelNames names(o.text("--channel-prefix"));
-  bus::prepare_bus_key(o.text("--bus-key"), "run");  // the services it starts use this key
+  CommandBus session(o, "run");
   bus::ShutdownSignal::install();
-  auto lcm = bus::open_lcm(o.text("--lcm-url"));
-  bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
-  handle_until(*lcm, bus::monotonic_seconds() + kDiscoveryTime, [] { return false; });
+  handle_until(*session.lcm, bus::monotonic_seconds() + kServiceDiscoveryTime, [] { return false; });
 
   const StartContext context = start_context_from(o, "run", "r" + std::to_string(::getpid()));
   std::vector<std::unique_ptr<StartedService>> started;
   auto keep = [&](std::unique_ptr<StartedService> s) {
     if (s) started.push_back(std::move(s));
   };
-  keep(ensure_service(*lcm, monitor, context, "dynamicsd", "", "wrc-dynamicsd", {}));
+  keep(ensure_service(*session.lcm, session.monitor, context, "dynamicsd", "", "wrc-dynamicsd", {}));
   if (!request.in_process) {
     std::vector<std::string> models{request.model};
     for (const auto& s : request.swaps) models.push_back(s.model);
@@ -223,11 +216,12 @@ int run_run(const std::vector<std::string>& args) {
     models.erase(std::unique(models.begin(), models.end()), models.end());
     bool needs_geometry = false;
     for (const std::string& m : models) needs_geometry = needs_geometry || contact_model_entry(m).needs_data;
-    if (needs_geometry) keep(ensure_service(*lcm, monitor, context, "geometryd", "", "wrc-geometryd", {}));
+    if (needs_geometry)
+      keep(ensure_service(*session.lcm, session.monitor, context, "geometryd", "", "wrc-geometryd", {}));
     for (const std::string& m : models) {
       std::vector<std::string> service_args{"--model", m};
       for (auto& a : geometry_arguments(request.geometry)) service_args.push_back(a);
-      keep(ensure_service(*lcm, monitor, context, m, key, "wrc-contactd", service_args));
+      keep(ensure_service(*session.lcm, session.monitor, context, m, key, "wrc-contactd", service_args));
     }
   }
 
@@ -243,29 +237,32 @@ int run_run(const std::vector<std::string>& args) {
   std::optional<integrator_stats_t> stats;
   std::string status_line;
   bus::GuardedSubscription<wheelset_state_t> states(
-      *lcm, names.name(bus::channel::kWheelsetState), "run history", [&](const wheelset_state_t& m, const bus::ReceivedMessage&) {
+      *session.lcm, session.names.name(bus::channel::kWheelsetState), "run history",
+      [&](const wheelset_state_t& m, const bus::ReceivedMessage&) {
         if (m.run_id == request.run_id) history[m.t] = m;
       }, 10000);
   bus::GuardedSubscription<run_status_t> status(
-      *lcm, names.name(bus::channel::kRunStatus), "run status", [&](const run_status_t& m, const bus::ReceivedMessage&) {
+      *session.lcm, session.names.name(bus::channel::kRunStatus), "run status",
+      [&](const run_status_t& m, const bus::ReceivedMessage&) {
         if (m.request_id != command.request_id) return;
         acknowledged = true;
         last_heard = bus::monotonic_seconds();
         status_line = m.model;
       });
   bus::GuardedSubscription<integrator_stats_t> counters(
-      *lcm, names.name(bus::channel::kIntegratorStats), "run counters",
+      *session.lcm, session.names.name(bus::channel::kIntegratorStats), "run counters",
       [&](const integrator_stats_t& m, const bus::ReceivedMessage&) {
         if (m.run_id == request.run_id) stats = m;
       });
   bus::GuardedSubscription<run_summary_t> summaries(
-      *lcm, names.name(bus::channel::kRunSummary), "run summary", [&](const run_summary_t& m, const bus::ReceivedMessage&) {
+      *session.lcm, session.names.name(bus::channel::kRunSummary), "run summary",
+      [&](const run_summary_t& m, const bus::ReceivedMessage&) {
         if (m.request_id == command.request_id) summary = m;
       });
   bus::HeaderStamper stamper(bus::sender_name("wrc-run", request.run_id));
   auto send = [&](run_command_t& c) {
     stamper.stamp(c.header);
-    bus::publish_signed(*lcm, names.name(bus::channel::kRunCommand), c);
+    bus::publish_signed(*session.lcm, session.names.name(bus::channel::kRunCommand), c);
   };
   bool stop_sent = false;
   double next_send = 0.0;
@@ -284,7 +281,7 @@ int run_run(const std::vector<std::string>& args) {
       stop_sent = true;
       std::cerr << "\nrun: stopping " << request.run_id << "\n";
     }
-    lcm->handleTimeout(50);
+    session.lcm->handleTimeout(50);
     if (bus::monotonic_seconds() - last_heard > kSilenceLimit) {
       throw std::runtime_error("no status of run " + request.run_id + " for " + std::to_string(kSilenceLimit) +
                                " s: the dynamics service is gone" +

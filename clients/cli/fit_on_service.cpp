@@ -9,13 +9,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "bus/bus_auth.hpp"
 #include "bus/channels.hpp"
 #include "bus/clock.hpp"
 #include "bus/guarded_subscription.hpp"
 #include "bus/header_stamper.hpp"
-#include "bus/heartbeat_monitor.hpp"
-#include "bus/service_loop.hpp"
 #include "bus/shutdown_signal.hpp"
 #include "bus/signed_publish.hpp"
 #include "cli/progress_bar.hpp"
@@ -29,7 +26,6 @@
 namespace wrc::cli {
 namespace {
 
-constexpr double kDiscoveryTime = 1.5;    // [s] listen for a running wrc-geometryd before starting one
 constexpr double kResendPeriod = 2.0;     // [s] re-send the request while nothing at all is heard of it
 constexpr std::size_t kKeyDigits = 12;    // hex digits of a key shown
 
@@ -45,14 +41,12 @@ int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOp
   const double wait = o.number("--wait", 600.0, 1.0, 86400.0);
   const std::string key = geometry_key(spec);
   const std::string model_key = geometryd::model_key(key, fit);
-  const bus::ChannelNames names(o.text("--channel-prefix"));
-  bus::prepare_bus_key(o.text("--bus-key"), "fit");  // a service it starts uses this key
+  CommandBus session(o, "fit");
   bus::ShutdownSignal::install();
-  auto lcm = bus::open_lcm(o.text("--lcm-url"));
-  bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));
-  handle_until(*lcm, bus::monotonic_seconds() + kDiscoveryTime, [] { return false; });
-  std::unique_ptr<StartedService> started = ensure_service(
-      *lcm, monitor, start_context_from(o, "fit", "f" + std::to_string(::getpid())), "geometryd", "", "wrc-geometryd", {});
+  handle_until(*session.lcm, bus::monotonic_seconds() + kServiceDiscoveryTime, [] { return false; });
+  std::unique_ptr<StartedService> started =
+      ensure_service(*session.lcm, session.monitor, start_context_from(o, "fit", "f" + std::to_string(::getpid())),
+                     "geometryd", "", "wrc-geometryd", {});
 
   const std::int64_t request_id = static_cast<std::int64_t>(bus::wall_utime());
   ProgressBar bar("fit on wrc-geometryd");
@@ -60,14 +54,16 @@ int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOp
   std::string failure;
   bool heard = false;
   bus::GuardedSubscription<progress_t> progress(
-      *lcm, names.name(bus::channel::kProgress), "fit progress", [&](const progress_t& p, const bus::ReceivedMessage&) {
+      *session.lcm, session.names.name(bus::channel::kProgress), "fit progress",
+      [&](const progress_t& p, const bus::ReceivedMessage&) {
         if (p.request_id != request_id) return;
         heard = true;
         if (p.message.rfind("rejected: ", 0) == 0 || p.message.rfind("failed: ", 0) == 0) failure = p.message;
         else bar.update(p.done, p.total, p.message);
       });
   bus::GuardedSubscription<spline_model_t> models(
-      *lcm, names.name(bus::channel::kSplineModel), "fit answer", [&](const spline_model_t& m, const bus::ReceivedMessage&) {
+      *session.lcm, session.names.name(bus::channel::kSplineModel), "fit answer",
+      [&](const spline_model_t& m, const bus::ReceivedMessage&) {
         if (m.request_id == request_id && m.model_key == model_key) answer = m;
       }, 100, 1 << 20);
 
@@ -89,10 +85,10 @@ int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOp
     // A request lost on the way is sent again; once the service answers with progress, it is working on it.
     if (!heard && now >= next_send) {
       stamper.stamp(request.header);
-      bus::publish_signed(*lcm, names.name(bus::channel::kGeometryRequest), request);
+      bus::publish_signed(*session.lcm, session.names.name(bus::channel::kGeometryRequest), request);
       next_send = now + kResendPeriod;
     }
-    if (lcm->handleTimeout(100) < 0 && !bus::ShutdownSignal::requested())
+    if (session.lcm->handleTimeout(100) < 0 && !bus::ShutdownSignal::requested())
       throw std::runtime_error("LCM failed while waiting for the model");
   }
   bar.finish();

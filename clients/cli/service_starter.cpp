@@ -12,8 +12,10 @@
 #include <stdexcept>
 
 #include "bus/build_paths.hpp"
+#include "bus/bus_auth.hpp"
 #include "bus/clock.hpp"
 #include "bus/spawn_child.hpp"
+#include "bus/service_loop.hpp"
 #include "bus/service_options.hpp"
 #include "bus/stop_children.hpp"
 #include "cli/log_cleanup.hpp"
@@ -121,6 +123,21 @@ StartContext start_context_from(const Options& o, const std::string& command, co
   context.start_timeout = o.number("--start-timeout", 300.0, 0.1, 3600.0);
   return context;
 }
+
+namespace {
+
+// The bus key must exist before LCM is opened: open_lcm() loads it.
+std::unique_ptr<lcm::LCM> open_with_key(const Options& o, const std::string& command) {
+  bus::prepare_bus_key(o.text("--bus-key"), command);
+  return bus::open_lcm(o.text("--lcm-url"));
+}
+
+}  // namespace
+
+CommandBus::CommandBus(const Options& o, const std::string& command)
+    : names(o.text("--channel-prefix")),
+      lcm(open_with_key(o, command)),
+      monitor(*lcm, names.name(bus::channel::kHeartbeat)) {}
 
 std::unique_ptr<StartedService> ensure_service(lcm::LCM& lcm, const bus::HeartbeatMonitor& monitor,
                                                const StartContext& context, const std::string& model,

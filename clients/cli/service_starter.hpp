@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "bus/channels.hpp"
 #include "bus/heartbeat_monitor.hpp"
 #include "cli/options.hpp"
 
@@ -82,6 +83,21 @@ std::vector<OptionSpec> service_start_option_specs();
 /// The StartContext those options give: command names the log lines and files, instance is the
 /// name given to the services it starts.
 StartContext start_context_from(const Options& options, const std::string& command, const std::string& instance);
+
+/// [s] How long a command that may start services listens for the heartbeats of running ones
+/// before it starts any.
+constexpr double kServiceDiscoveryTime = 1.5;
+
+/// The bus of a command that may start services (run, query, fit --service), from those options:
+/// the channel names of --channel-prefix, the bus key of --bus-key prepared first (created on
+/// first use; the services it starts use it), LCM on --lcm-url and a heartbeat monitor on it.
+struct CommandBus {
+  /// command: the command's name for the key's messages ("run").
+  CommandBus(const Options& options, const std::string& command);
+  bus::ChannelNames names;
+  std::unique_ptr<lcm::LCM> lcm;
+  bus::HeartbeatMonitor monitor;
+};
 
 /// A READY service of model (heartbeat model name) with geometry_key, waiting for a starting one;
 /// when none, starts executable with args (plus instance, heartbeat period and bus_args), waits

@@ -11,10 +11,8 @@
 namespace wrc::contactd {
 
 /// SHA-256 (64 hex digits) of model's precomputed data; empty for a model without any.
-/// "interp": the table's grid (counts, half ranges, y method) and, node by node (y slowest, yaw
-/// fastest), left wheel then right, every interpolated quantity of the common point at the node
-/// (z = 0), as little-endian doubles. The table's arrays are private to the model, so the hash is
-/// taken of what the table answers at its nodes, which are its values.
+/// "interp": ContactPointTable::data() (the grid's counts and half ranges, the rigid roll at every
+/// node, every tabulated value and slope of both wheels) as little-endian doubles.
 /// "spline": SplineContactGeometry::data_hash() (spline_model_t.model_hash).
 std::string model_hash(const ContactModel& model);
 

@@ -40,12 +40,11 @@ inline const SplineFit& default_spline_fit() {
   return fit;
 }
 
-/// Model options with a small interpolation table (5 x 2 x 2 configurations), quick to build, for
-/// tests of behaviour every model shares.
+/// Model options with a small interpolation table (5 y x 2 yaw nodes, 3 roll nodes about the rigid
+/// roll), quick to build, for tests of behaviour every model shares.
 inline ContactModelOptions small_table_options() {
   ContactModelOptions o;
   o.interp.y_points = 5;
-  o.interp.roll_points = 2;
   o.interp.yaw_points = 2;
   return o;
 }

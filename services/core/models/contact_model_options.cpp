@@ -9,10 +9,11 @@
 namespace wrc {
 namespace {
 
-void require_count(int value, const char* name) {
-  if (value >= 2 && value <= 10000) return;
+void require_count(int value, const char* name, int low, int high, bool odd = false) {
+  if (value >= low && value <= high && (!odd || value % 2 == 1)) return;
   std::ostringstream msg;
-  msg << "interpolation grid: " << name << " = " << value << " must be in 2..10000";
+  msg << "interpolation grid: " << name << " = " << value << " must be " << (odd ? "odd and " : "") << "in " << low
+      << ".." << high;
   throw std::invalid_argument(msg.str());
 }
 
@@ -26,10 +27,11 @@ void require_positive(double value, const char* where, const char* name, const c
 }  // namespace
 
 void InterpolationGrid::validate() const {
-  require_count(y_points, "y_points");
-  require_count(roll_points, "roll_points");
-  require_count(yaw_points, "yaw_points");
+  require_count(y_points, "y_points", 2, 10000);
+  require_count(roll_points, "roll_points", 3, 9, true);
+  require_count(yaw_points, "yaw_points", 2, 9);
   require_positive(y_max, "interpolation grid", "y_max", "m");
+  require_positive(roll_band, "interpolation grid", "roll_band", "rad");
   require_positive(roll_max, "interpolation grid", "roll_max", "rad");
   require_positive(yaw_max, "interpolation grid", "yaw_max", "rad");
   if (yaw_max > kMaxValidatedYaw) {

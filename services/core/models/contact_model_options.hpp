@@ -8,26 +8,25 @@
 
 namespace wrc {
 
-/// How the interpolated model interpolates its table in the lateral shift y.
-enum class YInterpolation {
-  kLinear,       ///< piecewise linear in y (continuous, no overshoot at contact-point jumps)
-  kCubicSpline,  ///< natural cubic spline in y through the nodes (C2, overshoots next to jumps)
-};
-
-/// The interpolation configurations of the interpolated Hertzian model (MEDYNA style): a tensor
-/// grid of equally spaced nodes y_i in [-y_max, y_max], roll_j in [-roll_max, roll_max] and
-/// yaw_k in [-yaw_max, yaw_max]. Roll and yaw are always interpolated linearly.
+/// The interpolation configurations of the interpolated Hertzian model (MEDYNA style, on the rigid
+/// manifold): equally spaced nodes y_i in [-y_max, y_max] and yaw_k in [-yaw_max, yaw_max]; at each
+/// (y_i, yaw_k) the rigid wheelset's roll phi_r and height, and roll_points roll nodes
+/// phi_r + delta_j with delta_j equally spaced in [-roll_band, roll_band] (an odd count, so that
+/// delta = 0, the rigid roll itself, is a node). Interpolated by cubic Hermite pieces in y and in
+/// delta and by the Lagrange polynomial through the yaw nodes (ContactPointTable).
 struct InterpolationGrid {
-  int y_points = 41;       ///< nodes in y [-], >= 2 (41 over +-10 mm: 0.5 mm spacing)
-  double y_max = 0.010;    ///< half range in y [m], > 0
-  int roll_points = 3;     ///< nodes in roll [-], >= 2
-  double roll_max = 0.015; ///< half range in roll [rad], > 0 (rigid contact reaches ~11 mrad at y = 10 mm)
-  int yaw_points = 3;      ///< nodes in yaw [-], >= 2
-  double yaw_max = 0.010;  ///< half range in yaw [rad], > 0
-  YInterpolation y_method = YInterpolation::kLinear;  ///< interpolation in y
+  int y_points = 121;        ///< nodes in y [-], >= 2 (121 over +-10 mm: 1/6 mm spacing)
+  double y_max = 0.010;      ///< half range in y [m], > 0
+  int roll_points = 3;       ///< roll nodes about the rigid roll [-], odd, 3..9
+  double roll_band = 0.002;  ///< half range of the roll nodes about the rigid roll [rad], > 0
+  /// Largest |roll| a query may have [rad], > 0 (beyond the band the table extrapolates: the
+  /// distance linearly in delta, the other parameters held at the band's edge).
+  double roll_max = 0.015;
+  int yaw_points = 3;        ///< nodes in yaw [-], 2..9 (the Lagrange polynomial's degree + 1)
+  double yaw_max = 0.010;    ///< half range in yaw [rad], > 0, <= kMaxValidatedYaw
 
-  /// Throws std::invalid_argument naming the first count < 2 (or > 10000) or range that is not
-  /// positive and finite.
+  /// Throws std::invalid_argument naming the first count out of its range (y_points 2..10000,
+  /// roll_points odd 3..9, yaw_points 2..9) or range that is not positive and finite.
   void validate() const;
 };
 

@@ -28,14 +28,16 @@ InterpolatedModel::InterpolatedModel(std::shared_ptr<const WheelsetGeometry> geo
 
 WheelConstraint InterpolatedModel::add_wheel_patches(WheelSide side, const PatchContext& context,
                                                      ContactResult& result) const {
-  const ContactPoint point = table_.at(side, context.query.pose);
-  std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
+  const TableContact contact = table_.evaluate(side, context.query.pose);
+  std::optional<ContactPatch> patch = one_point_patch(contact.point, context, options_.lateral_curvature_floor);
   if (patch) result.patches.push_back(std::move(*patch));
-  // The interpolation is continuous: no jumps, no event. The gap gradient is the envelope
-  // gradient at the interpolated point: continuous, unlike the derivative of the distance
-  // interpolated linearly in roll and yaw (kinks at every node line, which a rigid-contact
-  // integrator could not pass), and close to it (docs/dynamics.md).
-  return exact_point_constraint(point, context.query.pose, kNoSwitch, std::numeric_limits<double>::quiet_NaN());
+  // The interpolation is continuous: no jumps, no event. The gap gradient is the exact derivative
+  // of the interpolated gap (C1), so the rigid-contact integrator's constraint and its gradient
+  // agree.
+  WheelConstraint c =
+      exact_point_constraint(contact.point, context.query.pose, kNoSwitch, std::numeric_limits<double>::quiet_NaN());
+  c.gap_gradient = contact.gap_gradient;
+  return c;
 }
 
 }  // namespace wrc

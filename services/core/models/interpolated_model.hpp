@@ -10,17 +10,20 @@
 
 namespace wrc {
 
-/// Model "interp". The constructor tabulates the exact common point of each wheel on the grid
-/// options.interp (ContactPointTable); evaluate() interpolates contact point, normal, angle,
-/// radius, distance and curvatures there (no geometry scan) and builds one Hertz patch per wheel
-/// exactly as OnePointModel does (same rigid and elastic rules, same curvature floor). The
-/// interpolation is continuous in the configuration, so the jumps of the common point are
-/// smoothed over one grid cell; at the nodes the model reproduces OnePointModel.
-/// A configuration outside the table throws ContactConfigurationError naming the coordinate.
+/// Model "interp". The constructor tabulates the rigid wheelset and the exact common point of each
+/// wheel on the grid options.interp (ContactPointTable: nodes in y and yaw, a few roll nodes about
+/// the rigid roll); evaluate() interpolates contact point, normal, angle, radius, distance and
+/// curvatures there (no geometry scan) and builds one Hertz patch per wheel exactly as
+/// OnePointModel does (same rigid and elastic rules, same curvature floor). The gap is the
+/// interpolated distance, C1, with its exact gradient; its rigid solution (both gaps 0) is the
+/// interpolated rigid wheelset, exact at the nodes. The interpolation is continuous in the
+/// configuration, so the jumps of the common point are smoothed over one y cell; at the nodes
+/// the model reproduces OnePointModel. A configuration outside the table throws
+/// OutsideModelError naming the coordinate.
 class InterpolatedModel final : public HertzianContactModel {
  public:
-  /// Builds the table (2 y_points roll_points yaw_points potential-point scans; ~40 ms for the
-  /// default 41 x 3 x 3 grid).
+  /// Builds the table (y_points yaw_points rigid solves and 2 y_points roll_points yaw_points
+  /// common points; ~40 ms for the default 121 x 3 x 3 grid).
   /// @throws std::invalid_argument for a null geometry or invalid options; ContactConfigurationError
   ///         when a node of the table has no contact.
   explicit InterpolatedModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options = {});

@@ -329,7 +329,6 @@ TEST(QueryAdapter, StatusesOfRealModels) {
   ContactModelOptions small;
   small.interp.y_points = 9;
   small.interp.y_max = 0.004;
-  small.interp.roll_points = 2;
   small.interp.yaw_points = 2;
   const auto interp = make_contact_model("interp", s1002_uic60(), small);
   q.configurations[0].y = 0.001;

@@ -104,6 +104,10 @@ nlohmann::json summary_json(const run_summary_t& s, const dynamics::RunRequest& 
                    {"contact_configurations", c.contact_configurations},
                    {"contact_retries", c.contact_retries},
                    {"contact_timeouts", c.contact_timeouts},
+                   {"missed_switches", c.missed_switches},
+                   {"two_point_entries", c.two_point_entries},
+                   {"two_point_time", c.two_point_time},
+                   {"max_branch_excess", c.max_branch_excess},
                    {"last_order", c.last_order},
                    {"last_step", c.last_step}};
   nlohmann::json swaps = nlohmann::json::array();

@@ -74,6 +74,8 @@ std::string validate_configuration(const wrc::wheelset_configuration_t& c, int i
       {"spin_rate", c.spin_rate, -1e4, 1e4, "rad/s"},
       {"normal_load_left", c.normal_load_left, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
       {"normal_load_right", c.normal_load_right, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
+      {"second_normal_load_left", c.second_normal_load_left, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
+      {"second_normal_load_right", c.second_normal_load_right, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
   };
   for (const Field& f : fields) {
     // The field's full name is built only for the message of a bad value (hot path otherwise).
@@ -82,7 +84,9 @@ std::string validate_configuration(const wrc::wheelset_configuration_t& c, int i
   }
   // A tracked branch is a wheel profile coordinate, or NaN for none.
   const Field tracked[] = {{"tracked_s_wheel_left", c.tracked_s_wheel_left, -1.0, 1.0, "m"},
-                           {"tracked_s_wheel_right", c.tracked_s_wheel_right, -1.0, 1.0, "m"}};
+                           {"tracked_s_wheel_right", c.tracked_s_wheel_right, -1.0, 1.0, "m"},
+                           {"second_tracked_s_wheel_left", c.second_tracked_s_wheel_left, -1.0, 1.0, "m"},
+                           {"second_tracked_s_wheel_right", c.second_tracked_s_wheel_right, -1.0, 1.0, "m"}};
   for (const Field& f : tracked) {
     if (std::isnan(f.value) || (f.value >= f.lo && f.value <= f.hi)) continue;
     return check_range("configurations[" + std::to_string(i) + "]." + f.name, f.value, f.lo, f.hi, f.unit);
@@ -97,6 +101,28 @@ std::string configuration_label(const wrc::wheelset_configuration_t& c, int i) {
 
 void copy3(const Eigen::Vector3d& from, double to[3]) {
   for (int k = 0; k < 3; ++k) to[k] = from[k];
+}
+
+void to_constraint_message(const WheelConstraint& w, wrc::wheel_constraint_t& m) {
+  m.gap = w.gap;
+  for (int k = 0; k < 4; ++k) m.gap_gradient[k] = w.gap_gradient[k];
+  m.normal_z = w.normal_z;
+  m.s_wheel = w.s_wheel;
+  m.contact_angle = w.contact_angle;
+  m.switch_function = w.switch_function;
+  m.switch_s_wheel = w.switch_s_wheel;
+}
+
+WheelConstraint from_constraint_message(const wrc::wheel_constraint_t& w) {
+  WheelConstraint c;
+  c.gap = w.gap;
+  c.gap_gradient = Eigen::Vector4d(w.gap_gradient[0], w.gap_gradient[1], w.gap_gradient[2], w.gap_gradient[3]);
+  c.normal_z = w.normal_z;
+  c.s_wheel = w.s_wheel;
+  c.contact_angle = w.contact_angle;
+  c.switch_function = w.switch_function;
+  c.switch_s_wheel = w.switch_s_wheel;
+  return c;
 }
 
 }  // namespace
@@ -157,6 +183,8 @@ ContactQuery to_contact_query(const wrc::contact_query_t& q, int index) {
   out.fastsim_elements = q.fastsim_elements;
   out.fastsim_strips = q.fastsim_strips;
   out.tracked_s_wheel = {c.tracked_s_wheel_left, c.tracked_s_wheel_right};
+  out.second_tracked_s_wheel = {c.second_tracked_s_wheel_left, c.second_tracked_s_wheel_right};
+  out.second_normal_load = {c.second_normal_load_left, c.second_normal_load_right};
   return out;
 }
 
@@ -174,6 +202,10 @@ void to_configuration_message(const ContactQuery& query, wrc::wheelset_configura
   c.normal_load_right = query.normal_load[1];
   c.tracked_s_wheel_left = query.tracked_s_wheel[0];
   c.tracked_s_wheel_right = query.tracked_s_wheel[1];
+  c.second_tracked_s_wheel_left = query.second_tracked_s_wheel[0];
+  c.second_tracked_s_wheel_right = query.second_tracked_s_wheel[1];
+  c.second_normal_load_left = query.second_normal_load[0];
+  c.second_normal_load_right = query.second_normal_load[1];
 }
 
 void to_query_message(const std::vector<ContactQuery>& batch, wrc::contact_query_t& q) {
@@ -218,17 +250,16 @@ void to_result_message(const ContactResult& result, wrc::contact_result_t& messa
     m.fy = p.forces.fy;
     m.mz = p.forces.mz;
   }
+  for (std::size_t i = 0; i < 2; ++i) to_constraint_message(result.wheels[i], message.wheels[i]);
+  message.second_wheel_side.clear();
+  message.second_wheels.clear();
   for (std::size_t i = 0; i < 2; ++i) {
-    const WheelConstraint& w = result.wheels[i];
-    wrc::wheel_constraint_t& m = message.wheels[i];
-    m.gap = w.gap;
-    for (int k = 0; k < 4; ++k) m.gap_gradient[k] = w.gap_gradient[k];
-    m.normal_z = w.normal_z;
-    m.s_wheel = w.s_wheel;
-    m.contact_angle = w.contact_angle;
-    m.switch_function = w.switch_function;
-    m.switch_s_wheel = w.switch_s_wheel;
+    if (!result.second_wheels[i]) continue;
+    message.second_wheel_side.push_back(i == 0 ? wrc::contact_patch_t::LEFT : wrc::contact_patch_t::RIGHT);
+    message.second_wheels.emplace_back();
+    to_constraint_message(*result.second_wheels[i], message.second_wheels.back());
   }
+  message.num_second_wheels = static_cast<std::int8_t>(message.second_wheels.size());
   copy3(result.force, message.force);
   copy3(result.moment, message.moment);
   copy3(result.creep_force, message.creep_force);
@@ -262,17 +293,11 @@ ContactResult from_result_message(const wrc::contact_result_t& m) {
     out.forces.mz = p.mz;
     r.patches.push_back(out);
   }
-  for (std::size_t i = 0; i < 2; ++i) {
-    const wrc::wheel_constraint_t& w = m.wheels[i];
-    WheelConstraint& c = r.wheels[i];
-    c.gap = w.gap;
-    c.gap_gradient = Eigen::Vector4d(w.gap_gradient[0], w.gap_gradient[1], w.gap_gradient[2], w.gap_gradient[3]);
-    c.normal_z = w.normal_z;
-    c.s_wheel = w.s_wheel;
-    c.contact_angle = w.contact_angle;
-    c.switch_function = w.switch_function;
-    c.switch_s_wheel = w.switch_s_wheel;
-  }
+  for (std::size_t i = 0; i < 2; ++i) r.wheels[i] = from_constraint_message(m.wheels[i]);
+  const std::size_t seconds = std::min(m.second_wheels.size(), m.second_wheel_side.size());
+  for (std::size_t k = 0; k < seconds; ++k)
+    r.second_wheels[m.second_wheel_side[k] == wrc::contact_patch_t::LEFT ? 0 : 1] =
+        from_constraint_message(m.second_wheels[k]);
   r.force = vec3(m.force);
   r.moment = vec3(m.moment);
   r.creep_force = vec3(m.creep_force);

@@ -211,6 +211,10 @@ integrator_stats_t to_stats_message(const RunCounters& c, const std::string& run
   m.contact_configurations = c.contact_configurations;
   m.contact_retries = c.contact_retries;
   m.contact_timeouts = c.contact_timeouts;
+  m.missed_switches = c.missed_switches;
+  m.two_point_entries = c.two_point_entries;
+  m.two_point_time = c.two_point_time;
+  m.max_branch_excess = c.max_branch_excess;
   return m;
 }
 

@@ -147,6 +147,34 @@ TEST(WheelConstraint, BranchRules) {
   EXPECT_THROW(track_branch({point(0.0, 1e-6, false)}, 0.0), std::invalid_argument);
 }
 
+// Rigid two-point contact: the pair is the two minima nearest to their tracked s; it is left for
+// a third minimum that becomes lower than the pair, for the survivor where one of the pair merges
+// with a maximum, and at once (negative) when one of them has vanished.
+TEST(WheelConstraint, TwoPointBranchRules) {
+  // Minima at -10, 5, 20 mm (distances 3, 1, 1.2 um) with maxima at -2 (9 um) and 12 mm (1.5 um).
+  const std::vector<ContactPoint> points{point(-0.010, 3e-6, true), point(-0.002, 9e-6, false),
+                                         point(0.005, 1e-6, true), point(0.012, 1.5e-6, false),
+                                         point(0.020, 1.2e-6, true)};
+  const TwoPointBranches pair = track_two_point(points, 0.0049, 0.0201);
+  EXPECT_EQ(pair.first, 2u);
+  EXPECT_EQ(pair.second, 4u);
+  EXPECT_NEAR(pair.switch_function, 0.3e-6, 1e-15);  // the maximum between them, 0.3 um above the second
+  EXPECT_DOUBLE_EQ(pair.switch_s_wheel, 0.005);       // where the second one merges with it: the first survives
+  // A third minimum lower than the pair.
+  std::vector<ContactPoint> lower = points;
+  lower[0].distance = 0.4e-6;
+  lower[3].distance = 9e-6;
+  const TwoPointBranches left = track_two_point(lower, 0.0049, 0.0201);
+  EXPECT_NEAR(left.switch_function, -0.6e-6, 1e-15);
+  EXPECT_DOUBLE_EQ(left.switch_s_wheel, -0.010);
+  // The second point has vanished (no minimum near its tracked s but the first one).
+  const TwoPointBranches lost = track_two_point({point(0.0, 1e-6, true), point(0.004, 2e-6, false)}, 0.0, 0.006);
+  EXPECT_LT(lost.switch_function, 0.0);
+  EXPECT_EQ(lost.second, lost.first);
+  EXPECT_DOUBLE_EQ(lost.switch_s_wheel, 0.0);
+  EXPECT_THROW(track_two_point({point(0.0, 1e-6, false)}, 0.0, 0.01), std::invalid_argument);
+}
+
 // Every model returns both wheels whatever their load, and the interp and multipoint models
 // declare no jumps.
 TEST(WheelConstraint, BothWheelsAlwaysPresent) {

@@ -17,6 +17,10 @@ struct RunCounters {
   long root_returns = 0;       ///< returns at an event (contact-point switch, flange contact) [-]
   long restarts = 0;           ///< re-initialisations after an event or a model swap [-]
   long contact_switches = 0;   ///< contact-point switches located as events (both wheels) [-]
+  long missed_switches = 0;    ///< of those, found by the branch check at an accepted step, not by root finding [-]
+  long two_point_entries = 0;  ///< switches into rigid two-point contact (sliding on a switching surface) [-]
+  double two_point_time = 0;   ///< simulated time with a wheel in two-point contact, summed over the wheels [s]
+  double max_branch_excess = 0;  ///< largest height of a followed point above the lowest minimum at an accepted step [m]
   long contact_queries = 0;    ///< contact evaluations asked for (a batch counts once) [-]
   long contact_configurations = 0;  ///< configurations in them [-]
   long contact_retries = 0;    ///< contact queries re-sent after a timeout (over the bus) [-]
@@ -37,6 +41,10 @@ struct RunCounters {
     root_returns += o.root_returns;
     restarts += o.restarts;
     contact_switches += o.contact_switches;
+    missed_switches += o.missed_switches;
+    two_point_entries += o.two_point_entries;
+    two_point_time += o.two_point_time;
+    max_branch_excess = max_branch_excess > o.max_branch_excess ? max_branch_excess : o.max_branch_excess;
     contact_queries += o.contact_queries;
     contact_configurations += o.contact_configurations;
     contact_retries += o.contact_retries;

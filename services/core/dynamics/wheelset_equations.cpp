@@ -1,6 +1,8 @@
 #include "core/dynamics/wheelset_equations.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "core/models/wheel_constraint.hpp"
 
@@ -14,8 +16,7 @@ WheelsetEquations::WheelsetEquations(WheelsetParameters parameters, double z_ref
   parameters_.validate();
 }
 
-ContactQuery WheelsetEquations::query(ContactFormulation f, const double* y,
-                                      const std::array<double, 2>& tracked_s) const {
+ContactQuery WheelsetEquations::query(ContactFormulation f, const double* y, const FollowedBranches& branches) const {
   ContactQuery q;
   q.pose.y = y[kUnknownY];
   q.pose.z = y[kUnknownZ];
@@ -32,11 +33,16 @@ ContactQuery WheelsetEquations::query(ContactFormulation f, const double* y,
     // A negative trial value inside a Newton iteration loads the wheel with nothing.
     q.normal_load = {std::max(0.0, y[kUnknownNormalLeft] * force_scale_),
                      std::max(0.0, y[kUnknownNormalRight] * force_scale_)};
+    for (int i = 0; i < 2; ++i) {
+      if (!branches.two_point(i)) continue;
+      q.second_tracked_s_wheel[static_cast<size_t>(i)] = branches.second_s[static_cast<size_t>(i)];
+      q.second_normal_load[static_cast<size_t>(i)] = std::max(0.0, y[kUnknownSecondNormalLeft + i] * force_scale_);
+    }
   }
   q.material = parameters_.material;
   q.fastsim_elements = parameters_.fastsim_elements;
   q.fastsim_strips = parameters_.fastsim_strips;
-  q.tracked_s_wheel = tracked_s;
+  q.tracked_s_wheel = branches.tracked_s;
   return q;
 }
 
@@ -78,17 +84,35 @@ Eigen::Vector4d WheelsetEquations::applied_forces(ContactFormulation f, const do
   return q;
 }
 
-double WheelsetEquations::normal_force(ContactFormulation f, const double* y, const ContactResult& contact,
-                                       int wheel) const {
-  if (f == ContactFormulation::kRigid) return y[kUnknownNormalLeft + wheel] * force_scale_;
+double WheelsetEquations::normal_force(ContactFormulation f, const double* y, const ContactResult& contact, int wheel,
+                                       const FollowedBranches& branches) const {
+  if (f == ContactFormulation::kRigid) {
+    double n = y[kUnknownNormalLeft + wheel];
+    if (branches.two_point(wheel)) n += y[kUnknownSecondNormalLeft + wheel];
+    return n * force_scale_;
+  }
   double n = 0.0;
   for (const ContactPatch& patch : contact.patches)
     if (static_cast<int>(patch.point.side) == wheel) n += patch.normal_force;
   return n;
 }
 
+namespace {
+
+// The second constraint of a wheel in two-point contact, or null for one-point contact.
+const WheelConstraint* second_constraint(const ContactResult& contact, const FollowedBranches& branches, int wheel) {
+  if (!branches.two_point(wheel)) return nullptr;
+  const std::optional<WheelConstraint>& c = contact.second_wheels[static_cast<size_t>(wheel)];
+  if (!c)
+    throw std::runtime_error(std::string("the contact model answered no second point for the two-point contact of the ") +
+                             (wheel == 0 ? "left" : "right") + " wheel");
+  return &*c;
+}
+
+}  // namespace
+
 void WheelsetEquations::residual(ContactFormulation f, const double* y, const double* yp, const ContactResult& contact,
-                                 double* r) const {
+                                 const FollowedBranches& branches, double* r) const {
   const WheelsetParameters& p = parameters_;
   double axle_moment = 0.0;
   Eigen::Vector4d applied = applied_forces(f, y, contact, &axle_moment);
@@ -102,6 +126,14 @@ void WheelsetEquations::residual(ContactFormulation f, const double* y, const do
       for (int k = 0; k < kPoseUnknowns; ++k) {
         r[k] += mu * c.gap_gradient[k];
         applied[k] += n * c.normal_z * c.gap_gradient[k];
+      }
+      if (const WheelConstraint* c2 = second_constraint(contact, branches, i)) {
+        const double n2 = y[kUnknownSecondNormalLeft + i] * force_scale_;
+        const double mu2 = y[kUnknownSecondMuLeft + i];
+        for (int k = 0; k < kPoseUnknowns; ++k) {
+          r[k] += mu2 * c2->gap_gradient[k];
+          applied[k] += n2 * c2->normal_z * c2->gap_gradient[k];
+        }
       }
     }
   }
@@ -120,6 +152,18 @@ void WheelsetEquations::residual(ContactFormulation f, const double* y, const do
     double g_dot = 0.0;
     for (int k = 0; k < kPoseUnknowns; ++k) g_dot += c.gap_gradient[k] * y[kPoseUnknowns + k];
     r[kUnknownMuLeft + i] = g_dot;
+  }
+  if (!branches.any_two_point()) return;
+  for (int i = 0; i < 2; ++i) {
+    if (const WheelConstraint* c2 = second_constraint(contact, branches, i)) {
+      r[kUnknownSecondNormalLeft + i] = c2->gap;
+      double g_dot = 0.0;
+      for (int k = 0; k < kPoseUnknowns; ++k) g_dot += c2->gap_gradient[k] * y[kPoseUnknowns + k];
+      r[kUnknownSecondMuLeft + i] = g_dot;
+    } else {
+      r[kUnknownSecondNormalLeft + i] = y[kUnknownSecondNormalLeft + i];
+      r[kUnknownSecondMuLeft + i] = y[kUnknownSecondMuLeft + i];
+    }
   }
 }
 

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "core/dynamics/followed_branches.hpp"
 #include "core/dynamics/wheelset_parameters.hpp"
 #include "core/models/contact_model.hpp"
 
@@ -34,15 +35,30 @@ enum WheelsetUnknown : int {
   kUnknownNormalRight,  ///< rigid only: N_R / force_scale [-]
   kUnknownMuLeft,       ///< rigid only: GGL multiplier of the left gap [m/s]
   kUnknownMuRight,      ///< rigid only: GGL multiplier of the right gap [m/s]
+  // Rigid two-point contact only (a wheel sliding on a switching surface, FollowedBranches); the
+  // unknowns of a wheel in one-point contact are 0 there (their equations: unknown = 0).
+  kUnknownSecondNormalLeft,   ///< N of the left wheel's second point / force_scale [-]
+  kUnknownSecondNormalRight,  ///< N of the right wheel's second point / force_scale [-]
+  kUnknownSecondMuLeft,       ///< GGL multiplier of the left wheel's second gap [m/s]
+  kUnknownSecondMuRight,      ///< GGL multiplier of the right wheel's second gap [m/s]
 };
 
 constexpr int kElasticUnknowns = 9;
 constexpr int kRigidUnknowns = 13;
+constexpr int kTwoPointRigidUnknowns = 17;
 constexpr int kPoseUnknowns = 4;
 
-/// Number of unknowns of a formulation.
-constexpr int unknown_count(ContactFormulation f) {
-  return f == ContactFormulation::kRigid ? kRigidUnknowns : kElasticUnknowns;
+/// Number of unknowns of a formulation; rigid with a wheel in two-point contact: 17.
+constexpr int unknown_count(ContactFormulation f, bool two_point = false) {
+  return f == ContactFormulation::kRigid ? (two_point ? kTwoPointRigidUnknowns : kRigidUnknowns) : kElasticUnknowns;
+}
+
+/// Whether unknown k enters the contact query (pose, rates, spin, the normal loads of the
+/// points in contact) in a state of unknown_count(f, two_point) unknowns.
+constexpr bool enters_contact_query(ContactFormulation f, bool two_point, int k) {
+  if (f == ContactFormulation::kElastic) return k < kElasticUnknowns;
+  return k <= kUnknownNormalRight ||
+         (two_point && (k == kUnknownSecondNormalLeft || k == kUnknownSecondNormalRight));
 }
 
 /// The equations of one wheelset with fixed parameters.
@@ -58,13 +74,16 @@ class WheelsetEquations {
   double z_reference() const { return z_reference_; }
   void set_z_reference(double z) { z_reference_ = z; }  ///< [m]
 
-  /// The contact query at state y (formulation f): pose and rates, rigid loads N_i, the tracked
-  /// branches, material and grid.
-  ContactQuery query(ContactFormulation f, const double* y, const std::array<double, 2>& tracked_s) const;
+  /// The contact query at state y (formulation f): pose and rates, rigid loads N_i, the followed
+  /// branches (and in two-point contact the second points and their loads), material and grid.
+  ContactQuery query(ContactFormulation f, const double* y, const FollowedBranches& branches) const;
 
-  /// F(y, y') with the contact result of query(f, y): writes unknown_count(f) values to residual.
+  /// F(y, y') with the contact result of query(f, y, branches): writes
+  /// unknown_count(f, branches.any_two_point()) values to residual. A wheel in two-point contact
+  /// adds its second constraint (gap = 0, G v = 0) and force.
+  /// @throws std::runtime_error when such a wheel's result has no second constraint.
   void residual(ContactFormulation f, const double* y, const double* yp, const ContactResult& contact,
-                double* residual) const;
+                const FollowedBranches& branches, double* residual) const;
 
   /// dF/dy' (constant, diagonal): the coefficient of each y'_k in row k [SI].
   double derivative_coefficient(ContactFormulation f, int k) const;
@@ -75,9 +94,10 @@ class WheelsetEquations {
   Eigen::Vector4d applied_forces(ContactFormulation f, const double* y, const ContactResult& contact,
                                  double* axle_moment) const;
 
-  /// The normal force of wheel i at state y [N]: rigid, from the unknowns; elastic, the sum of the
-  /// wheel's patches in contact.
-  double normal_force(ContactFormulation f, const double* y, const ContactResult& contact, int wheel) const;
+  /// The normal force of wheel i at state y [N]: rigid, from the unknowns (both points of a wheel
+  /// in two-point contact); elastic, the sum of the wheel's patches in contact.
+  double normal_force(ContactFormulation f, const double* y, const ContactResult& contact, int wheel,
+                      const FollowedBranches& branches = {}) const;
 
   /// The mass matrix of (y, z, roll, yaw) [kg, kg, kg m^2, kg m^2].
   Eigen::Vector4d mass_diagonal() const;

@@ -11,14 +11,21 @@
 #include <Eigen/Dense>
 
 #include "core/models/contact_model_factory.hpp"
+#include "core/models/wheel_constraint.hpp"
 
 namespace wrc {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr size_t kCacheSize = 8;
-constexpr int kRootCount = 4;  // switch L, switch R, normal force L, normal force R
+// switch L, switch R, normal force L, normal force R, second point's normal force L, R
+constexpr int kRootCount = 6;
 constexpr double kGapTolerance = 1e-13;  // [m] position projection onto gap = 0
+// [m] how far a followed point may lie above the lowest minimum at an accepted step (root finding
+// stops within ~1e-15 m of the crossing); more is a switch the root finding did not see.
+constexpr double kBranchTolerance = 1e-9;
+// Switches of one event: at most this many in a row before the run fails (a cycle).
+constexpr int kMaxSwitchesPerEvent = 8;
 
 WheelsetSimulation* self(void* user) { return static_cast<WheelsetSimulation*>(user); }
 
@@ -60,13 +67,23 @@ WheelsetSimulation::WheelsetSimulation(RunSpec spec, std::shared_ptr<ContactEval
   if (!contact_) throw std::invalid_argument("WheelsetSimulation: no contact evaluator");
   if (!(nominal_radius > 0.0)) throw std::invalid_argument("WheelsetSimulation: nominal radius must be > 0");
   formulation_ = formulation_of(*contact_);
-  tracked_s_ = {kNaN, kNaN};
 }
 
 WheelsetSimulation::~WheelsetSimulation() = default;
 
-int WheelsetSimulation::query_length() const {
-  return formulation_ == ContactFormulation::kRigid ? kUnknownNormalRight + 1 : kElasticUnknowns;
+int WheelsetSimulation::unknowns() const { return unknown_count(formulation_, branches_.any_two_point()); }
+
+void WheelsetSimulation::set_branches(const FollowedBranches& branches, std::vector<double>& y) {
+  const bool now = branches.any_two_point();
+  branches_ = branches;
+  if (formulation_ == ContactFormulation::kRigid) y.resize(static_cast<size_t>(unknowns()), 0.0);
+  for (int i = 0; i < 2 && now; ++i)
+    if (!branches_.two_point(i)) y[kUnknownSecondNormalLeft + i] = y[kUnknownSecondMuLeft + i] = 0.0;
+  cache_.clear();
+}
+
+std::array<double, 2> WheelsetSimulation::branch_excess(const ContactResult& c) const {
+  return {-c.wheels[0].switch_function, -c.wheels[1].switch_function};
 }
 
 std::vector<ContactResult> WheelsetSimulation::evaluate(const std::vector<ContactQuery>& batch) {
@@ -80,14 +97,17 @@ std::vector<ContactResult> WheelsetSimulation::evaluate(const std::vector<Contac
 }
 
 const ContactResult& WheelsetSimulation::contact_at(const double* y) {
-  const int m = query_length();
-  std::vector<double> key(y, y + m);
-  key.push_back(tracked_s_[0]);
-  key.push_back(tracked_s_[1]);
+  const bool two_point = branches_.any_two_point();
+  std::vector<double> key;
+  key.reserve(kTwoPointRigidUnknowns + 4);
+  for (int k = 0; k < unknowns(); ++k)
+    if (enters_contact_query(formulation_, two_point, k)) key.push_back(y[k]);
+  key.insert(key.end(), branches_.tracked_s.begin(), branches_.tracked_s.end());
+  key.insert(key.end(), branches_.second_s.begin(), branches_.second_s.end());
   for (const CachedContact& c : cache_)
     if (c.key.size() == key.size() && std::memcmp(c.key.data(), key.data(), key.size() * sizeof(double)) == 0)
       return c.result;
-  std::vector<ContactResult> r = evaluate({equations_.query(formulation_, y, tracked_s_)});
+  std::vector<ContactResult> r = evaluate({equations_.query(formulation_, y, branches_)});
   if (cache_.size() >= kCacheSize) cache_.pop_front();
   cache_.push_back({std::move(key), std::move(r.front())});
   return cache_.back().result;
@@ -95,7 +115,7 @@ const ContactResult& WheelsetSimulation::contact_at(const double* y) {
 
 int WheelsetSimulation::residual_callback(const double* y, const double* yp, double* r) {
   try {
-    equations_.residual(formulation_, y, yp, contact_at(y), r);
+    equations_.residual(formulation_, y, yp, contact_at(y), branches_, r);
     return 0;
   } catch (const ContactConfigurationError& e) {
     last_contact_error_ = e.what();
@@ -109,17 +129,20 @@ int WheelsetSimulation::residual_callback(const double* y, const double* yp, dou
 int WheelsetSimulation::jacobian_callback(double cj, const double* y, const double* yp, const double* r,
                                           SUNMatrix jac) {
   try {
-    const int n = unknown_count(formulation_);
-    const int m = query_length();
+    const int n = unknowns();
+    const bool two_point = branches_.any_two_point();
     // Every perturbation that changes the contact query in one batch: one round trip.
     std::vector<ContactQuery> batch;
+    std::vector<int> batch_index(static_cast<size_t>(n), -1);
     std::vector<std::vector<double>> perturbed(static_cast<size_t>(n), std::vector<double>(y, y + n));
     std::vector<double> step(static_cast<size_t>(n));
     for (int k = 0; k < n; ++k) {
       step[k] = increment(k, y[k]);
       perturbed[k][k] += step[k];
       step[k] = perturbed[k][k] - y[k];  // the increment actually represented
-      if (k < m) batch.push_back(equations_.query(formulation_, perturbed[k].data(), tracked_s_));
+      if (!enters_contact_query(formulation_, two_point, k)) continue;
+      batch_index[static_cast<size_t>(k)] = static_cast<int>(batch.size());
+      batch.push_back(equations_.query(formulation_, perturbed[k].data(), branches_));
     }
     const ContactResult base = contact_at(y);
     std::vector<ContactResult> results = evaluate(batch);
@@ -127,8 +150,9 @@ int WheelsetSimulation::jacobian_callback(double cj, const double* y, const doub
     own_.jacobian_residual_evals += n;
     std::vector<double> column(static_cast<size_t>(n));
     for (int k = 0; k < n; ++k) {
-      const ContactResult& c = k < m ? results[static_cast<size_t>(k)] : base;
-      equations_.residual(formulation_, perturbed[k].data(), yp, c, column.data());
+      const int b = batch_index[static_cast<size_t>(k)];
+      const ContactResult& c = b >= 0 ? results[static_cast<size_t>(b)] : base;
+      equations_.residual(formulation_, perturbed[k].data(), yp, c, branches_, column.data());
       for (int i = 0; i < n; ++i) SM_ELEMENT_D(jac, i, k) = (column[i] - r[i]) / step[k];
       SM_ELEMENT_D(jac, k, k) += cj * equations_.derivative_coefficient(formulation_, k);
     }
@@ -149,6 +173,8 @@ int WheelsetSimulation::root_callback(const double* y, double* g) {
     g[1] = c.wheels[1].switch_function;
     g[2] = y[kUnknownNormalLeft];
     g[3] = y[kUnknownNormalRight];
+    g[4] = branches_.two_point(0) ? y[kUnknownSecondNormalLeft] : 1.0;
+    g[5] = branches_.two_point(1) ? y[kUnknownSecondNormalRight] : 1.0;
     return 0;
   } catch (const std::exception& e) {
     last_contact_error_ = e.what();
@@ -157,6 +183,27 @@ int WheelsetSimulation::root_callback(const double* y, double* g) {
 }
 
 void WheelsetSimulation::project_positions(std::vector<double>& y) {
+  for (int iteration = 0; iteration < 40 && branches_.any_two_point(); ++iteration) {
+    // Three or four constraints on the four coordinates: the smallest correction in the mass
+    // metric (Gauss-Newton), dq = -M^-1 G^T (G M^-1 G^T)^-1 gap.
+    const ContactResult& c = contact_at(y.data());
+    std::vector<const WheelConstraint*> active = {&c.wheels[0], &c.wheels[1]};
+    for (int i = 0; i < 2; ++i)
+      if (branches_.two_point(i)) active.push_back(&c.second_wheels[static_cast<size_t>(i)].value());
+    const int count = static_cast<int>(active.size());
+    Eigen::MatrixXd g(count, kPoseUnknowns);
+    Eigen::VectorXd gap(count);
+    for (int r = 0; r < count; ++r) {
+      g.row(r) = active[static_cast<size_t>(r)]->gap_gradient.transpose();
+      gap[r] = active[static_cast<size_t>(r)]->gap;
+    }
+    if (gap.cwiseAbs().maxCoeff() < kGapTolerance) return;
+    const Eigen::Vector4d inv_mass = equations_.mass_diagonal().cwiseInverse();
+    const Eigen::MatrixXd mg = inv_mass.asDiagonal() * g.transpose();
+    const Eigen::VectorXd dq = -mg * (g * mg).fullPivLu().solve(gap);
+    for (int k = 0; k < kPoseUnknowns; ++k) y[static_cast<size_t>(k)] += dq[k];
+    if (iteration == 39) throw std::runtime_error("no rigid two-point contact: the position projection did not converge");
+  }
   for (int iteration = 0; iteration < 40; ++iteration) {
     const ContactResult& c = contact_at(y.data());
     const Eigen::Vector2d gap(c.wheels[0].gap, c.wheels[1].gap);
@@ -178,12 +225,15 @@ void WheelsetSimulation::project_positions(std::vector<double>& y) {
 
 void WheelsetSimulation::project_velocities(std::vector<double>& y) {
   const ContactResult& c = contact_at(y.data());
-  Eigen::Matrix<double, 2, 4> g;
-  for (int i = 0; i < 2; ++i) g.row(i) = c.wheels[static_cast<size_t>(i)].gap_gradient.transpose();
+  std::vector<const WheelConstraint*> active = {&c.wheels[0], &c.wheels[1]};
+  for (int i = 0; i < 2; ++i)
+    if (branches_.two_point(i)) active.push_back(&c.second_wheels[static_cast<size_t>(i)].value());
+  Eigen::MatrixXd g(static_cast<int>(active.size()), kPoseUnknowns);
+  for (size_t r = 0; r < active.size(); ++r) g.row(static_cast<int>(r)) = active[r]->gap_gradient.transpose();
   const Eigen::Vector4d inv_mass = equations_.mass_diagonal().cwiseInverse();
   Eigen::Vector4d v(y[kUnknownYDot], y[kUnknownZDot], y[kUnknownRollDot], y[kUnknownYawDot]);
-  const Eigen::Matrix<double, 4, 2> mg = inv_mass.asDiagonal() * g.transpose();
-  const Eigen::Vector2d impulse = (g * mg).fullPivLu().solve(g * v);
+  const Eigen::MatrixXd mg = inv_mass.asDiagonal() * g.transpose();
+  const Eigen::VectorXd impulse = (g * mg).fullPivLu().solve(g * v);
   v -= mg * impulse;  // the velocity change of an inelastic impact along the constraint normals
   for (int k = 0; k < 4; ++k) y[kPoseUnknowns + k] = v[k];
 }
@@ -206,9 +256,9 @@ void WheelsetSimulation::settle_elastic(std::vector<double>& y, double z_acceler
     std::vector<double> dz = y, droll = y;
     dz[kUnknownZ] += h;
     droll[kUnknownRoll] += h;
-    std::vector<ContactResult> r = evaluate({equations_.query(formulation_, y.data(), tracked_s_),
-                                             equations_.query(formulation_, dz.data(), tracked_s_),
-                                             equations_.query(formulation_, droll.data(), tracked_s_)});
+    std::vector<ContactResult> r = evaluate({equations_.query(formulation_, y.data(), branches_),
+                                             equations_.query(formulation_, dz.data(), branches_),
+                                             equations_.query(formulation_, droll.data(), branches_)});
     const Eigen::Vector2d f = mismatch(r[0], y);
     if (f.norm() < 1e-9 * scale) return;
     Eigen::Matrix2d j;
@@ -233,37 +283,51 @@ void WheelsetSimulation::settle_elastic(std::vector<double>& y, double z_acceler
 }
 
 void WheelsetSimulation::consistent_derivatives(std::vector<double>& y, std::vector<double>& yp) {
-  const int n = unknown_count(formulation_);
+  const int n = unknowns();
   yp.assign(static_cast<size_t>(n), 0.0);
   std::vector<double> r(static_cast<size_t>(n));
   if (formulation_ == ContactFormulation::kElastic) {
-    equations_.residual(formulation_, y.data(), yp.data(), contact_at(y.data()), r.data());
+    equations_.residual(formulation_, y.data(), yp.data(), contact_at(y.data()), branches_, r.data());
     for (int k = 0; k <= kUnknownSpinRate; ++k) yp[k] = -r[k] / equations_.derivative_coefficient(formulation_, k);
     return;
   }
   // Rigid: mu = 0, q' = v; v' and N from the equations of motion and the constraints on the
   // acceleration level, G v' + (dG/dt) v = 0, with dG/dt v by a difference along v. The creep
-  // forces depend on N (Hertz), so iterate.
+  // forces depend on N (Hertz), so iterate. Every constraint: both wheels' points, and the second
+  // point of a wheel in two-point contact.
+  struct Active {
+    int wheel;
+    bool second;
+    int normal;  // index of its normal force
+  };
+  std::vector<Active> active = {{0, false, kUnknownNormalLeft}, {1, false, kUnknownNormalRight}};
+  for (int i = 0; i < 2; ++i)
+    if (branches_.two_point(i)) active.push_back({i, true, kUnknownSecondNormalLeft + i});
+  auto constraint = [](const ContactResult& c, const Active& a) -> const WheelConstraint& {
+    return a.second ? c.second_wheels[static_cast<size_t>(a.wheel)].value() : c.wheels[static_cast<size_t>(a.wheel)];
+  };
   y[kUnknownMuLeft] = y[kUnknownMuRight] = 0.0;
+  if (branches_.any_two_point()) y[kUnknownSecondMuLeft] = y[kUnknownSecondMuRight] = 0.0;
   const double eps = 1e-7;
   std::vector<double> ahead = y;
   for (int k = 0; k < kPoseUnknowns; ++k) ahead[k] += eps * y[kPoseUnknowns + k];
   const ContactResult c_ahead = contact_at(ahead.data());
   const Eigen::Vector4d m = equations_.mass_diagonal();
+  const int count = static_cast<int>(active.size());
   for (int iteration = 0; iteration < 8; ++iteration) {
     const ContactResult c = contact_at(y.data());
     std::fill(yp.begin(), yp.end(), 0.0);
-    equations_.residual(formulation_, y.data(), yp.data(), c, r.data());
-    Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> b;
+    equations_.residual(formulation_, y.data(), yp.data(), c, branches_, r.data());
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(4 + count, 4 + count);
+    Eigen::VectorXd b(4 + count);
     for (int k = 0; k < 4; ++k) {
       a(k, k) = m[k];
       b[k] = -r[kPoseUnknowns + k];
     }
     const double scale = equations_.force_scale();
-    for (int i = 0; i < 2; ++i) {
-      const WheelConstraint& w = c.wheels[static_cast<size_t>(i)];
-      const WheelConstraint& w_ahead = c_ahead.wheels[static_cast<size_t>(i)];
+    for (int i = 0; i < count; ++i) {
+      const WheelConstraint& w = constraint(c, active[static_cast<size_t>(i)]);
+      const WheelConstraint& w_ahead = constraint(c_ahead, active[static_cast<size_t>(i)]);
       double g_dot_v = 0.0;
       for (int k = 0; k < 4; ++k) {
         // r holds the forces of the current N; the unknown is the change of N (scaled).
@@ -273,16 +337,18 @@ void WheelsetSimulation::consistent_derivatives(std::vector<double>& y, std::vec
       }
       b[4 + i] = -g_dot_v;
     }
-    const Eigen::Matrix<double, 6, 1> x = a.fullPivLu().solve(b);
-    const double change = std::max(std::abs(x[4]), std::abs(x[5]));
-    y[kUnknownNormalLeft] += x[4];
-    y[kUnknownNormalRight] += x[5];
+    const Eigen::VectorXd x = a.fullPivLu().solve(b);
+    double change = 0.0;
+    for (int i = 0; i < count; ++i) {
+      change = std::max(change, std::abs(x[4 + i]));
+      y[static_cast<size_t>(active[static_cast<size_t>(i)].normal)] += x[4 + i];
+    }
     for (int k = 0; k < 4; ++k) yp[kPoseUnknowns + k] = x[k];
     if (change < 1e-10) break;
   }
   // The spin and the pose rows with the final N.
   std::vector<double> zero(static_cast<size_t>(n), 0.0);
-  equations_.residual(formulation_, y.data(), zero.data(), contact_at(y.data()), r.data());
+  equations_.residual(formulation_, y.data(), zero.data(), contact_at(y.data()), branches_, r.data());
   yp[kUnknownSpinRate] = -r[kUnknownSpinRate] / equations_.parameters().spin_inertia;
   for (int k = 0; k < kPoseUnknowns; ++k) yp[k] = y[kPoseUnknowns + k];
 }
@@ -437,7 +503,7 @@ std::array<WheelOutput, 2> WheelsetSimulation::wheel_outputs(const std::vector<d
     WheelOutput& w = out[static_cast<size_t>(i)];
     w.s_wheel = c.wheels[static_cast<size_t>(i)].s_wheel;
     w.contact_angle = c.wheels[static_cast<size_t>(i)].contact_angle;
-    w.normal_force = equations_.normal_force(formulation_, y.data(), c, i);
+    w.normal_force = equations_.normal_force(formulation_, y.data(), c, i, branches_);
   }
   return out;
 }
@@ -465,7 +531,7 @@ void WheelsetSimulation::emit_outputs_until(double t) {
       wheels[i].s_wheel = a.s_wheel + w * (b.s_wheel - a.s_wheel);
       wheels[i].contact_angle = a.contact_angle + w * (b.contact_angle - a.contact_angle);
       wheels[i].normal_force = formulation_ == ContactFormulation::kRigid
-                                   ? equations_.normal_force(formulation_, y.data(), ContactResult{}, static_cast<int>(i))
+                                   ? equations_.normal_force(formulation_, y.data(), ContactResult{}, static_cast<int>(i), branches_)
                                    : a.normal_force + w * (b.normal_force - a.normal_force);
     }
     if (on_output_) on_output_(snapshot_of(y, next_output_, wheels));
@@ -518,7 +584,7 @@ void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
   const ContactFormulation from = formulation_;
   const ContactFormulation to = formulation_of(*next);
   const std::shared_ptr<ContactEvaluator> previous = contact_;
-  const std::array<double, 2> previous_tracked = tracked_s_;
+  const FollowedBranches previous_branches = branches_;
   std::vector<double> y = current_state();
   const double z_acceleration = yp_->data()[kUnknownZDot];
   const double roll_acceleration = yp_->data()[kUnknownRollDot];
@@ -529,9 +595,14 @@ void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
       const ContactResult& c = contact_at(y.data());
       for (int i = 0; i < 2; ++i) normal_forces[static_cast<size_t>(i)] = equations_.normal_force(from, y.data(), c, i);
     }
+    if (from == ContactFormulation::kRigid && branches_.any_two_point()) {
+      // The new model starts in one-point contact: each wheel's load on its first point.
+      for (int i = 0; i < 2; ++i) y[kUnknownNormalLeft + i] += y[kUnknownSecondNormalLeft + i];
+      y.resize(kRigidUnknowns);
+    }
     contact_ = next;
     formulation_ = to;
-    tracked_s_ = {kNaN, kNaN};
+    branches_ = FollowedBranches{};
     cache_.clear();
     if (to == ContactFormulation::kRigid) {
       if (from == ContactFormulation::kElastic) {
@@ -553,20 +624,116 @@ void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
   } catch (const std::exception& e) {
     contact_ = previous;
     formulation_ = from;
-    tracked_s_ = previous_tracked;
+    branches_ = previous_branches;
     cache_.clear();
     message_ = "swap to " + next->model() + " at t = " + format_time(t_) + " s failed, keeping " +
                previous->model() + ": " + e.what();
   }
 }
 
+void WheelsetSimulation::switch_wheel(int wheel, double target_s, std::vector<double>& y) {
+  const size_t w = static_cast<size_t>(wheel);
+  // The point it leaves can pair with the target only in one-point contact (a two-point
+  // contact's events leave it for a third point or the survivor of a fold).
+  const double from_s = branches_.two_point(wheel) ? kNaN : branches_.tracked_s[w];
+  const FollowedBranches before = branches_;
+  const std::vector<double> y_before = y;
+  const double load = y[kUnknownNormalLeft + wheel] +
+                      (before.two_point(wheel) ? y[kUnknownSecondNormalLeft + wheel] : 0.0);
+  FollowedBranches single = before;
+  single.tracked_s[w] = target_s;
+  single.second_s[w] = kNaN;
+  // One-point contact on the target: positions onto its gap, velocities onto its constraint
+  // (an inelastic impact).
+  std::vector<double> y_single = y_before;
+  set_branches(single, y_single);
+  y_single[kUnknownNormalLeft + wheel] = load;
+  project_positions(y_single);
+  project_velocities(y_single);
+  if (std::isnan(from_s)) {
+    y = std::move(y_single);
+    return;
+  }
+  // Would the point it leaves separate? Its gap rate under the one-point velocities.
+  FollowedBranches pair = single;
+  pair.second_s[w] = from_s;
+  std::vector<double> y_pair = y_single;
+  set_branches(pair, y_pair);
+  bool from_separates = true;
+  bool pair_valid = false;
+  try {
+    const ContactResult& c = contact_at(y_pair.data());
+    const std::optional<WheelConstraint>& from = c.second_wheels[w];
+    pair_valid = from && std::abs(from->s_wheel - from_s) <= kBranchLostDistance && c.wheels[w].switch_function > 0.0;
+    if (pair_valid) {
+      double rate = 0.0;
+      for (int k = 0; k < kPoseUnknowns; ++k) rate += from->gap_gradient[k] * y_pair[kPoseUnknowns + k];
+      from_separates = rate > 0.0;
+    }
+  } catch (const ContactConfigurationError&) {
+    pair_valid = false;
+  }
+  if (!pair_valid || from_separates) {
+    set_branches(single, y_single);
+    y = std::move(y_single);
+    return;
+  }
+  // Not separating: the impact acts on both points, and the two-point contact's normal forces
+  // decide (both > 0: the sliding mode; one <= 0: that point leaves at once).
+  y_pair = y_before;
+  set_branches(pair, y_pair);
+  y_pair[kUnknownNormalLeft + wheel] = 0.5 * load;
+  y_pair[kUnknownSecondNormalLeft + wheel] = 0.5 * load;
+  std::vector<double> yp_pair;
+  try {
+    project_positions(y_pair);
+    project_velocities(y_pair);
+    consistent_derivatives(y_pair, yp_pair);
+  } catch (const std::exception&) {
+    set_branches(single, y_single);
+    y = std::move(y_single);
+    return;
+  }
+  const double n_target = y_pair[kUnknownNormalLeft + wheel];
+  const double n_from = y_pair[kUnknownSecondNormalLeft + wheel];
+  if (n_target > 0.0 && n_from > 0.0) {
+    ++own_.two_point_entries;
+    y = std::move(y_pair);
+    return;
+  }
+  FollowedBranches stay = pair;
+  stay.second_s[w] = kNaN;
+  if (!(n_from > 0.0)) {
+    // The point it leaves unloads: one-point contact on the target with the impact's velocities.
+    set_branches(stay, y_pair);
+    y_pair[kUnknownNormalLeft + wheel] = load;
+    y = std::move(y_pair);
+    return;
+  }
+  // The target unloads: it only touched; stay on the point it was on.
+  stay.tracked_s[w] = from_s;
+  set_branches(stay, y_pair);
+  y_pair[kUnknownNormalLeft + wheel] = load;
+  y = std::move(y_pair);
+}
+
+void WheelsetSimulation::release_point(int wheel, bool second, std::vector<double>& y) {
+  const size_t w = static_cast<size_t>(wheel);
+  FollowedBranches next = branches_;
+  const double remaining_load = second ? y[kUnknownNormalLeft + wheel] : y[kUnknownSecondNormalLeft + wheel];
+  if (!second) next.tracked_s[w] = next.second_s[w];
+  next.second_s[w] = kNaN;
+  set_branches(next, y);
+  y[kUnknownNormalLeft + wheel] = remaining_load;
+}
+
 void WheelsetSimulation::handle_roots() {
-  int info[kRootCount] = {0, 0, 0, 0};
+  int info[kRootCount] = {0, 0, 0, 0, 0, 0};
   check_sundials(IDAGetRootInfo(ida_.mem(), info), "IDAGetRootInfo");
   ++own_.root_returns;
   std::vector<double> y = current_state();
   for (int i = 0; i < 2; ++i) {
-    if (info[2 + i] != 0) {
+    if (info[2 + i] != 0 && !branches_.two_point(i)) {
       std::ostringstream msg;
       msg << "the " << (i == 0 ? "left" : "right") << " wheel lifts off its rail at t = " << format_time(t_)
           << " s (its normal force falls to 0): the rigid formulation keeps both wheels on their rails; use an "
@@ -577,15 +744,50 @@ void WheelsetSimulation::handle_roots() {
   }
   const ContactResult c = contact_at(y.data());
   for (int i = 0; i < 2; ++i) {
+    const size_t w = static_cast<size_t>(i);
+    if (branches_.two_point(i) && (info[2 + i] != 0 || info[4 + i] != 0)) {
+      // One point of a two-point contact unloads: the sliding mode ends, the other point carries on.
+      const bool second = info[4 + i] != 0;
+      const double released = second ? branches_.second_s[w] : branches_.tracked_s[w];
+      const double kept = second ? branches_.tracked_s[w] : branches_.second_s[w];
+      switch_log_.push_back({t_, i, released, kept});
+      release_point(i, second, y);
+      ++own_.contact_switches;
+      continue;
+    }
     if (info[i] == 0) continue;
-    const WheelConstraint& w = c.wheels[static_cast<size_t>(i)];
-    switch_log_.push_back({t_, i, w.s_wheel, w.switch_s_wheel});
-    tracked_s_[static_cast<size_t>(i)] = w.switch_s_wheel;
+    const WheelConstraint& wc = c.wheels[w];
+    switch_log_.push_back({t_, i, wc.s_wheel, wc.switch_s_wheel});
+    switch_wheel(i, wc.switch_s_wheel, y);
     ++own_.contact_switches;
   }
-  cache_.clear();
-  project_positions(y);
-  project_velocities(y);
+  restart_on_right_branches(y);
+}
+
+void WheelsetSimulation::restart_on_right_branches(std::vector<double>& y) {
+  // A new segment starts with every followed point the lowest (the projections may have moved
+  // another one below it): switch again until it does.
+  for (int round = 0;; ++round) {
+    cache_.clear();
+    project_positions(y);
+    project_velocities(y);
+    const ContactResult c = contact_at(y.data());
+    const std::array<double, 2> excess = branch_excess(c);
+    int wrong = -1;
+    for (int i = 0; i < 2 && wrong < 0; ++i)
+      if (excess[static_cast<size_t>(i)] > kBranchTolerance) wrong = i;
+    if (wrong < 0) break;
+    if (round >= kMaxSwitchesPerEvent) {
+      std::ostringstream msg;
+      msg << "the " << (wrong == 0 ? "left" : "right") << " wheel's contact point finds no branch that is the lowest"
+          << " at t = " << format_time(t_) << " s after " << kMaxSwitchesPerEvent << " switches";
+      throw std::runtime_error(msg.str());
+    }
+    const WheelConstraint& wc = c.wheels[static_cast<size_t>(wrong)];
+    switch_log_.push_back({t_, wrong, wc.s_wheel, wc.switch_s_wheel});
+    switch_wheel(wrong, wc.switch_s_wheel, y);
+    ++own_.contact_switches;
+  }
   begin_segment(y, false);
   record_step_contact(true);
 }
@@ -616,6 +818,8 @@ bool WheelsetSimulation::advance() {
       fail(msg.str());
       return false;
     }
+    for (int i = 0; i < 2; ++i)
+      if (branches_.two_point(i)) own_.two_point_time += t_reached - t_;
     t_ = t_reached;
     record_step_contact(false);
     emit_outputs_until(t_);
@@ -623,9 +827,29 @@ bool WheelsetSimulation::advance() {
       handle_roots();
       if (state_ != RunState::kRunning) return false;
     } else if (formulation_ == ContactFormulation::kRigid) {
-      // Follow the branches with the accepted step (the event functions were evaluated there).
+      // Follow the branches with the accepted step (the event functions were evaluated there),
+      // and check that every followed point is the lowest: a switch the root finding did not see
+      // (an event function that starts a segment below 0, or crosses 0 and back within a step)
+      // is taken here.
       const ContactResult c = contact_at(y_->data());
-      tracked_s_ = {c.wheels[0].s_wheel, c.wheels[1].s_wheel};
+      const std::array<double, 2> excess = branch_excess(c);
+      bool missed = false;
+      for (int i = 0; i < 2; ++i) {
+        own_.max_branch_excess = std::max(own_.max_branch_excess, excess[static_cast<size_t>(i)]);
+        missed = missed || excess[static_cast<size_t>(i)] > kBranchTolerance;
+      }
+      if (missed) {
+        ++own_.missed_switches;
+        ++own_.root_returns;
+        std::vector<double> y = current_state();
+        restart_on_right_branches(y);
+      } else {
+        for (int i = 0; i < 2; ++i) {
+          const size_t w = static_cast<size_t>(i);
+          branches_.tracked_s[w] = c.wheels[w].s_wheel;
+          if (branches_.two_point(i)) branches_.second_s[w] = c.second_wheels[w]->s_wheel;
+        }
+      }
     }
     if (flag == IDA_TSTOP_RETURN && t_ >= t_end) {
       state_ = RunState::kFinished;

@@ -116,7 +116,21 @@ class WheelsetSimulation {
   };
   const ContactResult& contact_at(const double* y);
   std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch);
-  int query_length() const;
+  /// Unknowns of the current formulation and branches (unknown_count()).
+  int unknowns() const;
+  /// Follows other branches: the state resized to their layout, the contact cache cleared.
+  void set_branches(const FollowedBranches& branches, std::vector<double>& y);
+  /// Wheel i leaves its branch for the point at target_s [m] (an event, or a switch the branch
+  /// check found at a step): one-point contact on the target, or, where one-point contact would
+  /// at once switch back (the point it leaves is not separating and two-point contact loads both
+  /// points), rigid two-point contact on both: Filippov's sliding mode on the switching surface.
+  /// Sets branches_ and the state y (positions and velocities projected).
+  void switch_wheel(int wheel, double target_s, std::vector<double>& y);
+  /// Releases the point of wheel i whose normal force fell to 0 (second: the second point).
+  void release_point(int wheel, bool second, std::vector<double>& y);
+  /// How far a followed point is above the lowest minimum (or past a fold) at the contact of y,
+  /// per wheel [m] (<= 0 on the right branch): -switch_function.
+  std::array<double, 2> branch_excess(const ContactResult& c) const;
 
   void project_positions(std::vector<double>& y);
   void project_velocities(std::vector<double>& y);
@@ -126,6 +140,9 @@ class WheelsetSimulation {
   void begin_segment(std::vector<double> y, bool first);
   void perform_swap(std::shared_ptr<ContactEvaluator> next);
   void handle_roots();
+  /// Projects y onto the constraints, switches every wheel whose followed point is not the lowest
+  /// (at most kMaxSwitchesPerEvent times) and restarts the integrator there.
+  void restart_on_right_branches(std::vector<double>& y);
   /// The contact of each wheel at the state y (one contact evaluation, usually cached).
   std::array<WheelOutput, 2> wheel_outputs(const std::vector<double>& y);
   /// Every output sample up to t: the state interpolated by IDA, the contact data linearly
@@ -146,7 +163,7 @@ class WheelsetSimulation {
   WheelsetEquations equations_;
   std::shared_ptr<ContactEvaluator> contact_;
   ContactFormulation formulation_ = ContactFormulation::kRigid;
-  std::array<double, 2> tracked_s_;
+  FollowedBranches branches_;
   std::function<void(const WheelsetSnapshot&)> on_output_;
 
   SundialsContext ctx_;

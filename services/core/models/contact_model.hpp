@@ -7,6 +7,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,6 +54,16 @@ struct ContactQuery {
   /// whose contact point cannot jump ignore it (see WheelConstraint::switch_function).
   std::array<double, 2> tracked_s_wheel{std::numeric_limits<double>::quiet_NaN(),
                                         std::numeric_limits<double>::quiet_NaN()};
+  /// Rigid two-point contact of the left [0] and right [1] wheel: the wheel profile coordinate s
+  /// of a second contact point the caller holds in contact besides tracked_s_wheel [m] (the
+  /// sliding mode where two minima of the distance are equally low and the one-point contact
+  /// point would chatter between them, docs/dynamics.md); NaN: one point. Only kRigid, and only
+  /// models whose contact point jumps (onepoint) use it; the others ignore it and answer no
+  /// ContactResult::second_wheels.
+  std::array<double, 2> second_tracked_s_wheel{std::numeric_limits<double>::quiet_NaN(),
+                                               std::numeric_limits<double>::quiet_NaN()};
+  /// kRigid: normal load on the second point of a wheel in two-point contact [N] (>= 0).
+  std::array<double, 2> second_normal_load{0.0, 0.0};
 };
 
 /// switch_function of a model whose contact point never jumps [m].
@@ -100,6 +111,10 @@ struct ContactPatch {
 struct ContactResult {
   std::vector<ContactPatch> patches;
   std::array<WheelConstraint, 2> wheels;  ///< left [0] and right [1] wheel, always both
+  /// The second point's constraint of a wheel in rigid two-point contact, where the query asked
+  /// for one (ContactQuery::second_tracked_s_wheel) and the model supports it; its
+  /// switch_function is 1 (the pair's events are in wheels[i]).
+  std::array<std::optional<WheelConstraint>, 2> second_wheels;
   Eigen::Vector3d force{0, 0, 0};   ///< resultant of normal and creep forces on the wheelset, track frame [N]
   Eigen::Vector3d moment{0, 0, 0};  ///< resultant moment about the wheelset centre, track frame [N m]
   Eigen::Vector3d creep_force{0, 0, 0};   ///< resultant of the creep forces alone, track frame [N]

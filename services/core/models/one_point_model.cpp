@@ -1,6 +1,8 @@
 #include "core/models/one_point_model.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -51,12 +53,37 @@ WheelConstraint OnePointModel::add_wheel_patches(WheelSide side, const PatchCont
   const std::vector<ContactPoint> points = geometry_->potential_points(side, pose, options_.search);
   const bool any_minimum = std::any_of(points.begin(), points.end(), [](const ContactPoint& p) { return p.is_minimum; });
   if (!any_minimum) check_common_point(*geometry_, side, nullptr, pose, steepest_flange_);
-  const TrackedBranch branch = track_branch(points, context.query.tracked_s_wheel[static_cast<size_t>(side)]);
+  const size_t wheel = static_cast<size_t>(side);
+  if (context.query.formulation == ContactFormulation::kRigid && !std::isnan(context.query.second_tracked_s_wheel[wheel]))
+    return add_two_point_patches(side, points, context, result);
+  const TrackedBranch branch = track_branch(points, context.query.tracked_s_wheel[wheel]);
   const ContactPoint& point = points[branch.index];
   check_common_point(*geometry_, side, &point, pose, steepest_flange_);
   std::optional<ContactPatch> patch = one_point_patch(point, context, options_.lateral_curvature_floor);
   if (patch) result.patches.push_back(std::move(*patch));
   return exact_point_constraint(point, pose, branch.switch_function, branch.switch_s_wheel);
+}
+
+WheelConstraint OnePointModel::add_two_point_patches(WheelSide side, const std::vector<ContactPoint>& points,
+                                                     const PatchContext& context, ContactResult& result) const {
+  const size_t wheel = static_cast<size_t>(side);
+  const WheelsetPose& pose = context.query.pose;
+  const TwoPointBranches pair =
+      track_two_point(points, context.query.tracked_s_wheel[wheel], context.query.second_tracked_s_wheel[wheel]);
+  const ContactPoint& first = points[pair.first];
+  const ContactPoint& second = points[pair.second];
+  check_common_point(*geometry_, side, &first, pose, steepest_flange_);
+  check_common_point(*geometry_, side, &second, pose, steepest_flange_);
+  // Each point carries its own load (a vanished second point, pair.second == pair.first, carries
+  // none: the event function is negative there and the caller leaves the pair).
+  std::optional<ContactPatch> patch = one_point_patch(first, context, options_.lateral_curvature_floor);
+  if (patch) result.patches.push_back(std::move(*patch));
+  const double second_load = context.query.second_normal_load[wheel];
+  if (pair.second != pair.first && second_load > 0.0)
+    result.patches.push_back(
+        patch_from_force(second, contact_shape(second, options_.lateral_curvature_floor), second_load, context));
+  result.second_wheels[wheel] = exact_point_constraint(second, pose, kNoSwitch, std::numeric_limits<double>::quiet_NaN());
+  return exact_point_constraint(first, pose, pair.switch_function, pair.switch_s_wheel);
 }
 
 }  // namespace wrc

@@ -4,6 +4,7 @@
 /// point, the potential common point with the smallest distance, from the exact geometry.
 
 #include <memory>
+#include <vector>
 
 #include "core/models/hertzian_model.hpp"
 
@@ -12,7 +13,10 @@ namespace wrc {
 /// Model "onepoint". Per wheel, the common point at the query pose (a full potential-point scan
 /// of the exact geometry, so the point jumps where the global minimum of the distance jumps).
 ///  - kRigid: the wheel's normal_load is the normal force N along the contact normal; Hertz from
-///    force; penetration reported as 0. A wheel with load 0 gets no patch.
+///    force; penetration reported as 0. A wheel with load 0 gets no patch. The caller follows a
+///    branch (tracked_s_wheel, event function of track_branch()); a wheel with a
+///    second_tracked_s_wheel is in rigid two-point contact (track_two_point()): two patches with
+///    their own loads and the second constraint in ContactResult::second_wheels.
 ///  - kElastic: penetration delta = -distance cos(contact_angle) (normal_penetration()), the
 ///    vertical overlap at the query's z projected on the normal; N = C_H delta^{3/2} when
 ///    delta > 0, otherwise the wheel gets no patch (lifted).
@@ -29,6 +33,11 @@ class OnePointModel final : public HertzianContactModel {
  private:
   WheelConstraint add_wheel_patches(WheelSide side, const PatchContext& context,
                                     ContactResult& result) const override;
+  /// Rigid two-point contact of one wheel (ContactQuery::second_tracked_s_wheel): a patch at each
+  /// of the two followed minima with its own load, the second point's constraint in
+  /// result.second_wheels, the pair's event function (track_two_point()) in the returned one.
+  WheelConstraint add_two_point_patches(WheelSide side, const std::vector<ContactPoint>& points,
+                                        const PatchContext& context, ContactResult& result) const;
 };
 
 /// The common point of one wheel at pose, or ContactConfigurationError naming the wheel and the

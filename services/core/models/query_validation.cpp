@@ -46,6 +46,14 @@ void validate_contact_query(const ContactQuery& q) {
     reject("normal_load[0] (left) [N]", q.normal_load[0], "must be non-negative and finite");
   if (!(q.normal_load[1] >= 0.0) || !std::isfinite(q.normal_load[1]))
     reject("normal_load[1] (right) [N]", q.normal_load[1], "must be non-negative and finite");
+  if (!(q.second_normal_load[0] >= 0.0) || !std::isfinite(q.second_normal_load[0]))
+    reject("second_normal_load[0] (left) [N]", q.second_normal_load[0], "must be non-negative and finite");
+  if (!(q.second_normal_load[1] >= 0.0) || !std::isfinite(q.second_normal_load[1]))
+    reject("second_normal_load[1] (right) [N]", q.second_normal_load[1], "must be non-negative and finite");
+  if (std::isinf(q.second_tracked_s_wheel[0]))
+    reject("second_tracked_s_wheel[0] (left) [m]", q.second_tracked_s_wheel[0], "must be finite or NaN (none)");
+  if (std::isinf(q.second_tracked_s_wheel[1]))
+    reject("second_tracked_s_wheel[1] (right) [m]", q.second_tracked_s_wheel[1], "must be finite or NaN (none)");
   if (q.formulation != ContactFormulation::kRigid && q.formulation != ContactFormulation::kElastic)
     reject("formulation", static_cast<double>(q.formulation), "is not kRigid or kElastic");
   const ContactMaterial& m = q.material;

@@ -1,8 +1,10 @@
 #include "core/models/wheel_constraint.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include <Eigen/Geometry>
 
@@ -75,6 +77,58 @@ TrackedBranch track_branch(const std::vector<ContactPoint>& points, double track
       branch.switch_function = std::min(branch.switch_function, points[k].distance - d);
   }
   return branch;
+}
+
+TwoPointBranches track_two_point(const std::vector<ContactPoint>& points, double tracked_s, double second_s) {
+  const size_t none = points.size();
+  auto nearest = [&](double s, size_t excluded) {
+    size_t best = none;
+    for (size_t k = 0; k < points.size(); ++k) {
+      if (!points[k].is_minimum || k == excluded) continue;
+      if (best == none || std::abs(points[k].s - s) < std::abs(points[best].s - s)) best = k;
+    }
+    return best;
+  };
+  const size_t first = nearest(tracked_s, none);
+  if (first == none) throw std::invalid_argument("track_two_point: no local minimum among the potential points");
+  const size_t second = nearest(second_s, first);
+  TwoPointBranches pair;
+  pair.first = first;
+  pair.second = second == none ? first : second;
+  const bool first_lost = std::abs(points[first].s - tracked_s) > kBranchLostDistance;
+  const bool second_lost = second == none || std::abs(points[second].s - second_s) > kBranchLostDistance;
+  if (first_lost || second_lost) {
+    size_t target = first;
+    if (first_lost && !second_lost) {
+      target = second;
+    } else if (first_lost) {
+      for (size_t k = 0; k < points.size(); ++k)
+        if (points[k].is_minimum && points[k].distance < points[target].distance) target = k;
+    }
+    pair.switch_function = -kBranchLostDistance;
+    pair.switch_s_wheel = points[target].s;
+    return pair;
+  }
+  const double lower = std::min(points[first].distance, points[second].distance);
+  pair.switch_function = kNoSwitch;
+  pair.switch_s_wheel = points[first].s;
+  for (size_t k = 0; k < points.size(); ++k) {
+    if (k == first || k == second || !points[k].is_minimum) continue;
+    if (points[k].distance - lower < pair.switch_function) {
+      pair.switch_function = points[k].distance - lower;
+      pair.switch_s_wheel = points[k].s;
+    }
+  }
+  for (const auto& [member, other] : {std::pair{first, second}, std::pair{second, first}}) {
+    for (size_t k : {member - 1, member + 1}) {  // member - 1 wraps to a huge index at 0
+      if (k >= points.size() || points[k].is_minimum) continue;
+      if (points[k].distance - points[member].distance < pair.switch_function) {
+        pair.switch_function = points[k].distance - points[member].distance;
+        pair.switch_s_wheel = points[other].s;
+      }
+    }
+  }
+  return pair;
 }
 
 }  // namespace wrc

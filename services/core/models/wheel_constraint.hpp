@@ -59,4 +59,25 @@ struct TrackedBranch {
 /// @throws std::invalid_argument when points holds no minimum.
 TrackedBranch track_branch(const std::vector<ContactPoint>& points, double tracked_s);
 
+/// The two minima a wheel in rigid two-point contact follows (ContactQuery::second_tracked_s_wheel).
+struct TwoPointBranches {
+  size_t first = 0;                    ///< index of the minimum nearest tracked_s
+  size_t second = 0;                   ///< index of the other minimum nearest second_s (== first: none)
+  double switch_function = kNoSwitch;  ///< > 0 while both are minima and no third one is lower [m]
+  double switch_s_wheel = 0;           ///< s to follow alone after its root [m]
+};
+
+/// Chooses the two followed minima among points (as track_branch(), the second one other than the
+/// first). The event function is the smallest of (distance of a third minimum - the lower of the
+/// pair's distances), with that minimum as the target, and (distance of a maximum next to one of
+/// the pair - that one's distance), with the other one of the pair as the target: the pair is
+/// left where a third point becomes lower or one of the pair merges with a maximum and vanishes.
+/// A pair member that has vanished already (no minimum within kBranchLostDistance of its tracked
+/// s, or no second minimum at all) gives -kBranchLostDistance with the surviving one (or the
+/// lowest minimum) as the target. Where both lie within a normal force's reach of each other the
+/// caller's constraints hold both distances at 0; releasing one is the caller's event (its normal
+/// force falling through 0).
+/// @throws std::invalid_argument when points holds no minimum.
+TwoPointBranches track_two_point(const std::vector<ContactPoint>& points, double tracked_s, double second_s);
+
 }  // namespace wrc

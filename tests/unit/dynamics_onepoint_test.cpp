@@ -1,0 +1,169 @@
+// Rigid one-point contact in the wheelset dynamics (WheelsetSimulation with the onepoint model,
+// in-process), checked against the exact geometry independently of the model's own event
+// functions: at every accepted step each wheel follows the lowest minimum of its distance
+// function; the benchmark settles on the exact rigid manifold, in rigid two-point contact on the
+// right wheel (the sliding mode where tread and flange-root minima are equally low), from starts
+// perturbed at rounding level alike; every yaw stiffness of docs/dynamics.md's table finishes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "core/dynamics/wheelset_simulation.hpp"
+#include "core/geometry/rigid_wheelset.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "spline_test_model.hpp"
+
+namespace wrc {
+namespace {
+
+constexpr double kR0 = 0.46;  // nominal radius of the default track [m]
+
+std::shared_ptr<ContactEvaluator> onepoint() {
+  return std::make_shared<InProcessContact>(make_contact_model("onepoint", test::s1002_uic60_geometry()));
+}
+
+struct WheelCheck {
+  double excess = 0;       // followed point's distance minus the lowest minimum's [m]
+  double lowest = 0;       // the lowest minimum's distance (0 on the rigid manifold) [m]
+  double second_gap = 0;   // next lowest minimum minus the lowest [m] (inf: only one)
+  bool followed_is_minimum = false;
+};
+
+// The followed point s of one wheel at a state, against every potential point of the exact
+// geometry there (a scan of its own, not the model's event function).
+WheelCheck check_wheel(const WheelsetSnapshot& s, int wheel) {
+  WheelsetPose pose;
+  pose.y = s.y;
+  pose.z = s.z;
+  pose.roll = s.roll;
+  pose.yaw = s.yaw;
+  const std::vector<ContactPoint> points =
+      test::s1002_uic60_geometry()->potential_points(static_cast<WheelSide>(wheel), pose, PotentialPointSearch{});
+  WheelCheck c;
+  std::vector<double> minima;
+  const ContactPoint* followed = nullptr;
+  for (const ContactPoint& p : points) {
+    if (!followed || std::abs(p.s - s.wheels[static_cast<size_t>(wheel)].s_wheel) <
+                         std::abs(followed->s - s.wheels[static_cast<size_t>(wheel)].s_wheel))
+      followed = &p;
+    if (p.is_minimum) minima.push_back(p.distance);
+  }
+  std::sort(minima.begin(), minima.end());
+  c.lowest = minima.front();
+  c.second_gap = minima.size() > 1 ? minima[1] - minima[0] : std::numeric_limits<double>::infinity();
+  c.followed_is_minimum = followed->is_minimum && std::abs(followed->s - s.wheels[static_cast<size_t>(wheel)].s_wheel) < 1e-9;
+  c.excess = followed->distance - c.lowest;
+  return c;
+}
+
+// Steps a run to its end, checking both wheels after every accepted step.
+WheelsetSnapshot run_checked(WheelsetSimulation& sim, double* worst_excess, double* worst_gap) {
+  sim.start();
+  *worst_excess = 0.0;
+  *worst_gap = 0.0;
+  long steps = 0;
+  while (sim.advance()) {
+    const WheelsetSnapshot s = sim.snapshot();
+    for (int i = 0; i < 2; ++i) {
+      const WheelCheck c = check_wheel(s, i);
+      EXPECT_TRUE(c.followed_is_minimum) << "wheel " << i << " at t = " << s.t << " follows s = " << s.wheels[i].s_wheel
+                                         << ", not a minimum of the exact distance";
+      *worst_excess = std::max(*worst_excess, c.excess);
+      *worst_gap = std::max(*worst_gap, std::abs(c.lowest));
+    }
+    ++steps;
+  }
+  EXPECT_EQ(sim.state(), RunState::kFinished) << sim.message();
+  EXPECT_GT(steps, 100);
+  return sim.snapshot();
+}
+
+// The benchmark (k_x = 1.5e7 N/m) from y0 = 0 and 1e-7 m: the lateral balance lies in the right
+// wheel's jump between tread (s = -17.7 mm) and flange root (-28.6 mm), so the one-point model
+// switches, bounces between the two, and slides in rigid two-point contact. The followed point is
+// the lowest minimum at every step (1e-9 m, the branch check's bound; root finding places the
+// switches within ~1e-15 m), the wheels sit on their rails (the lowest distance within the
+// integrator's position tolerance 1e-8 m), and the end is the exact rigid wheelset at the final y
+// and yaw (z and roll within 1e-8 m and 1e-8 rad, well inside the 2 um / 2 urad asked), with two
+// equally low minima on the right wheel. The two starts end within 1 um of each other.
+TEST(OnePointDynamics, BenchmarkFollowsTheLowestMinimumAndEndsOnTheRigidManifold) {
+  std::vector<WheelsetSnapshot> ends;
+  for (double y0 : {0.0, 1e-7}) {
+    RunSpec spec;
+    spec.initial.y = y0;
+    spec.integrator.t_end = 0.8;
+    WheelsetSimulation sim(spec, onepoint(), kR0);
+    double worst_excess = 0.0, worst_gap = 0.0;
+    const WheelsetSnapshot end = run_checked(sim, &worst_excess, &worst_gap);
+    const RunCounters c = sim.counters();
+    EXPECT_LE(worst_excess, 1e-9) << "y0 = " << y0;
+    EXPECT_LE(c.max_branch_excess, 1e-9);
+    EXPECT_LT(worst_gap, 1e-8) << "y0 = " << y0;
+    EXPECT_GE(c.two_point_entries, 1);
+    EXPECT_GT(c.two_point_time, 0.3);  // sliding from about 0.42 s on
+    const RigidContact exact = RigidWheelsetSolver(*test::s1002_uic60_geometry()).solve(end.y, end.yaw);
+    EXPECT_NEAR(end.z, exact.pose.z, 1e-8) << "y0 = " << y0;
+    EXPECT_NEAR(end.roll, exact.pose.roll, 1e-8) << "y0 = " << y0;
+    EXPECT_LT(check_wheel(end, 1).second_gap, 1e-9);  // the right wheel touches at both minima
+    std::cout << "[ measured ] onepoint benchmark to 0.8 s from y0 = " << y0 << ": y " << end.y << " m, yaw "
+              << end.yaw << " rad, z - exact " << end.z - exact.pose.z << " m, roll - exact "
+              << end.roll - exact.pose.roll << " rad, " << c.steps << " steps, " << c.contact_switches
+              << " switches, " << c.two_point_time << " s in two-point contact, worst excess " << worst_excess
+              << " m\n";
+    ends.push_back(end);
+  }
+  EXPECT_NEAR(ends[0].y, ends[1].y, 1e-6);
+  EXPECT_NEAR(ends[0].yaw, ends[1].yaw, 1e-6);
+}
+
+// Every row of docs/dynamics.md's yaw-stiffness table finishes 2 s with the followed point the
+// lowest at every step (the model's branch check: its event function is the height of the
+// followed point above the lowest other minimum); where the balance lies in the flange-root jump
+// (1.3e7 - 1.6e7 N/m, once the runs IDA could not finish at 1.3e7 and 1.4e7) the wheelset ends in
+// two-point contact, elsewhere in one-point contact on either side of the jump.
+TEST(OnePointDynamics, EveryYawStiffnessOfTheTableFinishes) {
+  for (double kx : {1.2e5, 4e6, 1e7, 1.3e7, 1.4e7, 1.6e7, 2e7, 1e8}) {
+    RunSpec spec;
+    spec.wheelset.suspension.longitudinal_stiffness = kx;
+    spec.integrator.output_period = 0.5;
+    WheelsetSimulation sim(spec, onepoint(), kR0);
+    sim.run();
+    ASSERT_EQ(sim.state(), RunState::kFinished) << "k_x = " << kx << ": " << sim.message();
+    const RunCounters c = sim.counters();
+    EXPECT_LE(c.max_branch_excess, 1e-9) << "k_x = " << kx;
+    const bool in_jump = kx >= 1.3e7 && kx <= 1.6e7;
+    EXPECT_EQ(c.two_point_entries > 0, in_jump) << "k_x = " << kx;
+    const WheelsetSnapshot end = sim.snapshot();
+    EXPECT_EQ(check_wheel(end, 1).second_gap < 1e-9, in_jump) << "k_x = " << kx;
+    std::cout << "[ measured ] k_x " << kx << ": y " << end.y << " m, yaw " << end.yaw << " rad, " << c.steps
+              << " steps, " << c.restarts << " restarts, " << c.two_point_entries << " two-point entries\n";
+  }
+}
+
+// Mirror symmetry: the load towards the left rail gives the mirrored run, two-point contact on the
+// left wheel (y, roll and yaw change sign; z stays), to the integration tolerance.
+TEST(OnePointDynamics, MirroredLoadGivesMirroredTwoPointContact) {
+  RunSpec spec;
+  spec.integrator.t_end = 0.8;
+  RunSpec mirrored = spec;
+  mirrored.wheelset.lateral_force = -spec.wheelset.lateral_force;
+  WheelsetSimulation a(spec, onepoint(), kR0), b(mirrored, onepoint(), kR0);
+  a.run();
+  b.run();
+  ASSERT_EQ(a.state(), RunState::kFinished) << a.message();
+  ASSERT_EQ(b.state(), RunState::kFinished) << b.message();
+  const WheelsetSnapshot sa = a.snapshot(), sb = b.snapshot();
+  EXPECT_NEAR(sa.y, -sb.y, 1e-7);
+  EXPECT_NEAR(sa.yaw, -sb.yaw, 1e-6);
+  EXPECT_NEAR(sa.roll, -sb.roll, 1e-7);
+  EXPECT_NEAR(sa.z, sb.z, 1e-8);
+  EXPECT_LT(check_wheel(sb, 0).second_gap, 1e-9);
+}
+
+}  // namespace
+}  // namespace wrc

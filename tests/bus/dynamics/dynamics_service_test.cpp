@@ -185,8 +185,9 @@ TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
   auto launcher = launch({"contact-multipoint", "dynamics"}, log);
   for (const char* model : {"multipoint", "dynamicsd"})
     ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
-  // Long enough (about 10 s of wall time) for `wrc status` and `wrc swap` to act while it runs.
-  const std::vector<std::string> args = run_args("multipoint", 25.0, temp_path("refused.json"));
+  // Long enough (about 8 s of wall time here, 2 s of it for 25 s simulated) for `wrc status`
+  // (1.2 s) and `wrc swap` to act while it runs.
+  const std::vector<std::string> args = run_args("multipoint", 100.0, temp_path("refused.json"));
   // The run's progress_t: fraction of the simulated interval, with the time remaining once it moves.
   std::vector<progress_t> progress;
   GuardedSubscription<progress_t> progress_sub(*lcm_, names_.name(channel::kProgress), "test progress",

@@ -98,15 +98,18 @@ void print_patches(const wrc::contact_reply_t& reply, const std::string& format)
     return std::string(buf);
   };
   const std::vector<std::string> header{"wheel", "s", "angle", "a", "b", "penetration", "normal_force", "fx", "fy",
-                                        "mz", "xi_x", "xi_y", "spin", "rolling_radius", "s_rail", "x", "y", "z"};
+                                        "mz", "xi_x", "xi_y", "spin", "rolling_radius", "s_rail", "x", "y", "z",
+                                        "lateral_curvature_floored"};
   std::vector<std::vector<std::string>> rows;
+  int floored = 0;
   for (const auto& result : reply.results) {
     for (const auto& p : result.patches) {
+      floored += p.lateral_curvature_floored != 0;
       rows.push_back({p.wheel == wrc::contact_patch_t::LEFT ? "left" : "right", cell(p.s_wheel),
                       cell(p.contact_angle), cell(p.a), cell(p.b), cell(p.penetration), cell(p.normal_force),
                       cell(p.fx), cell(p.fy), cell(p.mz), cell(p.creepage_x), cell(p.creepage_y),
                       cell(p.spin_creepage), cell(p.rolling_radius), cell(p.s_rail), cell(p.wheel_point[0]),
-                      cell(p.wheel_point[1]), cell(p.wheel_point[2])});
+                      cell(p.wheel_point[1]), cell(p.wheel_point[2]), p.lateral_curvature_floored ? "1" : "0"});
     }
   }
   std::ostringstream out;
@@ -133,6 +136,10 @@ void print_patches(const wrc::contact_reply_t& reply, const std::string& format)
     for (const auto& row : rows) line(row);
   }
   std::cout << out.str();
+  if (floored > 0)
+    std::cerr << "query: " << floored << " patch" << (floored > 1 ? "es" : "")
+              << " in conformal contact (lateral_curvature_floored = 1: the lateral relative curvature was raised to "
+                 "the floor, b/a beyond Kalker's table): Hertz does not hold there\n";
 }
 
 // ---- the command ---------------------------------------------------------------------------------
@@ -164,7 +171,8 @@ int run_query(const std::vector<std::string>& args) {
   if (o.help_requested()) {
     std::cout << o.help()
               << "\nSends one contact query to a service of model M and prints one row per contact patch:\n"
-                 "wheel,s,angle,a,b,penetration,normal_force,fx,fy,mz,xi_x,xi_y,spin,rolling_radius,s_rail,x,y,z\n"
+                 "wheel,s,angle,a,b,penetration,normal_force,fx,fy,mz,xi_x,xi_y,spin,rolling_radius,s_rail,x,y,z,\n"
+                 "lateral_curvature_floored (1: conformal contact, the lateral curvature floored; Hertz does not hold)\n"
                  "(a rolling, b lateral semi-axis; forces on the wheel in the contact frame; x,y,z the contact\n"
                  "point on the wheel, track frame; SI units). The service is a READY instance of M heard on\n"
                  "HEARTBEAT that computes with the same profiles and track (smallest instance name first); when\n"

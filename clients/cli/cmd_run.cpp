@@ -108,6 +108,8 @@ nlohmann::json summary_json(const run_summary_t& s, const dynamics::RunRequest& 
                    {"two_point_entries", c.two_point_entries},
                    {"two_point_time", c.two_point_time},
                    {"max_branch_excess", c.max_branch_excess},
+                   {"floored_patches", c.floored_patches},
+                   {"floored_time", c.floored_time},
                    {"last_order", c.last_order},
                    {"last_step", c.last_step}};
   nlohmann::json swaps = nlohmann::json::array();
@@ -309,6 +311,12 @@ int run_run(const std::vector<std::string>& args) {
             << " rad; " << summary->wall_time << " s wall, " << summary->stats.steps << " steps, "
             << summary->stats.restarts << " restarts"
             << (summary->message.empty() ? "" : " (" + summary->message + ")") << "\n";
+  if (summary->stats.two_point_entries > 0)
+    std::cerr << "run: rigid two-point contact (sliding between two equally low minima) entered "
+              << summary->stats.two_point_entries << " times, " << summary->stats.two_point_time << " s in all\n";
+  if (summary->stats.floored_patches > 0)
+    std::cerr << "run: conformal contact at " << summary->stats.floored_patches << " patches of accepted steps ("
+              << summary->stats.floored_time << " s): the lateral curvature was floored, Hertz does not hold there\n";
   const bool ok = summary->state == run_status_t::FINISHED;
   for (auto& s : started) ok ? s->stop_and_forget() : s->stop();
   return ok ? 0 : 1;

@@ -249,6 +249,7 @@ void to_result_message(const ContactResult& result, wrc::contact_result_t& messa
     m.fx = p.forces.fx;
     m.fy = p.forces.fy;
     m.mz = p.forces.mz;
+    m.lateral_curvature_floored = p.lateral_curvature_floored ? 1 : 0;
   }
   for (std::size_t i = 0; i < 2; ++i) to_constraint_message(result.wheels[i], message.wheels[i]);
   message.second_wheel_side.clear();
@@ -291,6 +292,7 @@ ContactResult from_result_message(const wrc::contact_result_t& m) {
     out.forces.fx = p.fx;
     out.forces.fy = p.fy;
     out.forces.mz = p.mz;
+    out.lateral_curvature_floored = p.lateral_curvature_floored != 0;
     r.patches.push_back(out);
   }
   for (std::size_t i = 0; i < 2; ++i) r.wheels[i] = from_constraint_message(m.wheels[i]);

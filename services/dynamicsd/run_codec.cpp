@@ -215,6 +215,8 @@ integrator_stats_t to_stats_message(const RunCounters& c, const std::string& run
   m.two_point_entries = c.two_point_entries;
   m.two_point_time = c.two_point_time;
   m.max_branch_excess = c.max_branch_excess;
+  m.floored_patches = c.floored_patches;
+  m.floored_time = c.floored_time;
   return m;
 }
 

@@ -3,7 +3,8 @@
 // functions: at every accepted step each wheel follows the lowest minimum of its distance
 // function; the benchmark settles on the exact rigid manifold, in rigid two-point contact on the
 // right wheel (the sliding mode where tread and flange-root minima are equally low), from starts
-// perturbed at rounding level alike; every yaw stiffness of docs/dynamics.md's table finishes.
+// perturbed at rounding level alike; every yaw stiffness of docs/dynamics.md's table finishes;
+// and the run counters' conformal patches.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -163,6 +164,40 @@ TEST(OnePointDynamics, MirroredLoadGivesMirroredTwoPointContact) {
   EXPECT_NEAR(sa.roll, -sb.roll, 1e-7);
   EXPECT_NEAR(sa.z, sb.z, 1e-8);
   EXPECT_LT(check_wheel(sb, 0).second_gap, 1e-9);
+}
+
+// Conformal patches are visible in a run's counters: the multi-point benchmark (elastic: a patch
+// and its flag depend on the pose alone) counts, over its accepted steps, exactly the floored
+// patches an independent evaluation of the model at each step's state finds, and the time of
+// those steps.
+TEST(RunCounters, FlooredPatchesAreCountedAtEveryAcceptedStep) {
+  RunSpec spec;
+  spec.integrator.t_end = 1.0;
+  const std::shared_ptr<const ContactModel> model = make_contact_model("multipoint", test::s1002_uic60_geometry());
+  WheelsetSimulation sim(spec, std::make_shared<InProcessContact>(model), kR0);
+  sim.start();
+  long floored = 0;
+  double floored_time = 0.0, t = 0.0;
+  while (sim.advance()) {
+    const WheelsetSnapshot s = sim.snapshot();
+    ContactQuery q;
+    q.pose = {s.y, s.z, s.roll, s.yaw};
+    q.formulation = ContactFormulation::kElastic;
+    q.spin_rate = s.spin_rate;
+    q.speed = spec.wheelset.speed;
+    long here = 0;
+    for (const ContactPatch& p : model->evaluate(q).patches) here += p.lateral_curvature_floored ? 1 : 0;
+    floored += here;
+    if (here > 0) floored_time += s.t - t;
+    t = s.t;
+  }
+  ASSERT_EQ(sim.state(), RunState::kFinished) << sim.message();
+  const RunCounters c = sim.counters();
+  EXPECT_GT(floored, 0);  // the right wheel's flange-root patch of the transient is conformal
+  EXPECT_EQ(c.floored_patches, floored);
+  EXPECT_NEAR(c.floored_time, floored_time, 1e-12);
+  std::cout << "[ measured ] multipoint benchmark to 1 s: " << c.floored_patches << " floored patches in "
+            << c.floored_time << " s of " << c.steps << " steps\n";
 }
 
 }  // namespace

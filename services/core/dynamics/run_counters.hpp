@@ -21,6 +21,8 @@ struct RunCounters {
   long two_point_entries = 0;  ///< switches into rigid two-point contact (sliding on a switching surface) [-]
   double two_point_time = 0;   ///< simulated time with a wheel in two-point contact, summed over the wheels [s]
   double max_branch_excess = 0;  ///< largest height of a followed point above the lowest minimum at an accepted step [m]
+  long floored_patches = 0;    ///< patches at accepted steps whose lateral curvature was floored (conformal, Hertz does not hold) [-]
+  double floored_time = 0;     ///< simulated time of the steps ending with such a patch [s]
   long contact_queries = 0;    ///< contact evaluations asked for (a batch counts once) [-]
   long contact_configurations = 0;  ///< configurations in them [-]
   long contact_retries = 0;    ///< contact queries re-sent after a timeout (over the bus) [-]
@@ -44,6 +46,8 @@ struct RunCounters {
     missed_switches += o.missed_switches;
     two_point_entries += o.two_point_entries;
     two_point_time += o.two_point_time;
+    floored_patches += o.floored_patches;
+    floored_time += o.floored_time;
     max_branch_excess = max_branch_excess > o.max_branch_excess ? max_branch_excess : o.max_branch_excess;
     contact_queries += o.contact_queries;
     contact_configurations += o.contact_configurations;

@@ -820,8 +820,14 @@ bool WheelsetSimulation::advance() {
     }
     for (int i = 0; i < 2; ++i)
       if (branches_.two_point(i)) own_.two_point_time += t_reached - t_;
+    const double step = t_reached - t_;
     t_ = t_reached;
     record_step_contact(false);
+    // Conformal patches (Hertz's floor on the lateral curvature) at the accepted step.
+    long floored = 0;
+    for (const ContactPatch& p : contact_at(y_->data()).patches) floored += p.lateral_curvature_floored ? 1 : 0;
+    own_.floored_patches += floored;
+    if (floored > 0) own_.floored_time += step;
     emit_outputs_until(t_);
     if (flag == IDA_ROOT_RETURN) {
       handle_roots();

@@ -491,6 +491,7 @@ TEST_F(ContactServiceTest, QueryCommandPrintsPatches) {
   const std::string err = read_text(temp_path("q1.err"));
   ASSERT_EQ(status, 0) << out << err;
   EXPECT_EQ(out.rfind("wheel,s,angle,a,b,penetration,normal_force,fx,fy,mz,", 0), 0u) << out;
+  EXPECT_NE(out.find(",lateral_curvature_floored\n"), std::string::npos) << out;  // conformal patches flagged
   EXPECT_NE(out.find("\nleft,"), std::string::npos) << out;
   EXPECT_NE(out.find("\nright,"), std::string::npos) << out;
   EXPECT_NE(err.find("starting"), std::string::npos) << err;

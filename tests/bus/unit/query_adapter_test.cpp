@@ -108,6 +108,7 @@ TEST(QueryAdapter, EveryResultFieldLandsInItsMessageField) {
     p.forces.fx = 0.021 * k;
     p.forces.fy = 0.022 * k;
     p.forces.mz = 0.023 * k;
+    p.lateral_curvature_floored = i == 1;
     r.patches.push_back(p);
   }
   r.force = {0.024, 0.025, 0.026};
@@ -141,6 +142,8 @@ TEST(QueryAdapter, EveryResultFieldLandsInItsMessageField) {
     EXPECT_EQ(p.fx, 0.021 * k);
     EXPECT_EQ(p.fy, 0.022 * k);
     EXPECT_EQ(p.mz, 0.023 * k);
+    EXPECT_EQ(p.lateral_curvature_floored, i == 1 ? 1 : 0);
+    EXPECT_EQ(from_result_message(m).patches[static_cast<std::size_t>(i)].lateral_curvature_floored, i == 1);
   }
   for (int j = 0; j < 3; ++j) {  // DOUBLE_EQ: 0.024 + 0.001 j is not exactly the literal; values differ by 1e-3
     EXPECT_DOUBLE_EQ(m.force[j], 0.024 + 0.001 * j);

@@ -166,6 +166,28 @@ TEST(OnePointDynamics, MirroredLoadGivesMirroredTwoPointContact) {
   EXPECT_LT(check_wheel(sb, 0).second_gap, 1e-9);
 }
 
+// The benchmark with mu = 0.01 (parameters/benchmark-mu001.json): creep carries at most
+// mu (N_L + N_R) ~ 1.9 kN of the 20 kN, so the normal forces must: the right wheel's contact angle
+// must lie between the tread's (<= 0.13 rad) and the flange root's (>= 0.30 rad), where one-point
+// contact has no point, and the wheelset ends in two-point contact there, on the exact manifold,
+// the normal forces' lateral resultant balancing Fy less what creep carries.
+TEST(OnePointDynamics, LowFrictionBenchmarkEndsInTwoPointContact) {
+  RunSpec spec;
+  spec.wheelset.material.friction = 0.01;
+  WheelsetSimulation sim(spec, onepoint(), kR0);
+  sim.run();
+  ASSERT_EQ(sim.state(), RunState::kFinished) << sim.message();
+  const WheelsetSnapshot end = sim.snapshot();
+  EXPECT_LT(check_wheel(end, 1).second_gap, 1e-9);
+  EXPECT_GT(sim.counters().two_point_time, 1.0);
+  const RigidContact exact = RigidWheelsetSolver(*test::s1002_uic60_geometry()).solve(end.y, end.yaw);
+  EXPECT_NEAR(end.z, exact.pose.z, 1e-8);
+  EXPECT_NEAR(end.roll, exact.pose.roll, 1e-8);
+  std::cout << "[ measured ] onepoint, mu = 0.01: y " << end.y << " m, yaw " << end.yaw << " rad, "
+            << sim.counters().steps << " steps, " << sim.counters().restarts << " restarts, "
+            << sim.counters().two_point_time << " s in two-point contact\n";
+}
+
 // Conformal patches are visible in a run's counters: the multi-point benchmark (elastic: a patch
 // and its flag depend on the pose alone) counts, over its accepted steps, exactly the floored
 // patches an independent evaluation of the model at each step's state finds, and the time of

@@ -257,5 +257,19 @@ TEST(RunParameterFile, ShippedBenchmarkFileIsTheDefault) {
   for (const RunParameter& p : run_parameter_table()) EXPECT_EQ(p.get(read), p.get(defaults)) << p.key;
 }
 
+// The second shipped file is the benchmark with the paper's lost Greek letter read as mu = 0.01:
+// every key present, only the friction differs.
+TEST(RunParameterFile, ShippedLowFrictionFileDiffersOnlyInFriction) {
+  RunSpec read;
+  read.wheelset.mass = 1.0;
+  apply_run_parameter_file(std::string(WRC_PARAMETERS_DIR) + "/benchmark-mu001.json", read);
+  const RunSpec defaults;
+  EXPECT_EQ(read.wheelset.material.friction, 0.01);
+  for (const RunParameter& p : run_parameter_table()) {
+    if (std::string(p.key) == "friction") continue;
+    EXPECT_EQ(p.get(read), p.get(defaults)) << p.key;
+  }
+}
+
 }  // namespace
 }  // namespace wrc

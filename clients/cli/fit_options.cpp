@@ -16,6 +16,7 @@ std::vector<OptionSpec> fit_option_specs() {
       {"--sample-step", true, "spacing of the samples in y [m]", "1e-4"},
       {"--jump-weight", true, "weight of samples near a tread jump of the common point [-], (0, 1]", "0.01"},
       {"--jump-band", true, "half-width in y of the down-weighted band around each jump [m]", "5e-4"},
+      {"--transition", true, "half-width of the blend between branch fits at a jump [m] (0: one fit across the jumps)", "2e-4"},
       {"--flange-angle", true, "profile slope angle that starts the flange region [rad]", "0.7"},
       {"--paper-variant", false, "the paper's benchmark splines: cubic 15x4 in (y, roll), quadratic in yaw", ""},
       {"--threads", true, "sampling threads (0: one per core)", "0"},
@@ -51,6 +52,7 @@ SplineFitOptions fit_options_from(const Options& options) {
   o.sample_step_y = options.number("--sample-step", o.sample_step_y, 1e-6, 1e-2);
   o.jump_weight = options.number("--jump-weight", o.jump_weight, 1e-12, 1.0);
   o.jump_band = options.number("--jump-band", o.jump_band, 0.0, 0.01);
+  o.transition = options.number("--transition", o.transition, 0.0, 0.002);
   o.flange_angle = options.number("--flange-angle", o.flange_angle, 0.1, 1.5);
   o.threads = options.has("--threads") ? options.integer("--threads", 0, 0, 64) : 0;
   try {

@@ -50,6 +50,7 @@ spline_fit_options_t to_message(const SplineFitOptions& o) {
   m.yaw_samples = o.yaw_samples;
   m.jump_weight = o.jump_weight;
   m.jump_band = o.jump_band;
+  m.transition = o.transition;
   m.flange_angle = o.flange_angle;
   m.clearance_cap = o.clearance_cap;
   return m;
@@ -79,6 +80,7 @@ SplineFitOptions from_message(const spline_fit_options_t& m) {
   o.yaw_samples = m.yaw_samples;
   o.jump_weight = m.jump_weight;
   o.jump_band = m.jump_band;
+  o.transition = m.transition;
   o.flange_angle = m.flange_angle;
   o.clearance_cap = m.clearance_cap;
   o.validate();
@@ -148,26 +150,34 @@ spline_model_t encode_model(const SplineFit& fit, const GeometrySpec& spec, cons
   }
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const int w = static_cast<int>(side);
-    const TensorSplineSet& set = model.wheel(side);
+    const SplineWheel& wheel = model.wheel(side);
     const WheelFitReport& report = fit.wheels[static_cast<size_t>(w)];
     spline_wheel_t& out = m.wheels[w];
     out.wheel = static_cast<int8_t>(w);
-    const auto& b = set.basis();
-    out.breakpoints_y = b.basis(0).breakpoints();
-    out.breakpoints_roll = b.basis(1).breakpoints();
-    out.breakpoints_yaw = b.basis(2).breakpoints();
+    out.num_branches = static_cast<int32_t>(wheel.branches.size());
+    out.num_jumps = static_cast<int32_t>(wheel.jumps.size());
+    for (const JumpSurface& j : wheel.jumps) out.jump_surfaces.emplace_back(j.c.begin(), j.c.end());
+    out.basis_size_y = 0;
+    out.num_coefficients = 0;
+    out.num_functions = kSplineFieldCount;
+    out.coefficients.assign(static_cast<size_t>(kSplineFieldCount), {});
+    for (const TensorSplineSet& set : wheel.branches) {
+      const auto& b = set.basis();
+      out.branch_breakpoints_y.push_back(static_cast<int32_t>(b.basis(0).breakpoints().size()));
+      out.breakpoints_y.insert(out.breakpoints_y.end(), b.basis(0).breakpoints().begin(), b.basis(0).breakpoints().end());
+      out.breakpoints_roll = b.basis(1).breakpoints();
+      out.breakpoints_yaw = b.basis(2).breakpoints();
+      out.basis_size_y += b.basis(0).size();
+      out.basis_size_roll = b.basis(1).size();
+      out.basis_size_yaw = b.basis(2).size();
+      out.num_coefficients += b.size();
+      const Eigen::MatrixXd c = set.coefficients();
+      for (int f = 0; f < kSplineFieldCount; ++f)
+        for (int i = 0; i < b.size(); ++i) out.coefficients[static_cast<size_t>(f)].push_back(c(i, f));
+    }
     out.num_breakpoints_y = static_cast<int32_t>(out.breakpoints_y.size());
     out.num_breakpoints_roll = static_cast<int32_t>(out.breakpoints_roll.size());
     out.num_breakpoints_yaw = static_cast<int32_t>(out.breakpoints_yaw.size());
-    out.basis_size_y = b.basis(0).size();
-    out.basis_size_roll = b.basis(1).size();
-    out.basis_size_yaw = b.basis(2).size();
-    out.num_functions = kSplineFieldCount;
-    out.num_coefficients = b.size();
-    const Eigen::MatrixXd c = set.coefficients();
-    out.coefficients.assign(static_cast<size_t>(kSplineFieldCount), std::vector<double>(static_cast<size_t>(b.size())));
-    for (int f = 0; f < kSplineFieldCount; ++f)
-      for (int i = 0; i < b.size(); ++i) out.coefficients[static_cast<size_t>(f)][static_cast<size_t>(i)] = c(i, f);
     for (const FieldError& e : report.residuals) {
       out.fit_rms_error.push_back(e.rms_error);
       out.fit_max_error.push_back(e.max_error);
@@ -195,40 +205,76 @@ std::shared_ptr<const SplineContactGeometry> decode_model(const spline_model_t& 
   const SplineFitOptions options = from_message(m.fit);
   require_finite(m.flange_split_s, "flange_split_s");
   require_finite(m.lateral_curvature_floor, "lateral_curvature_floor");
-  std::vector<TensorSplineSet> sets;
+  std::array<SplineWheel, 2> wheels;
+  bool any_branches = false;
   for (int w = 0; w < 2; ++w) {
     const spline_wheel_t& in = m.wheels[w];
     const std::string name = std::string("wheels[") + std::to_string(w) + "]";
     if (in.wheel != w) bad(name + ".wheel = " + std::to_string(in.wheel));
-    TensorBasis basis({BSplineBasis(options.degrees[0], checked_breakpoints(in.breakpoints_y, in.num_breakpoints_y,
-                                                                            name + ".breakpoints_y")),
-                       BSplineBasis(options.degrees[1], checked_breakpoints(in.breakpoints_roll, in.num_breakpoints_roll,
-                                                                            name + ".breakpoints_roll")),
-                       BSplineBasis(options.degrees[2], checked_breakpoints(in.breakpoints_yaw, in.num_breakpoints_yaw,
-                                                                            name + ".breakpoints_yaw"))});
-    if (in.basis_size_y != basis.basis(0).size() || in.basis_size_roll != basis.basis(1).size() ||
-        in.basis_size_yaw != basis.basis(2).size())
-      bad(name + ": basis sizes " + std::to_string(in.basis_size_y) + " x " + std::to_string(in.basis_size_roll) +
-          " x " + std::to_string(in.basis_size_yaw) + " do not match the breakpoints and degrees");
-    if (in.num_functions != kSplineFieldCount || in.num_coefficients != basis.size() ||
-        in.coefficients.size() != static_cast<size_t>(kSplineFieldCount))
-      bad(name + ": " + std::to_string(in.num_functions) + " x " + std::to_string(in.num_coefficients) +
-          " coefficients, expected " + std::to_string(kSplineFieldCount) + " x " + std::to_string(basis.size()) +
-          (in.num_coefficients == 0 ? " (the coefficients are in the file: resolve_model() first)" : ""));
-    Eigen::MatrixXd c(basis.size(), kSplineFieldCount);
-    for (int f = 0; f < kSplineFieldCount; ++f) {
-      const auto& row = in.coefficients[static_cast<size_t>(f)];
-      for (int i = 0; i < basis.size(); ++i) {
-        c(i, f) = row[static_cast<size_t>(i)];
-        if (!std::isfinite(c(i, f)))
-          bad(name + ".coefficients[" + std::to_string(f) + "][" + std::to_string(i) + "] is not finite");
+    if (in.num_branches < 1 || static_cast<size_t>(in.num_branches) != in.branch_breakpoints_y.size() ||
+        in.num_jumps != in.num_branches - 1 || static_cast<size_t>(in.num_jumps) != in.jump_surfaces.size())
+      bad(name + ": " + std::to_string(in.num_branches) + " branches and " + std::to_string(in.num_jumps) +
+          " jump surfaces declared (one branch more than jumps), " + std::to_string(in.branch_breakpoints_y.size()) +
+          " and " + std::to_string(in.jump_surfaces.size()) + " present");
+    any_branches = any_branches || in.num_branches > 1;
+    SplineWheel& wheel = wheels[static_cast<size_t>(w)];
+    for (size_t j = 0; j < in.jump_surfaces.size(); ++j) {
+      JumpSurface surface;
+      for (size_t q = 0; q < 9; ++q) {
+        surface.c[q] = in.jump_surfaces[j][q];
+        require_finite(surface.c[q], name + ".jump_surfaces[" + std::to_string(j) + "][" + std::to_string(q) + "]");
       }
+      wheel.jumps.push_back(surface);
     }
-    sets.emplace_back(std::move(basis), c);
+    const std::vector<double> all_y = checked_breakpoints(in.breakpoints_y, in.num_breakpoints_y, name + ".breakpoints_y");
+    const BSplineBasis roll(options.degrees[1], checked_breakpoints(in.breakpoints_roll, in.num_breakpoints_roll,
+                                                                    name + ".breakpoints_roll"));
+    const BSplineBasis yaw(options.degrees[2], checked_breakpoints(in.breakpoints_yaw, in.num_breakpoints_yaw,
+                                                                   name + ".breakpoints_yaw"));
+    if (in.num_functions != kSplineFieldCount || in.coefficients.size() != static_cast<size_t>(kSplineFieldCount))
+      bad(name + ": " + std::to_string(in.num_functions) + " functions, expected " + std::to_string(kSplineFieldCount));
+    size_t y_offset = 0;
+    int coefficient_offset = 0, basis_y = 0;
+    for (int b = 0; b < in.num_branches; ++b) {
+      const int32_t n = in.branch_breakpoints_y[static_cast<size_t>(b)];
+      if (n < 2 || y_offset + static_cast<size_t>(n) > all_y.size())
+        bad(name + ".branch_breakpoints_y[" + std::to_string(b) + "] = " + std::to_string(n) +
+            " does not fit the breakpoints_y present");
+      const std::vector<double> y_breaks(all_y.begin() + static_cast<std::ptrdiff_t>(y_offset),
+                                         all_y.begin() + static_cast<std::ptrdiff_t>(y_offset + static_cast<size_t>(n)));
+      y_offset += static_cast<size_t>(n);
+      TensorBasis basis({BSplineBasis(options.degrees[0], y_breaks), roll, yaw});
+      basis_y += basis.basis(0).size();
+      if (coefficient_offset + basis.size() > in.num_coefficients)
+        bad(name + ": " + std::to_string(in.num_functions) + " x " + std::to_string(in.num_coefficients) +
+            " coefficients do not hold branch " + std::to_string(b) +
+            (in.num_coefficients == 0 ? " (the coefficients are in the file: resolve_model() first)" : ""));
+      Eigen::MatrixXd c(basis.size(), kSplineFieldCount);
+      for (int f = 0; f < kSplineFieldCount; ++f) {
+        const auto& row = in.coefficients[static_cast<size_t>(f)];
+        if (row.size() != static_cast<size_t>(in.num_coefficients))
+          bad(name + ".coefficients[" + std::to_string(f) + "] has " + std::to_string(row.size()) + " entries, expected " +
+              std::to_string(in.num_coefficients));
+        for (int i = 0; i < basis.size(); ++i) {
+          c(i, f) = row[static_cast<size_t>(coefficient_offset + i)];
+          if (!std::isfinite(c(i, f)))
+            bad(name + ".coefficients[" + std::to_string(f) + "][" + std::to_string(coefficient_offset + i) +
+                "] is not finite");
+        }
+      }
+      coefficient_offset += basis.size();
+      wheel.branches.emplace_back(std::move(basis), c);
+    }
+    if (y_offset != all_y.size() || coefficient_offset != in.num_coefficients || basis_y != in.basis_size_y ||
+        in.basis_size_roll != roll.size() || in.basis_size_yaw != yaw.size())
+      bad(name + ": basis sizes " + std::to_string(in.basis_size_y) + " x " + std::to_string(in.basis_size_roll) +
+          " x " + std::to_string(in.basis_size_yaw) + ", " + std::to_string(in.num_coefficients) +
+          " coefficients and " + std::to_string(all_y.size()) +
+          " breakpoints in y do not match the branches, breakpoints and degrees");
   }
   auto model = std::make_shared<const SplineContactGeometry>(
-      std::move(sets), SplineBox{options.y_min, options.y_max, options.roll_max, options.yaw_max}, m.flange_split_s,
-      m.lateral_curvature_floor);
+      std::move(wheels), SplineBox{options.y_min, options.y_max, options.roll_max, options.yaw_max}, m.flange_split_s,
+      m.lateral_curvature_floor, any_branches ? options.transition : 0.0);
   const std::string hash = model->data_hash();
   if (hash != m.model_hash) bad("model_hash = " + m.model_hash + " but the data hash to " + hash);
   return model;

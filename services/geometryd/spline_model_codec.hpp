@@ -17,7 +17,7 @@
 namespace wrc::geometryd {
 
 /// Layout version written into spline_model_t.version.
-inline constexpr int kSplineModelVersion = 2;
+inline constexpr int kSplineModelVersion = 3;
 /// Layout version written into geometry_table_t.version.
 inline constexpr int kGeometryTableVersion = 2;
 /// Largest encoded spline_model_t sent inline [B]; larger models travel as a file (one UDP

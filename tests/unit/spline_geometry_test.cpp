@@ -192,32 +192,48 @@ TEST(SplineGeometry, JumpsAreFoundWhereTheExactCommonPointJumps) {
   EXPECT_GT(found[1].s_before - found[1].s_after, 0.01);  // tread (-17.7 mm) to flange root (-28.6 mm)
 }
 
-// The weights do their job: the same fit without down-weighting the jumps (jump_weight = 1) is
-// pulled towards the kinks and is worse in the continuous region, by more than a third.
+// The weights do their job in the paper's form (one fit across the jumps, transition = 0): the
+// same fit without down-weighting the jumps (jump_weight = 1) is pulled towards the kinks and is
+// worse in the continuous region, by more than a third.
 TEST(SplineGeometry, WeightsAtTheJumpsImproveTheContinuousRegion) {
   const WheelsetGeometry& g = *s1002_uic60_geometry();
-  SplineFitOptions unweighted = quick_spline_options();
+  SplineFitOptions weighted = quick_spline_options();
+  weighted.transition = 0.0;
+  SplineFitOptions unweighted = weighted;
   unweighted.jump_weight = 1.0;
   const SplineFit plain = fit_spline_geometry(g, unweighted);
-  const double weighted_rms = z_rms(validate_spline_geometry(g, *quick_spline_fit().model, quick_spline_options()));
-  const double plain_rms = z_rms(validate_spline_geometry(g, *plain.model, quick_spline_options()));
+  const double weighted_rms = z_rms(validate_spline_geometry(g, *fit_spline_geometry(g, weighted).model, weighted));
+  const double plain_rms = z_rms(validate_spline_geometry(g, *plain.model, unweighted));
   std::cout << "z rms: weighted " << weighted_rms * 1e6 << " um, unweighted " << plain_rms * 1e6 << " um\n";
   EXPECT_LT(weighted_rms, plain_rms / 1.5);
 }
 
-// The fit converges as knots are added: uniform 5, 10, 20 intervals in y, each halving reduces
-// the continuous-region RMS of z (the kinks limit the order, so no rate is asserted).
+// The paper's form (one fit across the jumps) converges as knots are added: uniform 5, 10, 20
+// intervals in y, each halving reduces the continuous-region RMS of z (the kinks limit the
+// order, so no rate is asserted). The branch fits have no kinks to smooth: with 5 intervals per
+// branch z is within 0.1 um rms already (measured 0.034 um; 10 and 20: 0.031 um, the floor
+// of this coarse sample grid), and more knots do not make it worse.
 TEST(SplineGeometry, ConvergesAsKnotsAreAdded) {
   const WheelsetGeometry& g = *s1002_uic60_geometry();
   double last = 1.0;
   for (int n : {5, 10, 20}) {
     SplineFitOptions o = quick_spline_options();
+    o.transition = 0.0;
     o.placement = KnotPlacement::kUniform;
     o.intervals[0] = n;
     const double rms = z_rms(validate_spline_geometry(g, *fit_spline_geometry(g, o).model, o));
-    std::cout << n << " intervals: z rms " << rms * 1e6 << " um\n";
+    std::cout << n << " intervals, one fit: z rms " << rms * 1e6 << " um\n";
     EXPECT_LT(rms, last) << n;
     last = rms;
+  }
+  for (int n : {5, 10, 20}) {
+    SplineFitOptions o = quick_spline_options();
+    o.intervals[0] = n;
+    const double rms = z_rms(validate_spline_geometry(g, *fit_spline_geometry(g, o).model, o));
+    std::cout << n << " intervals per branch: z rms " << rms * 1e6 << " um\n";
+    EXPECT_LT(rms, 1e-7) << n;
+    EXPECT_LT(rms, last * 1.05) << n;
+    last = std::min(last, rms);
   }
 }
 

@@ -37,18 +37,42 @@ struct SplineEvaluation {
   std::array<double, 3> clearance_gradient{};
 };
 
+/// Where the tread contact point of one wheel jumps, as a function of roll and yaw: y_jump =
+/// sum over a, b in 0..2 of c[3 a + b] roll^a yaw^b [m] (least squares over the jumps found on
+/// the sample lines).
+struct JumpSurface {
+  std::array<double, 9> c{};  ///< coefficients [m / rad^(a + b)]
+  /// y_jump at (roll, yaw) [m].
+  double at(double roll, double yaw) const {
+    return (c[0] + yaw * (c[1] + yaw * c[2])) + roll * ((c[3] + yaw * (c[4] + yaw * c[5])) + roll * (c[6] + yaw * (c[7] + yaw * c[8])));
+  }
+  /// y_jump and its derivatives d/droll, d/dyaw [m, m/rad, m/rad] and d2/droll2, d2/droll dyaw,
+  /// d2/dyaw2 [m/rad^2] at (roll, yaw) [rad].
+  void evaluate(double roll, double yaw, double& value, double* gradient, double* hessian) const;
+};
+
+/// One wheel's fitted splines: branches[0..J] in increasing y, branch m the tread contact point
+/// between jumps[m - 1] and jumps[m], each fitted on its own basis over the stretch of y where it
+/// is used (its own with the transitions), and blended C2 into its neighbour within `transition`
+/// of a jump. Without jumps one spline (the paper's form: one fit across every jump).
+struct SplineWheel {
+  std::vector<TensorSplineSet> branches;  ///< kSplineFieldCount functions each, SplineField order
+  std::vector<JumpSurface> jumps;         ///< branches.size() - 1 jump surfaces, increasing in y
+};
+
 /// Both wheels' fitted splines and what they were fitted for.
 class SplineContactGeometry {
  public:
-  /// @param wheels the left [0] and right [1] wheel's splines over (y, roll, yaw) with
-  ///        kSplineFieldCount functions each, in SplineField order.
+  /// @param wheels the left [0] and right [1] wheel's branches over (y, roll, yaw).
   /// @param left_box the left wheel's box (the right wheel's is mirrored).
   /// @param s_split flange split of the wheel profile [m] (wheel_sample.hpp).
   /// @param lateral_curvature_floor the conformal floor the Hertz fields were computed with [-].
-  /// @throws std::invalid_argument for a wrong count of wheels or functions, a basis that is not
-  ///         3-D, or a box the bases do not cover.
-  SplineContactGeometry(std::vector<TensorSplineSet> wheels, SplineBox left_box, double s_split,
-                        double lateral_curvature_floor);
+  /// @param transition half-width in y of the blend between two branches at a jump [m] (> 0 when
+  ///        a wheel has jumps).
+  /// @throws std::invalid_argument for a wrong count of wheels, branches or functions, a basis
+  ///         that is not 3-D, or a box the bases do not cover (all branches together).
+  SplineContactGeometry(std::array<SplineWheel, 2> wheels, SplineBox left_box, double s_split,
+                        double lateral_curvature_floor, double transition = 0.0);
 
   /// The box of one wheel.
   SplineBox box(WheelSide side) const;
@@ -59,12 +83,16 @@ class SplineContactGeometry {
   std::string outside_reason(WheelSide side, const WheelsetPose& pose) const;
 
   /// Evaluates one wheel at pose (no box check: outside, the end polynomials extrapolate): the
-  /// values of the first value_count fields (kSplineQueryFieldCount: what a contact query uses;
+  /// branch of the pose, or within `transition` of a jump the two branches blended by a C2 step
+  /// w(t) (t = (y - y_jump(roll, yaw)) / transition; values, gradient and Hessian of the blend);
+  /// the values of the first value_count fields (kSplineQueryFieldCount: what a contact query uses;
   /// the cost falls with the count, and the fields left out are NaN), and with kGradient or
   /// kHessian the gradient and Hessian of z (both always: one-variable-at-a-time contraction,
   /// TensorSplineSet::query) and, for derivative_fields = 2, the flange clearance's gradient
   /// (derivative_fields = 1: NaN; a contact query needs only the clearance's value, the event
-  /// function).
+  /// function). With kGradient or kHessian the creep frame follows the gradient g = dz/dy of the
+  /// evaluated z (the constraint's lateral direction): normal (0, -g, 1) / sqrt(1 + g^2), contact
+  /// angle atan(sign g) (sign +1 left, -1 right), replacing the fitted normal and angle.
   /// @throws std::invalid_argument for derivative_fields other than 1 or 2.
   void evaluate(WheelSide side, const WheelsetPose& pose, SplineDerivatives derivatives, SplineEvaluation& out,
                 int value_count = kSplineFieldCount, int derivative_fields = 2) const;
@@ -77,19 +105,22 @@ class SplineContactGeometry {
   /// B <= floor * A).
   PatchShape patch_shape(const SplineEvaluation& e) const;
 
-  /// SHA-256 of the model data: per wheel and variable the degree and breakpoints, then every
-  /// coefficient (function-major), as little-endian doubles (heartbeat_t.model_hash).
+  /// SHA-256 of the model data: the transition, then per wheel its jump surfaces' coefficients
+  /// and per branch and variable the degree and breakpoints, then every coefficient
+  /// (function-major), as little-endian doubles (heartbeat_t.model_hash).
   std::string data_hash() const;
 
-  const TensorSplineSet& wheel(WheelSide side) const { return wheels_[static_cast<size_t>(side)]; }
+  const SplineWheel& wheel(WheelSide side) const { return wheels_[static_cast<size_t>(side)]; }
+  double transition() const { return transition_; }
   double s_split() const { return s_split_; }
   double lateral_curvature_floor() const { return lateral_curvature_floor_; }
 
  private:
-  std::vector<TensorSplineSet> wheels_;
+  std::array<SplineWheel, 2> wheels_;
   SplineBox left_box_;
   double s_split_;
   double lateral_curvature_floor_;
+  double transition_;
 };
 
 }  // namespace wrc

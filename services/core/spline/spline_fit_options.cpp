@@ -69,6 +69,8 @@ void SplineFitOptions::validate() const {
         std::to_string(intervals[2] + degrees[2]) + ") and at most 101");
   if (!(jump_weight > 0.0 && jump_weight <= 1.0)) bad("jump_weight = " + num(jump_weight) + " must lie in (0, 1]");
   if (!(jump_band >= 0.0) || !std::isfinite(jump_band)) bad("jump_band = " + num(jump_band) + " m must be >= 0");
+  if (!(transition >= 0.0) || !(transition <= 2e-3))
+    bad("transition = " + num(transition) + " m must be in [0, 0.002]");
   if (!(flange_angle > 0.1 && flange_angle < 1.5))
     bad("flange_angle = " + num(flange_angle) + " rad must lie in (0.1, 1.5)");
   require_positive(clearance_cap, "clearance_cap", "m");
@@ -113,13 +115,13 @@ int SplineFitOptions::y_samples() const {
 
 std::string SplineFitOptions::canonical_text() const {
   std::ostringstream t;
-  t << "spline-fit-v1|box " << num(y_min) << ' ' << num(y_max) << ' ' << num(roll_max) << ' ' << num(yaw_max)
+  t << "spline-fit-v2|box " << num(y_min) << ' ' << num(y_max) << ' ' << num(roll_max) << ' ' << num(yaw_max)
     << "|intervals " << intervals[0] << ' ' << intervals[1] << ' ' << intervals[2] << "|degrees " << degrees[0] << ' '
     << degrees[1] << ' ' << degrees[2] << "|placement " << (placement == KnotPlacement::kUniform ? "uniform" : "graded")
     << ' ' << num(grading) << "|breakpoints";
   for (double b : y_breakpoints) t << ' ' << num(b);
   t << "|samples " << num(sample_step_y) << ' ' << roll_samples << ' ' << yaw_samples << "|weights " << num(jump_weight)
-    << ' ' << num(jump_band) << "|flange " << num(flange_angle) << ' ' << num(clearance_cap) << "|search "
+    << ' ' << num(jump_band) << "|transition " << num(transition) << "|flange " << num(flange_angle) << ' ' << num(clearance_cap) << "|search "
     << num(search.step) << ' ' << num(search.min_step) << ' ' << num(search.tolerance);
   return t.str();
 }

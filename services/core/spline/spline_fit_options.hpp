@@ -45,6 +45,14 @@ struct SplineFitOptions {
   /// of the rigid one-point view, smoothed by the fit) [-], in (0, 1]; elsewhere 1.
   double jump_weight = 1e-2;
   double jump_band = 5e-4;  ///< half-width in y of the down-weighted band around each jump [m]
+  /// Half-width in y of the smooth transition between two branches at a jump [m], >= 0. When > 0
+  /// and every sample line has the same number of tread jumps, each stretch between jumps is a
+  /// branch of the tread contact point, fitted on its own (with its continuation past the jumps as
+  /// a non-lowest minimum) and blended C2 into its neighbour within this distance of the fitted
+  /// jump position; elsewhere the model is that branch's fit alone, so the smoothing stays
+  /// within the band. 0: one fit across the jumps, down-weighted within jump_band (the paper's
+  /// form).
+  double transition = 2e-4;
 
   /// Wheel profile slope angle [rad] that separates tread (and flange root) from the flange: the
   /// flange region is s below the first point, going from the taping line towards the flange,

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include <Eigen/Dense>
+
 #include "core/models/contact_model_options.hpp"
 
 namespace wrc {
@@ -193,6 +195,56 @@ std::vector<double> place_y_breakpoints(const SplineFitOptions& options, const S
   return breaks;
 }
 
+namespace {
+
+// Weight of the values filled in where a branch has no sample of its own (extrapolated linearly
+// along the line from its last two samples): enough to keep every basis function of the branch
+// determined by a smooth continuation instead of the ridge's pull to 0, too little to move the
+// fit where the branch has samples.
+constexpr double kFillWeight = 1e-4;
+// A branch continued past a jump is followed from sample to sample while its minimum moves by
+// less than this in s [m] (ds/dy stays below 10 there; a larger step means it has vanished).
+constexpr double kContinuationShift = 1e-3;
+// Margin of a branch's basis beyond the farthest sampled jump plus the transition [m]: the fitted
+// jump surface may lie a little beyond the sampled jumps between the lines.
+constexpr double kBranchMargin = 2.5e-4;
+
+// The basis of one fit over [y_lo, y_hi] and the wheel's roll and yaw ranges.
+TensorBasis branch_basis(const SplineFitOptions& options, const SplineBox& box, const std::vector<double>& y_breaks) {
+  return TensorBasis({BSplineBasis(options.degrees[0], y_breaks),
+                      BSplineBasis::uniform(options.degrees[1], -box.roll_max, box.roll_max, options.intervals[1]),
+                      BSplineBasis::uniform(options.degrees[2], -box.yaw_max, box.yaw_max, options.intervals[2])});
+}
+
+// Least-squares jump surface through the m-th jump of every line.
+JumpSurface fit_jump_surface(const WheelSampleGrid& grid, size_t m) {
+  const int na = std::min<int>(3, static_cast<int>(grid.roll.size())), nb = std::min<int>(3, static_cast<int>(grid.yaw.size()));
+  Eigen::MatrixXd a(static_cast<Eigen::Index>(grid.line_jumps.size()), na * nb);
+  Eigen::VectorXd y(a.rows());
+  for (size_t line = 0; line < grid.line_jumps.size(); ++line) {
+    const TreadJump& j = grid.line_jumps[line][m];
+    for (int p = 0; p < na; ++p)
+      for (int q = 0; q < nb; ++q)
+        a(static_cast<Eigen::Index>(line), p * nb + q) = std::pow(j.roll, p) * std::pow(j.yaw, q);
+    y(static_cast<Eigen::Index>(line)) = j.y;
+  }
+  const Eigen::VectorXd c = a.completeOrthogonalDecomposition().solve(y);
+  JumpSurface out;
+  for (int p = 0; p < na; ++p)
+    for (int q = 0; q < nb; ++q) out.c[static_cast<size_t>(3 * p + q)] = c(p * nb + q);
+  return out;
+}
+
+// Every line holds the same number of jumps (> 0): the branches are well defined.
+size_t common_jump_count(const WheelSampleGrid& grid) {
+  const size_t n = grid.line_jumps.front().size();
+  for (const auto& line : grid.line_jumps)
+    if (line.size() != n) return 0;
+  return n;
+}
+
+}  // namespace
+
 SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitOptions& options,
                               const FitProgress& progress) {
   options.validate();
@@ -202,7 +254,9 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
   const SplineBox left_box{options.y_min, options.y_max, options.roll_max, options.yaw_max};
   const int ny = options.y_samples();
   const long lines = static_cast<long>(options.roll_samples) * options.yaw_samples;
-  std::vector<TensorSplineSet> sets;
+  const double floor = ContactModelOptions{}.lateral_curvature_floor;
+  std::array<SplineWheel, 2> wheels;
+  bool any_branches = false;
 
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const int w = static_cast<int>(side);
@@ -214,84 +268,231 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
         sample_values(-box.yaw_max, box.yaw_max, options.yaw_samples), options, s_split, threads, progress,
         w * lines, 2 * lines);
     out.sampling_seconds += seconds_since(start);
-    start = std::chrono::steady_clock::now();
 
     WheelFitReport& report = out.wheels[static_cast<size_t>(w)];
     for (const auto& line : grid.line_jumps) report.jumps.insert(report.jumps.end(), line.begin(), line.end());
     report.exact_evaluations = grid.exact_evaluations;
-    std::vector<double> y_breaks;
-    if (!options.y_breakpoints.empty() && side == WheelSide::kRight) {
-      for (auto it = options.y_breakpoints.rbegin(); it != options.y_breakpoints.rend(); ++it) y_breaks.push_back(-*it);
-    } else {
-      y_breaks = place_y_breakpoints(options, box, report.jumps, static_cast<int>(lines));
-    }
-    report.y_breakpoints = y_breaks;
-    TensorBasis basis({BSplineBasis(options.degrees[0], y_breaks),
-                       BSplineBasis::uniform(options.degrees[1], -box.roll_max, box.roll_max, options.intervals[1]),
-                       BSplineBasis::uniform(options.degrees[2], -box.yaw_max, box.yaw_max, options.intervals[2])});
-
-    // Weighted samples: jump_weight near a tread jump, 0 where no tread point exists (values of
-    // the previous valid sample on the line, so the ridge has nothing to pull towards 0).
-    WeightedSamples samples;
-    samples.dimension = 3;
     const size_t count = grid.samples.size();
-    samples.points.reserve(3 * count);
-    samples.weights.reserve(count);
-    samples.values.resize(static_cast<Eigen::Index>(count), kSplineFieldCount);
-    std::vector<char> continuous(count, 0);
-    size_t n = 0;
-    for (size_t j = 0; j < grid.roll.size(); ++j) {
-      for (size_t k = 0; k < grid.yaw.size(); ++k) {
-        const WheelSample* last_valid = nullptr;
-        for (size_t i = 0; i < grid.y.size(); ++i, ++n) {
-          const WheelSample& s = grid.at(i, j, k);
-          samples.points.insert(samples.points.end(), {grid.y[i], grid.roll[j], grid.yaw[k]});
-          double weight = 1.0;
-          if (!s.valid) {
-            weight = 0.0;
-          } else if (grid.jump_distance(i, j, k) < options.jump_band) {
-            weight = options.jump_weight;
-            ++report.samples_near_jumps;
+    const size_t nyy = grid.y.size(), nk = grid.yaw.size();
+    report.samples = static_cast<int>(count);
+    for (size_t n = 0; n < count; ++n) {
+      const size_t i = n % nyy, line = n / nyy;
+      const WheelSample& s = grid.samples[n];
+      if (s.valid && s.flange_clearance <= 0.0) ++report.samples_in_flange_contact;
+      if (s.valid && grid.jump_distance(i, line / nk, line % nk) < options.jump_band) ++report.samples_near_jumps;
+    }
+    const size_t jumps = options.transition > 0.0 && options.y_breakpoints.empty() ? common_jump_count(grid) : 0;
+    SplineWheel& wheel = wheels[static_cast<size_t>(w)];
+
+    if (jumps == 0) {
+      // One fit across the jumps (the paper's form): jump_weight within jump_band of a jump, 0
+      // where no tread point exists (values of the previous valid sample on the line, so the ridge
+      // has nothing to pull towards 0).
+      start = std::chrono::steady_clock::now();
+      std::vector<double> y_breaks;
+      if (!options.y_breakpoints.empty() && side == WheelSide::kRight) {
+        for (auto it = options.y_breakpoints.rbegin(); it != options.y_breakpoints.rend(); ++it) y_breaks.push_back(-*it);
+      } else {
+        y_breaks = place_y_breakpoints(options, box, report.jumps, static_cast<int>(lines));
+      }
+      report.y_breakpoints = y_breaks;
+      WeightedSamples samples;
+      samples.dimension = 3;
+      samples.points.reserve(3 * count);
+      samples.weights.reserve(count);
+      samples.values.resize(static_cast<Eigen::Index>(count), kSplineFieldCount);
+      size_t n = 0;
+      for (size_t j = 0; j < grid.roll.size(); ++j) {
+        for (size_t k = 0; k < grid.yaw.size(); ++k) {
+          const WheelSample* last_valid = nullptr;
+          for (size_t i = 0; i < grid.y.size(); ++i, ++n) {
+            const WheelSample& s = grid.at(i, j, k);
+            samples.points.insert(samples.points.end(), {grid.y[i], grid.roll[j], grid.yaw[k]});
+            double weight = 1.0;
+            if (!s.valid) {
+              weight = 0.0;
+            } else if (grid.jump_distance(i, j, k) < options.jump_band) {
+              weight = options.jump_weight;
+            }
+            if (s.valid) last_valid = &s;
+            const WheelSample* source = s.valid ? &s : last_valid;
+            for (int f = 0; f < kSplineFieldCount; ++f)
+              samples.values(static_cast<Eigen::Index>(n), f) = source ? source->fields[static_cast<size_t>(f)] : 0.0;
+            samples.weights.push_back(weight);
           }
-          if (s.valid) last_valid = &s;
-          const WheelSample* source = s.valid ? &s : last_valid;
-          for (int f = 0; f < kSplineFieldCount; ++f)
-            samples.values(static_cast<Eigen::Index>(n), f) = source ? source->fields[static_cast<size_t>(f)] : 0.0;
-          samples.weights.push_back(weight);
-          if (s.valid && s.flange_clearance <= 0.0) ++report.samples_in_flange_contact;
-          continuous[n] = weight == 1.0 && s.valid && s.flange_clearance > 0.0;
         }
       }
+      wheel.branches.push_back(fit_tensor_spline(branch_basis(options, box, y_breaks), samples, &report.fit));
+      out.fitting_seconds += seconds_since(start);
+      out.samples[static_cast<size_t>(w)] = std::make_shared<const WheelSampleGrid>(std::move(grid));
+      continue;
     }
-    report.samples = static_cast<int>(count);
-    TensorSplineSet set = fit_tensor_spline(basis, samples, &report.fit);
 
-    // Residuals on the continuous region's own samples.
+    // Branches: branch b is the tread point between jumps b - 1 and b of each line. Its samples:
+    // its own stretch, its continuation past each of its jumps up to the transition (and one
+    // sample more), followed as a non-lowest minimum while it exists, and filled values elsewhere.
+    any_branches = true;
+    const double h = options.transition, reach = h + options.sample_step_y;
+    const size_t branches = jumps + 1;
+    start = std::chrono::steady_clock::now();
+    std::vector<std::vector<WheelSample>> continued(branches, std::vector<WheelSample>(count));
+    std::atomic<int> evaluations{0};
+    auto follow = [&](int line) {
+      const size_t j = static_cast<size_t>(line) / nk, k = static_cast<size_t>(line) % nk;
+      WheelsetPose pose;
+      pose.z = geometry.track().nominal_radius;
+      pose.roll = grid.roll[j];
+      pose.yaw = grid.yaw[k];
+      const size_t row = static_cast<size_t>(line) * nyy;
+      const std::vector<TreadJump>& line_jumps = grid.line_jumps[static_cast<size_t>(line)];
+      for (size_t m = 0; m < jumps; ++m) {
+        const TreadJump& jump = line_jumps[m];
+        // Branch m upwards past its upper jump, branch m + 1 downwards past its lower one.
+        for (int dir : {1, -1}) {
+          const size_t b = dir > 0 ? m : m + 1;
+          double s_near = dir > 0 ? jump.s_before : jump.s_after;
+          for (size_t step = 0; step < nyy; ++step) {
+            const size_t i = dir > 0 ? static_cast<size_t>(std::upper_bound(grid.y.begin(), grid.y.end(), jump.y) - grid.y.begin()) + step
+                                     : static_cast<size_t>(std::lower_bound(grid.y.begin(), grid.y.end(), jump.y) - grid.y.begin()) - 1 - step;
+            if (i >= nyy || std::abs(grid.y[i] - jump.y) > reach) break;
+            pose.y = grid.y[i];
+            ++evaluations;
+            WheelSample c = sample_wheel_branch(geometry, side, pose, s_split, options.clearance_cap, floor, options.search,
+                                                s_near, kContinuationShift);
+            if (!c.valid) break;
+            s_near = c.tread.s;
+            continued[b][row + i] = std::move(c);
+          }
+        }
+      }
+    };
+    for_each_line(static_cast<int>(lines), threads, follow, {}, 0, 0, "");
+    report.exact_evaluations += evaluations.load();
+    out.sampling_seconds += seconds_since(start);
+    start = std::chrono::steady_clock::now();
+
+    for (size_t m = 0; m < jumps; ++m) wheel.jumps.push_back(fit_jump_surface(grid, m));
+    for (size_t b = 0; b < branches; ++b) {
+      double lo = box.y_min, hi = box.y_max;
+      if (b > 0) {
+        lo = std::numeric_limits<double>::infinity();
+        for (const auto& line : grid.line_jumps) lo = std::min(lo, line[b - 1].y);
+        lo = std::max(box.y_min, lo - h - kBranchMargin);
+      }
+      if (b < jumps) {
+        hi = -std::numeric_limits<double>::infinity();
+        for (const auto& line : grid.line_jumps) hi = std::max(hi, line[b].y);
+        hi = std::min(box.y_max, hi + h + kBranchMargin);
+      }
+      // intervals[0] intervals per branch (at least two samples each).
+      const int max_intervals = std::max(1, static_cast<int>(std::floor((hi - lo) / (2.0 * options.sample_step_y))));
+      const std::vector<double> y_breaks = sample_values(lo, hi, std::min(options.intervals[0], max_intervals) + 1);
+      report.y_breakpoints.insert(report.y_breakpoints.end(), y_breaks.begin(), y_breaks.end());
+
+      WeightedSamples samples;
+      samples.dimension = 3;
+      std::vector<double> weights;
+      Eigen::MatrixXd values(static_cast<Eigen::Index>(count), kSplineFieldCount);
+      for (size_t line = 0; line < static_cast<size_t>(lines); ++line) {
+        const size_t j = line / nk, k = line % nk, row = line * nyy;
+        const std::vector<TreadJump>& line_jumps = grid.line_jumps[line];
+        // Per sample of the line: the branch's own value, its continuation or nothing.
+        std::vector<const WheelSample*> source(nyy, nullptr);
+        std::vector<double> weight(nyy, 0.0);
+        const WheelSample* last_valid = nullptr;
+        for (size_t i = 0; i < nyy; ++i) {
+          const double y = grid.y[i];
+          const bool own = (b == 0 || y > line_jumps[b - 1].y) && (b == jumps || y < line_jumps[b].y);
+          const WheelSample& s = grid.samples[row + i];
+          if (own) {
+            if (s.valid) last_valid = &s;
+            source[i] = s.valid ? &s : last_valid;
+            weight[i] = s.valid ? 1.0 : 0.0;
+          } else if (continued[b][row + i].valid) {
+            source[i] = &continued[b][row + i];
+            weight[i] = 1.0;
+          }
+        }
+        for (size_t i = 0; i < nyy; ++i) {
+          const double y = grid.y[i];
+          if (y < lo - 1e-12 || y > hi + 1e-12) continue;
+          samples.points.insert(samples.points.end(), {y, grid.roll[j], grid.yaw[k]});
+          const Eigen::Index n = static_cast<Eigen::Index>(weights.size());
+          if (source[i]) {
+            for (int f = 0; f < kSplineFieldCount; ++f) values(n, f) = source[i]->fields[static_cast<size_t>(f)];
+            weights.push_back(weight[i]);
+            continue;
+          }
+          // Filled: linear extrapolation from the nearest two samples of the branch on this side.
+          size_t i0 = i, i1 = i;
+          for (size_t q = i + 1; q < nyy && i0 == i; ++q)
+            if (source[q] && weight[q] > 0) i0 = q;
+          if (i0 != i) {
+            i1 = i0 + 1 < nyy && source[i0 + 1] && weight[i0 + 1] > 0 ? i0 + 1 : i0;
+          } else {
+            for (size_t q = i; q-- > 0 && i0 == i;)
+              if (source[q] && weight[q] > 0) i0 = q;
+            i1 = i0 > 0 && source[i0 - 1] && weight[i0 - 1] > 0 ? i0 - 1 : i0;
+          }
+          if (i0 == i) {  // the branch has no sample on this line (not expected): no weight
+            for (int f = 0; f < kSplineFieldCount; ++f) values(n, f) = 0.0;
+            weights.push_back(0.0);
+            continue;
+          }
+          const double t = i1 == i0 ? 0.0 : (y - grid.y[i0]) / (grid.y[i0] - grid.y[i1]);
+          for (int f = 0; f < kSplineFieldCount; ++f) {
+            const double v0 = source[i0]->fields[static_cast<size_t>(f)], v1 = source[i1]->fields[static_cast<size_t>(f)];
+            values(n, f) = v0 + t * (v0 - v1);
+          }
+          weights.push_back(kFillWeight);
+        }
+      }
+      samples.weights = std::move(weights);
+      samples.values = values.topRows(static_cast<Eigen::Index>(samples.weights.size()));
+      FitStatistics statistics;
+      wheel.branches.push_back(fit_tensor_spline(branch_basis(options, box, y_breaks), samples, &statistics));
+      report.fit.seconds += statistics.seconds;
+      report.fit.coefficients += statistics.coefficients;
+      report.fit.samples += statistics.samples;
+      report.fit.nonzeros += statistics.nonzeros;
+      report.fit.ridge = statistics.ridge;
+    }
+    out.fitting_seconds += seconds_since(start);
+    out.samples[static_cast<size_t>(w)] = std::make_shared<const WheelSampleGrid>(std::move(grid));
+  }
+  out.model = std::make_shared<const SplineContactGeometry>(std::move(wheels), left_box, s_split, floor,
+                                                            any_branches ? options.transition : 0.0);
+
+  // Residuals of the model on its own samples of the continuous region: weight 1 in the paper's
+  // form, farther than jump_band from every jump, no flange contact.
+  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
+    const WheelSampleGrid& grid = *out.samples[static_cast<size_t>(side)];
+    WheelFitReport& report = out.wheels[static_cast<size_t>(side)];
     std::array<double, kSplineFieldCount> sum_sq{};
-    TensorBasisPoint point;
-    std::array<double, kSplineFieldCount> value{};
-    for (size_t m = 0; m < count; ++m) {
-      if (!continuous[m]) continue;
-      basis.evaluate(&samples.points[3 * m], SplineDerivatives::kValue, point);
-      set.values(point, value.data());
-      for (int f = 0; f < kSplineFieldCount; ++f) {
-        const double e = std::abs(value[static_cast<size_t>(f)] - samples.values(static_cast<Eigen::Index>(m), f));
-        FieldError& fe = report.residuals[static_cast<size_t>(f)];
-        fe.max_error = std::max(fe.max_error, e);
-        sum_sq[static_cast<size_t>(f)] += e * e;
-        ++fe.samples;
+    SplineEvaluation e;
+    for (size_t j = 0; j < grid.roll.size(); ++j) {
+      for (size_t k = 0; k < grid.yaw.size(); ++k) {
+        for (size_t i = 0; i < grid.y.size(); ++i) {
+          const WheelSample& s = grid.at(i, j, k);
+          if (!s.valid || s.flange_clearance <= 0.0 || grid.jump_distance(i, j, k) < options.jump_band) continue;
+          WheelsetPose pose;
+          pose.y = grid.y[i], pose.roll = grid.roll[j], pose.yaw = grid.yaw[k];
+          out.model->evaluate(side, pose, SplineDerivatives::kValue, e);
+          for (int f = 0; f < kSplineFieldCount; ++f) {
+            const double err = std::abs(e.value[static_cast<size_t>(f)] - s.fields[static_cast<size_t>(f)]);
+            FieldError& fe = report.residuals[static_cast<size_t>(f)];
+            fe.max_error = std::max(fe.max_error, err);
+            sum_sq[static_cast<size_t>(f)] += err * err;
+            ++fe.samples;
+          }
+        }
       }
     }
     for (int f = 0; f < kSplineFieldCount; ++f) {
       FieldError& fe = report.residuals[static_cast<size_t>(f)];
       if (fe.samples > 0) fe.rms_error = std::sqrt(sum_sq[static_cast<size_t>(f)] / fe.samples);
     }
-    sets.push_back(std::move(set));
-    out.fitting_seconds += seconds_since(start);
-    out.samples[static_cast<size_t>(w)] = std::make_shared<const WheelSampleGrid>(std::move(grid));
   }
-  out.model = std::make_shared<const SplineContactGeometry>(std::move(sets), left_box, s_split,
-                                                            ContactModelOptions{}.lateral_curvature_floor);
   return out;
 }
 

@@ -8,6 +8,50 @@
 
 namespace wrc {
 
+namespace {
+
+// The sample of tread point p at pose: every field, the clearance against the flange's lowest
+// distance flange_low [m].
+void fill_sample(WheelSample& out, const ContactPoint& tread, const WheelsetPose& pose, double second_gap,
+                 double flange_low, double clearance_cap, double lateral_curvature_floor) {
+  out.valid = true;
+  out.tread = tread;
+  out.second_minimum_gap = second_gap;
+  out.flange_clearance = std::min(flange_low - tread.distance, clearance_cap);
+
+  const ContactPoint& p = out.tread;
+  const PatchShape shape = contact_shape(p, lateral_curvature_floor);
+  auto& f = out.fields;
+  f[kFieldZ] = pose.z - p.distance;
+  f[kFieldSWheel] = p.s;
+  f[kFieldSRail] = p.s_rail;
+  f[kFieldTheta] = p.theta;
+  f[kFieldWheelX] = p.wheel_point.x() - pose.x;
+  f[kFieldWheelY] = p.wheel_point.y() - pose.y;
+  f[kFieldWheelZ] = p.wheel_point.z() - pose.z;
+  f[kFieldRailZ] = p.rail_point.z();
+  f[kFieldContactAngle] = p.contact_angle;
+  f[kFieldRollingRadius] = p.rolling_radius;
+  f[kFieldNormalX] = p.normal.x();
+  f[kFieldNormalY] = p.normal.y();
+  f[kFieldNormalZ] = p.normal.z();
+  f[kFieldWheelCurvatureLateral] = p.wheel_curvature_lateral;
+  f[kFieldWheelCurvatureRolling] = p.wheel_curvature_rolling;
+  f[kFieldRailCurvatureLateral] = p.rail_curvature_lateral;
+  f[kFieldRailCurvatureRolling] = p.rail_curvature_rolling;
+  f[kFieldDistanceCurvature] = p.distance_curvature;
+  f[kFieldHertzA] = shape.shape.A;
+  f[kFieldHertzB] = shape.shape.B;
+  f[kFieldMinorOverMajor] = shape.shape.minor_over_major;
+  f[kFieldEllipticK] = shape.shape.K;
+  f[kFieldEllipticE] = shape.shape.E;
+  f[kFieldHertzM] = shape.shape.m;
+  f[kFieldHertzN] = shape.shape.n;
+  f[kFieldFlangeClearance] = out.flange_clearance;
+}
+
+}  // namespace
+
 double flange_split(const Profile& wheel, double flange_angle) {
   const double limit = std::tan(flange_angle);
   const double lower = wheel.lower();
@@ -47,40 +91,30 @@ WheelSample sample_wheel(const WheelsetGeometry& geometry, WheelSide side, const
     boundary = make_contact_point(locus, s_split, false);
     lowest = &boundary;
   }
-  out.valid = true;
-  out.tread = *lowest;
-  out.second_minimum_gap = second - lowest->distance;
-  out.flange_clearance = std::min(flange_low - lowest->distance, clearance_cap);
+  fill_sample(out, *lowest, pose, second - lowest->distance, flange_low, clearance_cap, lateral_curvature_floor);
+  return out;
+}
 
-  const ContactPoint& p = out.tread;
-  const PatchShape shape = contact_shape(p, lateral_curvature_floor);
-  auto& f = out.fields;
-  f[kFieldZ] = pose.z - p.distance;
-  f[kFieldSWheel] = p.s;
-  f[kFieldSRail] = p.s_rail;
-  f[kFieldTheta] = p.theta;
-  f[kFieldWheelX] = p.wheel_point.x() - pose.x;
-  f[kFieldWheelY] = p.wheel_point.y() - pose.y;
-  f[kFieldWheelZ] = p.wheel_point.z() - pose.z;
-  f[kFieldRailZ] = p.rail_point.z();
-  f[kFieldContactAngle] = p.contact_angle;
-  f[kFieldRollingRadius] = p.rolling_radius;
-  f[kFieldNormalX] = p.normal.x();
-  f[kFieldNormalY] = p.normal.y();
-  f[kFieldNormalZ] = p.normal.z();
-  f[kFieldWheelCurvatureLateral] = p.wheel_curvature_lateral;
-  f[kFieldWheelCurvatureRolling] = p.wheel_curvature_rolling;
-  f[kFieldRailCurvatureLateral] = p.rail_curvature_lateral;
-  f[kFieldRailCurvatureRolling] = p.rail_curvature_rolling;
-  f[kFieldDistanceCurvature] = p.distance_curvature;
-  f[kFieldHertzA] = shape.shape.A;
-  f[kFieldHertzB] = shape.shape.B;
-  f[kFieldMinorOverMajor] = shape.shape.minor_over_major;
-  f[kFieldEllipticK] = shape.shape.K;
-  f[kFieldEllipticE] = shape.shape.E;
-  f[kFieldHertzM] = shape.shape.m;
-  f[kFieldHertzN] = shape.shape.n;
-  f[kFieldFlangeClearance] = out.flange_clearance;
+WheelSample sample_wheel_branch(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose,
+                                double s_split, double clearance_cap, double lateral_curvature_floor,
+                                const PotentialPointSearch& search, double s_near, double max_shift) {
+  WheelSample out;
+  const std::vector<ContactPoint> points = geometry.potential_points(side, pose, search);
+  const double inf = std::numeric_limits<double>::infinity();
+  const ContactPoint* nearest = nullptr;
+  double flange_low = inf;
+  for (const ContactPoint& p : points) {
+    if (!p.is_minimum) continue;
+    if (p.s <= s_split) {
+      flange_low = std::min(flange_low, p.distance);
+    } else if (std::abs(p.s - s_near) <= max_shift && (!nearest || std::abs(p.s - s_near) < std::abs(nearest->s - s_near))) {
+      nearest = &p;
+    }
+  }
+  if (!nearest) return out;
+  const LocusPoint split = geometry.locus(side, pose).at(s_split);
+  if (split.over_rail) flange_low = std::min(flange_low, split.distance);
+  fill_sample(out, *nearest, pose, 0.0, flange_low, clearance_cap, lateral_curvature_floor);
   return out;
 }
 

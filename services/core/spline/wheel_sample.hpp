@@ -38,4 +38,12 @@ double flange_split(const Profile& wheel, double flange_angle);
 WheelSample sample_wheel(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose, double s_split,
                          double clearance_cap, double lateral_curvature_floor, const PotentialPointSearch& search);
 
+/// Samples one branch of the wheel at pose: as sample_wheel(), but the tread point is the local
+/// minimum with s > s_split nearest to s_near [m], whether or not it is the lowest (a branch
+/// continued past a jump), and the clearance is that of this point. Not valid when no such
+/// minimum lies within max_shift [m] of s_near (the branch has vanished).
+WheelSample sample_wheel_branch(const WheelsetGeometry& geometry, WheelSide side, const WheelsetPose& pose,
+                                double s_split, double clearance_cap, double lateral_curvature_floor,
+                                const PotentialPointSearch& search, double s_near, double max_shift);
+
 }  // namespace wrc

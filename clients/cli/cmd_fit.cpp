@@ -59,6 +59,7 @@ json report_json(const GeometrySpec& spec, const SplineFitOptions& o, const Spli
                   {"samples_yaw", o.yaw_samples},
                   {"jump_weight", o.jump_weight},
                   {"jump_band", o.jump_band},
+                  {"transition", o.transition},
                   {"flange_angle", o.flange_angle},
                   {"flange_split_s", fit.model->s_split()}};
   json wheels = json::array();
@@ -109,19 +110,24 @@ json report_json(const GeometrySpec& spec, const SplineFitOptions& o, const Spli
   json vw = json::array();
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const WheelAccuracy& a = accuracy->wheels[static_cast<size_t>(side)];
-    json bands = json::array();
+    json bands = json::array(), by_distance = json::array();
     for (const JumpDistanceBand& b : a.z_by_jump_distance) {
       json jb = field_error(b.z);
       jb["from"] = b.from;
       jb["to"] = std::isinf(b.to) ? json(nullptr) : json(b.to);
       bands.push_back(jb);
+      json fields;
+      for (int f = 0; f < kSplineFieldCount; ++f)
+        fields[kSplineFields[static_cast<size_t>(f)].name] = field_error(b.fields[static_cast<size_t>(f)]);
+      by_distance.push_back({{"from", jb["from"]}, {"to", jb["to"]}, {"parameters", fields}});
     }
     vw.push_back({{"wheel", side_name(side)},
                   {"points", a.points},
                   {"excluded_near_jumps", a.excluded_near_jumps},
                   {"excluded_flange_contact", a.excluded_flange_contact},
                   {"jumps", a.jumps},
-                  {"z_by_jump_distance", bands}});
+                  {"z_by_jump_distance", bands},
+                  {"by_jump_distance", by_distance}});
   }
   validation["wheels"] = vw;
   r["validation"] = validation;
@@ -142,7 +148,8 @@ int run_fit(const std::vector<std::string>& args) {
               << "\nFits Arnold's spline contact model (weighted least-squares tensor-product splines over\n"
                  "(y, roll, yaw), per wheel) to samples of the exact geometry and reports, per fitted quantity,\n"
                  "max_error and rms_error [SI] against the exact geometry at points that are not samples, in\n"
-                 "the continuous region (the report says what is left out around each jump).\n"
+                 "the continuous region (the report says what is left out around each jump), and every\n"
+                 "quantity's error against the distance from the nearest jump (by_jump_distance).\n"
                  "With --service, wrc-geometryd precomputes the model (the one every spline contact service of\n"
                  "this geometry and these options gets from its cache) and the bar follows its progress; no report.\n";
     return 0;
@@ -179,6 +186,25 @@ int run_fit(const std::vector<std::string>& args) {
               fit.sampling_seconds + fit.fitting_seconds, fit.sampling_seconds, fit.fitting_seconds,
               options.intervals[0], options.intervals[1], options.intervals[2]);
   if (accuracy) {
+    // Every parameter's rms error against the distance from the nearest jump (both wheels).
+    const auto& bands = accuracy->wheels[0].z_by_jump_distance;
+    std::printf("%-24s", "rms by jump distance [mm]");
+    for (const JumpDistanceBand& b : bands) {
+      if (std::isinf(b.to)) {
+        std::printf(" %11s", (">" + std::to_string(b.from * 1e3).substr(0, 4)).c_str());
+      } else {
+        std::printf(" %11s", (std::to_string(b.from * 1e3).substr(0, 4) + "-" + std::to_string(b.to * 1e3).substr(0, 4)).c_str());
+      }
+    }
+    std::printf("\n");
+    for (int f = 0; f < kSplineFieldCount; ++f) {
+      std::printf("%-24s", kSplineFields[static_cast<size_t>(f)].name);
+      for (size_t b = 0; b < bands.size(); ++b)
+        std::printf(" %11.3g", both_wheels(accuracy->wheels[0].z_by_jump_distance[b].fields[static_cast<size_t>(f)],
+                                           accuracy->wheels[1].z_by_jump_distance[b].fields[static_cast<size_t>(f)])
+                                   .rms_error);
+      std::printf("\n");
+    }
     std::printf("%-24s %14s %14s   (validation, continuous region, both wheels)\n", "parameter", "max_error",
                 "rms_error");
     for (int f = 0; f < kSplineFieldCount; ++f) {

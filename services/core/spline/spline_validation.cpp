@@ -41,7 +41,7 @@ SplineAccuracy validate_spline_geometry(const WheelsetGeometry& geometry, const 
     WheelAccuracy& acc = out.wheels[static_cast<size_t>(w)];
     for (size_t b = 0; b + 1 < edges.size(); ++b) acc.z_by_jump_distance.push_back({edges[b], edges[b + 1], {}});
     std::array<double, kSplineFieldCount> sum_sq{};
-    std::vector<double> band_sq(acc.z_by_jump_distance.size(), 0.0);
+    std::vector<std::array<double, kSplineFieldCount>> band_sq(acc.z_by_jump_distance.size());
     for (const auto& line : grid.line_jumps) acc.jumps += static_cast<int>(line.size());
     SplineEvaluation e;
     for (size_t j = 0; j < grid.roll.size(); ++j) {
@@ -59,12 +59,15 @@ SplineAccuracy validate_spline_geometry(const WheelsetGeometry& geometry, const 
             ++acc.excluded_flange_contact;
             continue;
           }
-          model.evaluate(side, pose, SplineDerivatives::kValue, e);
+          model.evaluate(side, pose, SplineDerivatives::kGradient, e);
           const double jump = grid.jump_distance(i, j, k);
-          const double z_error = std::abs(e.value[kFieldZ] - s.fields[kFieldZ]);
           for (size_t b = 0; b < acc.z_by_jump_distance.size(); ++b) {
             JumpDistanceBand& band = acc.z_by_jump_distance[b];
-            if (jump >= band.from && jump < band.to) add(band.z, z_error, band_sq[b]);
+            if (!(jump >= band.from && jump < band.to)) continue;
+            for (int f = 0; f < kSplineFieldCount; ++f)
+              add(band.fields[static_cast<size_t>(f)],
+                  std::abs(e.value[static_cast<size_t>(f)] - s.fields[static_cast<size_t>(f)]),
+                  band_sq[b][static_cast<size_t>(f)]);
           }
           if (jump < options.jump_band) {
             ++acc.excluded_near_jumps;
@@ -79,7 +82,12 @@ SplineAccuracy validate_spline_geometry(const WheelsetGeometry& geometry, const 
     }
     for (int f = 0; f < kSplineFieldCount; ++f)
       finish(acc.continuous[static_cast<size_t>(f)], sum_sq[static_cast<size_t>(f)]);
-    for (size_t b = 0; b < acc.z_by_jump_distance.size(); ++b) finish(acc.z_by_jump_distance[b].z, band_sq[b]);
+    for (size_t b = 0; b < acc.z_by_jump_distance.size(); ++b) {
+      JumpDistanceBand& band = acc.z_by_jump_distance[b];
+      for (int f = 0; f < kSplineFieldCount; ++f)
+        finish(band.fields[static_cast<size_t>(f)], band_sq[b][static_cast<size_t>(f)]);
+      band.z = band.fields[kFieldZ];
+    }
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -72,6 +72,7 @@ json report_json(const GeometrySpec& spec, const SplineFitOptions& o, const Spli
     for (int f = 0; f < kSplineFieldCount; ++f)
       residuals[kSplineFields[static_cast<size_t>(f)].name] = field_error(w.residuals[static_cast<size_t>(f)]);
     wheels.push_back({{"wheel", side_name(side)},
+                      {"branches", w.y_breakpoints.size()},
                       {"y_breakpoints", w.y_breakpoints},
                       {"samples", w.samples},
                       {"samples_near_jumps", w.samples_near_jumps},

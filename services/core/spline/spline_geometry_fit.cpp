@@ -295,7 +295,7 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
       } else {
         y_breaks = place_y_breakpoints(options, box, report.jumps, static_cast<int>(lines));
       }
-      report.y_breakpoints = y_breaks;
+      report.y_breakpoints = {y_breaks};
       WeightedSamples samples;
       samples.dimension = 3;
       samples.points.reserve(3 * count);
@@ -387,7 +387,7 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
       // intervals[0] intervals per branch (at least two samples each).
       const int max_intervals = std::max(1, static_cast<int>(std::floor((hi - lo) / (2.0 * options.sample_step_y))));
       const std::vector<double> y_breaks = sample_values(lo, hi, std::min(options.intervals[0], max_intervals) + 1);
-      report.y_breakpoints.insert(report.y_breakpoints.end(), y_breaks.begin(), y_breaks.end());
+      report.y_breakpoints.push_back(y_breaks);
 
       WeightedSamples samples;
       samples.dimension = 3;

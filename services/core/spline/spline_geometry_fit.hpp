@@ -57,7 +57,8 @@ struct FieldError {
 /// What the fit of one wheel found and how well it fits its own samples.
 struct WheelFitReport {
   std::vector<TreadJump> jumps;          ///< every tread jump found on the sample lines
-  std::vector<double> y_breakpoints;     ///< the breakpoints used in y [m]
+  /// The breakpoints used in y, per branch (one list for the paper's form) [m].
+  std::vector<std::vector<double>> y_breakpoints;
   FitStatistics fit;                     ///< least-squares assembly and solve
   int samples = 0;                       ///< samples in all
   int samples_near_jumps = 0;            ///< within jump_band of a jump (weight jump_weight)

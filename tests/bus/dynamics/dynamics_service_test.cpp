@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -300,12 +301,21 @@ TEST_F(DynamicsServiceTest, RecordedRunGivesTheHistoryAndReplays) {
           run_command(std::string(WRC_CLI_PATH) + " plot run " + input + " --out " + svg + " 2>&1", &status);
       EXPECT_EQ(status, 0) << plotted;
     }
-    // The labels name the input file; everything else (every curve's points) must be equal.
+    // The labels name the input file; everything else (every curve's points) must be equal. The
+    // grid lines are left out: gnuplot breaks a grid line behind the key, whose width follows the
+    // file name's length.
+    auto without_grid = [](std::string svg) {
+      std::string kept;
+      std::istringstream lines(svg);
+      for (std::string line; std::getline(lines, line);)
+        if (line.find("class=\"gridline\"") == std::string::npos) kept += line + "\n";
+      return kept;
+    };
     std::string from_log = read_text(svg_log);
     EXPECT_GT(from_log.size(), 1000u);
     for (std::size_t at = from_log.find("run.lcmlog"); at != std::string::npos; at = from_log.find("run.lcmlog", at))
       from_log.replace(at, std::string("run.lcmlog").size(), "recorded.csv");
-    EXPECT_EQ(from_log, read_text(svg_csv)) << "the log's plot differs from the history's";
+    EXPECT_EQ(without_grid(from_log), without_grid(read_text(svg_csv))) << "the log's plot differs from the history's";
   }
   // Replayed with the recorded timing, every state arrives again (only the state channel is played:
   // the contact traffic in between is what a loaded receiver's socket buffer would drop).

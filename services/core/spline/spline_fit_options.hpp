@@ -41,10 +41,13 @@ struct SplineFitOptions {
   int roll_samples = 9;     ///< samples in roll [-], at least the basis size in roll (intervals + degree)
   int yaw_samples = 9;      ///< samples in yaw [-], at least the basis size in yaw
 
-  /// Weight of samples within jump_band of a jump of the common point on the tread (an artefact
-  /// of the rigid one-point view, smoothed by the fit) [-], in (0, 1]; elsewhere 1.
+  /// The paper's form (transition = 0): weight of samples within jump_band of a jump of the
+  /// common point on the tread (an artefact of the rigid one-point view, smoothed by the fit) [-],
+  /// in (0, 1]; elsewhere 1. The branch fits do not use it.
   double jump_weight = 1e-2;
-  double jump_band = 5e-4;  ///< half-width in y of the down-weighted band around each jump [m]
+  /// Half-width in y of the band around each jump [m]: down-weighted in the paper's form, and in
+  /// both forms what the accuracy report leaves out of the continuous region.
+  double jump_band = 5e-4;
   /// Half-width in y of the smooth transition between two branches at a jump [m], >= 0. When > 0
   /// and every sample line has the same number of tread jumps, each stretch between jumps is a
   /// branch of the tread contact point, fitted on its own (with its continuation past the jumps as

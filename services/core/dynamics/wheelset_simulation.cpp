@@ -88,6 +88,30 @@ std::array<double, 2> WheelsetSimulation::branch_excess(const ContactResult& c) 
   return {-c.wheels[0].switch_function, -c.wheels[1].switch_function};
 }
 
+const WheelConstraint& WheelsetSimulation::ActiveConstraint::of(const ContactResult& c) const {
+  return second ? c.second_wheels[static_cast<size_t>(wheel)].value() : c.wheels[static_cast<size_t>(wheel)];
+}
+
+std::vector<WheelsetSimulation::ActiveConstraint> WheelsetSimulation::active_constraints() const {
+  std::vector<ActiveConstraint> active = {{0, false, kUnknownNormalLeft}, {1, false, kUnknownNormalRight}};
+  for (int i = 0; i < 2; ++i)
+    if (branches_.two_point(i)) active.push_back({i, true, kUnknownSecondNormalLeft + i});
+  return active;
+}
+
+Eigen::MatrixXd WheelsetSimulation::constraint_gradients(const ContactResult& c, Eigen::VectorXd* gaps) const {
+  const std::vector<ActiveConstraint> active = active_constraints();
+  const int count = static_cast<int>(active.size());
+  Eigen::MatrixXd g(count, kPoseUnknowns);
+  if (gaps) gaps->resize(count);
+  for (int r = 0; r < count; ++r) {
+    const WheelConstraint& w = active[static_cast<size_t>(r)].of(c);
+    g.row(r) = w.gap_gradient.transpose();
+    if (gaps) (*gaps)[r] = w.gap;
+  }
+  return g;
+}
+
 std::vector<ContactResult> WheelsetSimulation::evaluate(const std::vector<ContactQuery>& batch) {
   ++own_.contact_queries;
   own_.contact_configurations += static_cast<long>(batch.size());
@@ -188,17 +212,8 @@ void WheelsetSimulation::project_positions(std::vector<double>& y) {
   for (int iteration = 0; iteration < 40 && branches_.any_two_point(); ++iteration) {
     // Three or four constraints on the four coordinates: the smallest correction in the mass
     // metric (Gauss-Newton), dq = -M^-1 G^T (G M^-1 G^T)^-1 gap.
-    const ContactResult& c = contact_at(y.data());
-    std::vector<const WheelConstraint*> active = {&c.wheels[0], &c.wheels[1]};
-    for (int i = 0; i < 2; ++i)
-      if (branches_.two_point(i)) active.push_back(&c.second_wheels[static_cast<size_t>(i)].value());
-    const int count = static_cast<int>(active.size());
-    Eigen::MatrixXd g(count, kPoseUnknowns);
-    Eigen::VectorXd gap(count);
-    for (int r = 0; r < count; ++r) {
-      g.row(r) = active[static_cast<size_t>(r)]->gap_gradient.transpose();
-      gap[r] = active[static_cast<size_t>(r)]->gap;
-    }
+    Eigen::VectorXd gap;
+    const Eigen::MatrixXd g = constraint_gradients(contact_at(y.data()), &gap);
     if (gap.cwiseAbs().maxCoeff() < kGapTolerance) return;
     const Eigen::Vector4d inv_mass = equations_.mass_diagonal().cwiseInverse();
     const Eigen::MatrixXd mg = inv_mass.asDiagonal() * g.transpose();
@@ -226,12 +241,7 @@ void WheelsetSimulation::project_positions(std::vector<double>& y) {
 }
 
 void WheelsetSimulation::project_velocities(std::vector<double>& y) {
-  const ContactResult& c = contact_at(y.data());
-  std::vector<const WheelConstraint*> active = {&c.wheels[0], &c.wheels[1]};
-  for (int i = 0; i < 2; ++i)
-    if (branches_.two_point(i)) active.push_back(&c.second_wheels[static_cast<size_t>(i)].value());
-  Eigen::MatrixXd g(static_cast<int>(active.size()), kPoseUnknowns);
-  for (size_t r = 0; r < active.size(); ++r) g.row(static_cast<int>(r)) = active[r]->gap_gradient.transpose();
+  const Eigen::MatrixXd g = constraint_gradients(contact_at(y.data()), nullptr);
   const Eigen::Vector4d inv_mass = equations_.mass_diagonal().cwiseInverse();
   Eigen::Vector4d v(y[kUnknownYDot], y[kUnknownZDot], y[kUnknownRollDot], y[kUnknownYawDot]);
   const Eigen::MatrixXd mg = inv_mass.asDiagonal() * g.transpose();
@@ -297,17 +307,7 @@ void WheelsetSimulation::consistent_derivatives(std::vector<double>& y, std::vec
   // acceleration level, G v' + (dG/dt) v = 0, with dG/dt v by a difference along v. The creep
   // forces depend on N (Hertz), so iterate. Every constraint: both wheels' points, and the second
   // point of a wheel in two-point contact.
-  struct Active {
-    int wheel;
-    bool second;
-    int normal;  // index of its normal force
-  };
-  std::vector<Active> active = {{0, false, kUnknownNormalLeft}, {1, false, kUnknownNormalRight}};
-  for (int i = 0; i < 2; ++i)
-    if (branches_.two_point(i)) active.push_back({i, true, kUnknownSecondNormalLeft + i});
-  auto constraint = [](const ContactResult& c, const Active& a) -> const WheelConstraint& {
-    return a.second ? c.second_wheels[static_cast<size_t>(a.wheel)].value() : c.wheels[static_cast<size_t>(a.wheel)];
-  };
+  const std::vector<ActiveConstraint> active = active_constraints();
   y[kUnknownMuLeft] = y[kUnknownMuRight] = 0.0;
   if (branches_.any_two_point()) y[kUnknownSecondMuLeft] = y[kUnknownSecondMuRight] = 0.0;
   const double eps = 1e-7;
@@ -328,8 +328,8 @@ void WheelsetSimulation::consistent_derivatives(std::vector<double>& y, std::vec
     }
     const double scale = equations_.force_scale();
     for (int i = 0; i < count; ++i) {
-      const WheelConstraint& w = constraint(c, active[static_cast<size_t>(i)]);
-      const WheelConstraint& w_ahead = constraint(c_ahead, active[static_cast<size_t>(i)]);
+      const WheelConstraint& w = active[static_cast<size_t>(i)].of(c);
+      const WheelConstraint& w_ahead = active[static_cast<size_t>(i)].of(c_ahead);
       double g_dot_v = 0.0;
       for (int k = 0; k < 4; ++k) {
         // r holds the forces of the current N; the unknown is the change of N (scaled).

@@ -132,6 +132,18 @@ class WheelsetSimulation {
   /// per wheel [m] (<= 0 on the right branch): -switch_function.
   std::array<double, 2> branch_excess(const ContactResult& c) const;
 
+  /// A constraint the rigid formulation holds: each wheel's point, and the second point of a
+  /// wheel in two-point contact, with the index of its normal force in the state.
+  struct ActiveConstraint {
+    int wheel;
+    bool second;
+    int normal;
+    const WheelConstraint& of(const ContactResult& c) const;
+  };
+  std::vector<ActiveConstraint> active_constraints() const;
+  /// The active constraints' gap gradients at c, one row each [-, -, m/rad, m/rad]; their gaps
+  /// into gaps [m] when given.
+  Eigen::MatrixXd constraint_gradients(const ContactResult& c, Eigen::VectorXd* gaps) const;
   void project_positions(std::vector<double>& y);
   void project_velocities(std::vector<double>& y);
   void settle_elastic(std::vector<double>& y, double target_vertical, double target_roll);

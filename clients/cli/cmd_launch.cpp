@@ -1,22 +1,22 @@
 // wrc launch [services...]: starts the services of a launch profile and supervises them until
 // Ctrl-C or SIGTERM: restart with back-off when one dies, kill and restart when its heartbeats
 // stop (hung or SIGSTOPped), every child stopped on exit. Creates the bus key on first use
-// (bus/bus_key.hpp) and hands its path to the services in $WRC_BUS_KEY.
+// (bus/auth/bus_key.hpp) and hands its path to the services in $WRC_BUS_KEY.
 
 #include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <thread>
 
-#include "bus/build_paths.hpp"
-#include "bus/bus_auth.hpp"
-#include "bus/channels.hpp"
-#include "bus/clock.hpp"
-#include "bus/heartbeat_monitor.hpp"
-#include "bus/launch_profile.hpp"
-#include "bus/process_supervisor.hpp"
-#include "bus/service_loop.hpp"
-#include "bus/shutdown_signal.hpp"
+#include "bus/auth/bus_auth.hpp"
+#include "bus/process/build_paths.hpp"
+#include "bus/process/launch_profile.hpp"
+#include "bus/process/process_supervisor.hpp"
+#include "bus/process/shutdown_signal.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
+#include "bus/service/service_loop.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/clock.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 

@@ -22,13 +22,11 @@
 #include <string>
 #include <vector>
 
-#include "bus/channels.hpp"
-#include "bus/clock.hpp"
-#include "bus/request_client.hpp"
-#include "bus/spawn_child.hpp"
-#include "bus/stop_children.hpp"
-#include "bus/contact_status.hpp"
-#include "core/models/contact_model_factory.hpp"
+#include "bus/process/spawn_child.hpp"
+#include "bus/process/stop_children.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/request_client.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
@@ -37,6 +35,8 @@
 #include "core/geometry/rigid_wheelset.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
 #include "core/identity/geometry_key.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "protocol/contact/contact_status.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
 
@@ -291,7 +291,7 @@ int run_query(const std::vector<std::string>& args) {
             << number(result.round_trip * 1e3) << " ms (compute " << number(reply.compute_time * 1e3) << " ms, "
             << result.attempts << " attempt" << (result.attempts > 1 ? "s" : "") << ")\n";
   if (reply.status != wrc::contact_reply_t::OK) {
-    std::cerr << "query: " << bus::contact_status_name(reply.status) << ": " << reply.message << "\n";
+    std::cerr << "query: " << protocol::contact_status_name(reply.status) << ": " << reply.message << "\n";
     return 1;
   }
   print_patches(reply, format);

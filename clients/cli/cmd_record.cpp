@@ -22,9 +22,9 @@
 #include <sys/stat.h>
 #include <vector>
 
-#include "bus/channels.hpp"
-#include "bus/lcm_url.hpp"
-#include "bus/shutdown_signal.hpp"
+#include "bus/process/shutdown_signal.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/lcm_url.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 

@@ -17,13 +17,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bus/build_paths.hpp"
-#include "bus/channels.hpp"
-#include "bus/clock.hpp"
-#include "bus/guarded_subscription.hpp"
-#include "bus/header_stamper.hpp"
-#include "bus/shutdown_signal.hpp"
-#include "bus/signed_publish.hpp"
+#include "bus/auth/signed_publish.hpp"
+#include "bus/process/build_paths.hpp"
+#include "bus/process/shutdown_signal.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/guarded_subscription.hpp"
+#include "bus/transport/header_stamper.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
@@ -32,7 +32,7 @@
 #include "core/dynamics/run_parameters_file.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
-#include "dynamicsd/run_codec.hpp"
+#include "protocol/run/run_command_codec.hpp"
 #include "wrc/integrator_stats_t.hpp"
 #include "wrc/run_status_t.hpp"
 #include "wrc/run_summary_t.hpp"
@@ -44,14 +44,14 @@ namespace {
 constexpr double kCommandRepeat = 0.5;    // [s] re-send the START until the dynamics acknowledges it
 constexpr double kSilenceLimit = 30.0;    // [s] without any status of the run: the dynamics is gone
 
-std::vector<dynamics::ScheduledSwap> parse_swaps(const std::string& text, double t_end) {
-  std::vector<dynamics::ScheduledSwap> swaps;
+std::vector<protocol::ScheduledSwap> parse_swaps(const std::string& text, double t_end) {
+  std::vector<protocol::ScheduledSwap> swaps;
   std::stringstream list(text);
   std::string item;
   while (std::getline(list, item, ',')) {
     const auto colon = item.find(':');
     if (colon == std::string::npos) throw UsageError("--swap-at: '" + item + "' is not T:MODEL");
-    dynamics::ScheduledSwap s;
+    protocol::ScheduledSwap s;
     s.t = parse_finite(item.substr(0, colon), "--swap-at");
     s.model = item.substr(colon + 1);
     contact_model_entry(s.model);
@@ -62,10 +62,10 @@ std::vector<dynamics::ScheduledSwap> parse_swaps(const std::string& text, double
   return swaps;
 }
 
-nlohmann::json summary_json(const run_summary_t& s, const dynamics::RunRequest& request, const std::string& key) {
+nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& request, const std::string& key) {
   nlohmann::json j;
   j["run_id"] = s.run_id;
-  j["state"] = dynamics::run_state_name(s.state);
+  j["state"] = protocol::run_state_name(s.state);
   j["message"] = s.message;
   j["model"] = s.model;
   j["initial_model"] = request.model;
@@ -176,7 +176,7 @@ int run_run(const std::vector<std::string>& args) {
                  "terminal swaps the model at the next step; --swap-at T:M reproduces such a swap.\n";
     return 0;
   }
-  dynamics::RunRequest request;
+  protocol::RunRequest request;
   request.model = o.choice("--model", contact_model_names(), "");
   if (request.model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
   const std::string summary_path = o.required_text("--summary");
@@ -232,7 +232,7 @@ int run_run(const std::vector<std::string>& args) {
   }
 
   // Listen to the run, then start it.
-  run_command_t command = dynamics::to_message(request);
+  run_command_t command = protocol::to_message(request);
   command.request_id = static_cast<std::int64_t>(bus::wall_utime());
   command.geometry_key = key;
   std::map<double, wheelset_state_t> history;
@@ -306,7 +306,7 @@ int run_run(const std::vector<std::string>& args) {
   out << summary_json(*summary, request, key).dump(2) << "\n";
   if (!out) throw std::runtime_error(summary_path + ": write error");
   if (o.has("--history")) write_history(o.text("--history"), history);
-  std::cerr << "run: " << request.run_id << " " << dynamics::run_state_name(summary->state) << " at t = "
+  std::cerr << "run: " << request.run_id << " " << protocol::run_state_name(summary->state) << " at t = "
             << summary->t_end << " s with " << summary->model << ": y = " << summary->y << " m, yaw = " << summary->yaw
             << " rad; " << summary->wall_time << " s wall, " << summary->stats.steps << " steps, "
             << summary->stats.restarts << " restarts"

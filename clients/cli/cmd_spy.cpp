@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <iostream>
 
-#include "bus/build_paths.hpp"
+#include "bus/process/build_paths.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 

@@ -10,11 +10,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "bus/channels.hpp"
-#include "bus/clock.hpp"
-#include "bus/drop_counters.hpp"
-#include "bus/heartbeat_monitor.hpp"
-#include "bus/service_loop.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
+#include "bus/service/service_loop.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/drop_counters.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 

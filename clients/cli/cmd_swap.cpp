@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "bus/bus_auth.hpp"
-#include "bus/channels.hpp"
-#include "bus/clock.hpp"
-#include "bus/header_stamper.hpp"
-#include "bus/service_loop.hpp"
-#include "bus/signed_publish.hpp"
+#include "bus/auth/bus_auth.hpp"
+#include "bus/auth/signed_publish.hpp"
+#include "bus/service/service_loop.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/header_stamper.hpp"
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/service_starter.hpp"

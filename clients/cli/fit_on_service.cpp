@@ -9,16 +9,18 @@
 #include <stdexcept>
 #include <string>
 
-#include "bus/channels.hpp"
-#include "bus/clock.hpp"
-#include "bus/guarded_subscription.hpp"
-#include "bus/header_stamper.hpp"
-#include "bus/shutdown_signal.hpp"
-#include "bus/signed_publish.hpp"
+#include "bus/auth/signed_publish.hpp"
+#include "bus/process/shutdown_signal.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/guarded_subscription.hpp"
+#include "bus/transport/header_stamper.hpp"
 #include "cli/progress_bar.hpp"
 #include "cli/service_starter.hpp"
 #include "core/identity/geometry_key.hpp"
-#include "geometryd/spline_model_codec.hpp"
+#include "protocol/geometry/fit_options_codec.hpp"
+#include "protocol/geometry/spline_model_codec.hpp"
+#include "protocol/geometry/track_codec.hpp"
 #include "wrc/geometry_request_t.hpp"
 #include "wrc/progress_t.hpp"
 #include "wrc/spline_model_t.hpp"
@@ -40,7 +42,7 @@ std::vector<OptionSpec> fit_on_service_option_specs() {
 int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOptions& fit) {
   const double wait = o.number("--wait", 600.0, 1.0, 86400.0);
   const std::string key = geometry_key(spec);
-  const std::string model_key = geometryd::model_key(key, fit);
+  const std::string model_key = protocol::model_key(key, fit);
   CommandBus session(o, "fit");
   bus::ShutdownSignal::install();
   handle_until(*session.lcm, bus::monotonic_seconds() + kServiceDiscoveryTime, [] { return false; });
@@ -70,8 +72,8 @@ int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOp
   geometry_request_t request{};
   bus::HeaderStamper stamper(bus::sender_name("wrc-fit", std::to_string(::getpid())));
   request.request_id = request_id;
-  request.track = geometryd::to_message(spec);
-  request.fit = geometryd::to_message(fit);
+  request.track = protocol::to_message(spec);
+  request.fit = protocol::to_message(fit);
   request.recompute = o.has("--recompute");
   std::cerr << "fit: asking wrc-geometryd for spline model " << model_key.substr(0, kKeyDigits) << " (geometry key "
             << key.substr(0, kKeyDigits) << (request.recompute ? ", recompute" : "") << ")\n";

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "bus/line_atomic_stderr.hpp"
+#include "bus/process/line_atomic_stderr.hpp"
 #include "cli/command.hpp"
 
 namespace wrc::cli {

@@ -1,11 +1,11 @@
 #pragma once
 /// @file
-/// The front end's names for the one option parser of wrc (core/options/options.hpp), shared with
+/// The front end's names for the one option parser of wrc (options/options.hpp), shared with
 /// every service.
 
 #include <cmath>
 
-#include "core/options/options.hpp"
+#include "options/options.hpp"
 
 namespace wrc::cli {
 using wrc::OptionSpec;

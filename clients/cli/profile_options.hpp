@@ -7,11 +7,11 @@
 #include "cli/options.hpp"
 #include "core/geometry/geometry_spec.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
-#include "core/options/geometry_options.hpp"
+#include "options/geometry_options.hpp"
 
 namespace wrc::cli {
 
-/// The profile and track option specs, the table wrc-contactd uses too (core/options/geometry_options.hpp).
+/// The profile and track option specs, the table wrc-contactd uses too (options/geometry_options.hpp).
 inline std::vector<OptionSpec> profile_option_specs() { return geometry_option_specs(); }
 
 using wrc::geometry_spec_from_options;

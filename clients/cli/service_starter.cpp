@@ -11,13 +11,13 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "bus/build_paths.hpp"
-#include "bus/bus_auth.hpp"
-#include "bus/clock.hpp"
-#include "bus/spawn_child.hpp"
-#include "bus/service_loop.hpp"
-#include "bus/service_options.hpp"
-#include "bus/stop_children.hpp"
+#include "bus/auth/bus_auth.hpp"
+#include "bus/process/build_paths.hpp"
+#include "bus/process/spawn_child.hpp"
+#include "bus/process/stop_children.hpp"
+#include "bus/service/service_loop.hpp"
+#include "bus/service/service_options.hpp"
+#include "bus/transport/clock.hpp"
 #include "cli/log_cleanup.hpp"
 
 namespace wrc::cli {

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "bus/channels.hpp"
-#include "bus/heartbeat_monitor.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
+#include "bus/transport/channels.hpp"
 #include "cli/options.hpp"
 
 namespace wrc::cli {

@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "core/models/contact_model_factory.hpp"
-#include "core/options/geometry_options.hpp"
-#include "core/options/options.hpp"
+#include "options/geometry_options.hpp"
+#include "options/options.hpp"
 
 namespace wrc::contactd {
 
@@ -28,7 +28,7 @@ std::vector<OptionSpec> contactd_option_specs() {
 
 ContactdOptions ContactdOptions::parse(const std::vector<std::string>& args) {
   ParseRules rules;
-  rules.repeated = Repeated::kLastWins;  // as the options every service shares (bus/service_options.hpp)
+  rules.repeated = Repeated::kLastWins;  // as the options every service shares (bus/service/service_options.hpp)
   try {
     const Options parsed = Options::for_program("wrc-contactd", "[options]", contactd_option_specs(), args, rules);
     ContactdOptions options;

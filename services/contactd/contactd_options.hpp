@@ -1,12 +1,12 @@
 #pragma once
 /// @file
-/// Command line of wrc-contactd beyond the options every service shares (bus/service_options.hpp):
+/// Command line of wrc-contactd beyond the options every service shares (bus/service/service_options.hpp):
 ///   --model M   (required; a name of core/models/contact_model_factory.hpp's registry)
 ///   --wheel W --rail R --rail-cant C --gauge G --gauge-depth D --flange-back F
 ///   --taping-line-offset T --inclination I --r0 R0
-/// parsed by the one option parser (core/options/options.hpp) from the one table and reader of the
+/// parsed by the one option parser (options/options.hpp) from the one table and reader of the
 /// profile and track options the geometry commands of the `wrc` front end use
-/// (core/options/geometry_options.hpp; core/identity/geometry_key.hpp: geometry_arguments writes
+/// (options/geometry_options.hpp; core/identity/geometry_key.hpp: geometry_arguments writes
 /// them). Given twice, the last one wins.
 
 #include <string>

@@ -1,6 +1,6 @@
 #include "contactd/instance_filter.hpp"
 
-#include "bus/clock.hpp"
+#include "bus/transport/clock.hpp"
 
 namespace wrc::contactd {
 

@@ -15,7 +15,7 @@
 
 #include <string>
 
-#include "bus/heartbeat_monitor.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
 #include "wrc/contact_query_t.hpp"
 
 namespace wrc::contactd {

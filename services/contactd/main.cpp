@@ -8,7 +8,7 @@
 // model hash (contactd/model_hash.hpp, once built), and the load (queries handled and rejected,
 // handling time mean/p95/max). Replies carry the same key and hash; a query whose non-empty
 // geometry_key differs is rejected. The service adds nothing to the model:
-// contactd/query_adapter.hpp only translates.
+// protocol/contact/contact_query_codec.hpp only translates.
 //
 //   wrc-contactd --model onepoint|interp|multipoint|spline [--wheel W --rail R --rail-cant C --gauge G ...]
 //                [--instance NAME] [--channel-prefix P] [--lcm-url URL] [--heartbeat-period S]
@@ -26,26 +26,27 @@
 #include <string>
 #include <vector>
 
-#include "bus/channels.hpp"
-#include "bus/clock.hpp"
-#include "bus/heartbeat_publisher.hpp"
-#include "bus/line_atomic_stderr.hpp"
-#include "bus/percentile.hpp"
-#include "bus/request_server.hpp"
-#include "bus/service_load.hpp"
-#include "bus/service_loop.hpp"
-#include "bus/service_main.hpp"
-#include "bus/service_options.hpp"
-#include "bus/serving_activity.hpp"
-#include "bus/shutdown_signal.hpp"
+#include "bus/process/line_atomic_stderr.hpp"
+#include "bus/process/shutdown_signal.hpp"
+#include "bus/service/heartbeat_publisher.hpp"
+#include "bus/service/percentile.hpp"
+#include "bus/service/service_load.hpp"
+#include "bus/service/service_loop.hpp"
+#include "bus/service/service_main.hpp"
+#include "bus/service/service_options.hpp"
+#include "bus/service/serving_activity.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/request_server.hpp"
 #include "contactd/contactd_options.hpp"
 #include "contactd/instance_filter.hpp"
 #include "contactd/model_hash.hpp"
-#include "contactd/query_adapter.hpp"
+#include "contactd/query_evaluation.hpp"
 #include "contactd/spline_model_source.hpp"
 #include "core/geometry/geometry_spec.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "protocol/contact/contact_query_codec.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
 
@@ -208,7 +209,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     if (!query.geometry_key.empty() && query.geometry_key != key) {
       return "geometry_key = '" + query.geometry_key + "' but this service computes with geometry_key " + key;
     }
-    return wrc::contactd::validate_query(query);
+    return wrc::protocol::validate_query(query);
   });
   server.set_error_filler([&](const contact_query_t&, RequestError error, const std::string& why,
                               contact_reply_t& reply) {

@@ -4,10 +4,13 @@
 
 #include <iostream>
 
-#include "bus/clock.hpp"
-#include "bus/signed_publish.hpp"
+#include "bus/auth/signed_publish.hpp"
+#include "bus/transport/clock.hpp"
 #include "core/identity/geometry_key.hpp"
-#include "geometryd/spline_model_codec.hpp"
+#include "protocol/geometry/fit_options_codec.hpp"
+#include "protocol/geometry/spline_model_codec.hpp"
+#include "protocol/geometry/spline_model_file.hpp"
+#include "protocol/geometry/track_codec.hpp"
 #include "wrc/geometry_request_t.hpp"
 #include "wrc/progress_t.hpp"
 
@@ -17,7 +20,7 @@ SplineModelSource::SplineModelSource(lcm::LCM& lcm, const bus::ChannelNames& nam
                                      GeometrySpec spec, SplineFitOptions fit, double retry_period)
     : lcm_(lcm), request_channel_(names.name(bus::channel::kGeometryRequest)), stamper_(std::move(sender)),
       spec_(std::move(spec)), fit_(std::move(fit)), retry_period_(retry_period),
-      geometry_key_(wrc::geometry_key(spec_)), model_key_(geometryd::model_key(geometry_key_, fit_)),
+      geometry_key_(wrc::geometry_key(spec_)), model_key_(protocol::model_key(geometry_key_, fit_)),
       rejections_(stamper_.sender() + " SPLINE_MODEL listener") {
   if (!(retry_period_ > 0.0)) throw std::invalid_argument("SplineModelSource: retry period must be positive");
   fit_.validate();
@@ -48,8 +51,8 @@ void SplineModelSource::send_request() {
   geometry_request_t request;
   stamper_.stamp(request.header);
   request.request_id = ++request_id_;
-  request.track = geometryd::to_message(spec_);
-  request.fit = geometryd::to_message(fit_);
+  request.track = protocol::to_message(spec_);
+  request.fit = protocol::to_message(fit_);
   request.recompute = false;
   bus::publish_signed(lcm_, request_channel_, request);
   last_request_ = bus::monotonic_seconds();
@@ -63,8 +66,8 @@ void SplineModelSource::on_model(const spline_model_t& reference, const std::str
   if (reference.model_key != model_key_) return;  // another geometry or other fit options
   if (reference.model_hash == model_hash_) return;  // the model we have, republished
   try {
-    const spline_model_t full = geometryd::resolve_model(reference);
-    pending_ = geometryd::decode_model(full);
+    const spline_model_t full = protocol::resolve_model(reference);
+    pending_ = protocol::decode_model(full);
     model_hash_ = full.model_hash;
   } catch (const std::exception& e) {
     rejections_.reject(channel, std::string("spline model ") + reference.model_key.substr(0, 12) +

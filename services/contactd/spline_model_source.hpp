@@ -11,10 +11,10 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "bus/channels.hpp"
-#include "bus/guarded_subscription.hpp"
-#include "bus/header_stamper.hpp"
-#include "bus/rejection_log.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/guarded_subscription.hpp"
+#include "bus/transport/header_stamper.hpp"
+#include "bus/transport/rejection_log.hpp"
 #include "core/geometry/geometry_spec.hpp"
 #include "core/spline/spline_contact_geometry.hpp"
 #include "core/spline/spline_fit_options.hpp"

@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
-#include "bus/channels.hpp"
-#include "bus/clock.hpp"
-#include "contactd/query_adapter.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/clock.hpp"
+#include "protocol/contact/contact_query_codec.hpp"
 
 namespace wrc::dynamics {
 
@@ -18,7 +18,7 @@ BusContact::BusContact(bus::RequestClient<contact_query_t, contact_reply_t>& cli
 
 std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>& batch) {
   contact_query_t query{};
-  contactd::to_query_message(batch, query);
+  protocol::to_query_message(batch, query);
   query.model = settings_.model;
   query.instance = settings_.instance;
   query.geometry_key = settings_.geometry_key;
@@ -46,7 +46,7 @@ std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>&
                                  std::to_string(batch.size()) + " configurations");
       std::vector<ContactResult> out;
       out.reserve(batch.size());
-      for (const contact_result_t& r : reply.results) out.push_back(contactd::from_result_message(r));
+      for (const contact_result_t& r : reply.results) out.push_back(protocol::from_result_message(r));
       return out;
     }
     ++timeouts_;

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "bus/heartbeat_monitor.hpp"
-#include "bus/request_client.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
+#include "bus/transport/request_client.hpp"
 #include "core/dynamics/contact_evaluator.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"

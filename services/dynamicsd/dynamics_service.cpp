@@ -5,8 +5,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "bus/clock.hpp"
-#include "bus/signed_publish.hpp"
+#include "bus/auth/signed_publish.hpp"
+#include "bus/transport/clock.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/spline/spline_geometry_fit.hpp"
@@ -96,16 +96,16 @@ void DynamicsService::start(const run_command_t& command) {
   status_message_.clear();
   request_id_ = command.request_id;
   try {
-    request_ = from_message(command);
+    request_ = protocol::from_message(command);
     geometry_key_ = geometry_key(request_.geometry);
     if (request_.in_process) geometry_ = std::make_shared<const WheelsetGeometry>(make_geometry(request_.geometry));
     const double r0 = request_.geometry.track.nominal_radius;
     simulation_ = std::make_unique<WheelsetSimulation>(request_.spec, make_contact(request_.model), r0);
-    for (const ScheduledSwap& swap : request_.swaps) simulation_->schedule_swap(swap.t, make_contact(swap.model));
+    for (const protocol::ScheduledSwap& swap : request_.swaps) simulation_->schedule_swap(swap.t, make_contact(swap.model));
     const std::string run_id = request_.run_id;
     const double speed = request_.spec.wheelset.speed;
     simulation_->on_output([this, run_id, speed](const WheelsetSnapshot& s) {
-      wheelset_state_t m = to_state_message(s, run_id, speed);
+      wheelset_state_t m = protocol::to_state_message(s, run_id, speed);
       publish(bus::channel::kWheelsetState, m);
     });
     wall_start_ = bus::monotonic_seconds();
@@ -161,7 +161,7 @@ void DynamicsService::apply_select() {
 
 void DynamicsService::finish() {
   wall_time_ = bus::monotonic_seconds() - wall_start_;
-  run_summary_t summary = to_summary_message(*simulation_, request_.run_id, request_id_, wall_time_);
+  run_summary_t summary = protocol::to_summary_message(*simulation_, request_.run_id, request_id_, wall_time_);
   if (summary.message.empty()) summary.message = status_message_;
   summary_ = summary;
   publish(bus::channel::kRunSummary, *summary_);
@@ -193,7 +193,7 @@ void DynamicsService::publish_status(bool force) {
   status.message = simulation_->message().empty() ? status_message_ : simulation_->message();
   publish(bus::channel::kRunStatus, status);
   const double wall = running() ? now - wall_start_ : wall_time_;
-  integrator_stats_t stats = to_stats_message(simulation_->counters(), request_.run_id, simulation_->time(), wall);
+  integrator_stats_t stats = protocol::to_stats_message(simulation_->counters(), request_.run_id, simulation_->time(), wall);
   publish(bus::channel::kIntegratorStats, stats);
   publish_progress(wall);
   if (!running() && summary_) publish(bus::channel::kRunSummary, *summary_);
@@ -215,7 +215,7 @@ void DynamicsService::publish_progress(double wall) {
   std::ostringstream message;
   message << std::setprecision(4) << "t = " << t << " of " << t_end << " s, " << c.steps << " steps, " << c.restarts
           << " restarts";
-  if (!running()) message << "; " << run_state_name(status_code(simulation_->state()));
+  if (!running()) message << "; " << protocol::run_state_name(status_code(simulation_->state()));
   p.message = message.str();
   publish(bus::channel::kProgress, p);
 }
@@ -229,7 +229,7 @@ std::string DynamicsService::activity() const {
     out << "run " << request_.run_id << ": " << simulation_->model() << ", t = " << simulation_->time() << " of "
         << request_.spec.integrator.t_end << " s, " << c.steps << " steps, " << c.restarts << " restarts";
   } else {
-    out << "idle; last run " << request_.run_id << " " << run_state_name(status_code(simulation_->state())) << " at t = "
+    out << "idle; last run " << request_.run_id << " " << protocol::run_state_name(status_code(simulation_->state())) << " at t = "
         << simulation_->time() << " s after " << wall_time_ << " s";
   }
   return out.str();

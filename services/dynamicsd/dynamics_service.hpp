@@ -14,13 +14,14 @@
 #include <optional>
 #include <string>
 
-#include "bus/channels.hpp"
-#include "bus/guarded_subscription.hpp"
-#include "bus/header_stamper.hpp"
-#include "bus/heartbeat_monitor.hpp"
-#include "bus/request_client.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/guarded_subscription.hpp"
+#include "bus/transport/header_stamper.hpp"
+#include "bus/transport/request_client.hpp"
 #include "core/dynamics/wheelset_simulation.hpp"
-#include "dynamicsd/run_codec.hpp"
+#include "protocol/run/run_command_codec.hpp"
+#include "protocol/run/run_output_codec.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
 #include "wrc/contact_select_t.hpp"
@@ -69,7 +70,7 @@ class DynamicsService {
   std::int64_t last_select_seq_ = 0;
 
   std::unique_ptr<WheelsetSimulation> simulation_;
-  RunRequest request_;
+  protocol::RunRequest request_;
   std::int64_t request_id_ = 0;
   std::string geometry_key_;
   std::shared_ptr<const WheelsetGeometry> geometry_;  // in-process runs

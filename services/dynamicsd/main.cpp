@@ -7,12 +7,12 @@
 
 #include <iostream>
 
-#include "bus/channels.hpp"
-#include "bus/heartbeat_publisher.hpp"
-#include "bus/service_loop.hpp"
-#include "bus/service_main.hpp"
-#include "bus/service_options.hpp"
-#include "bus/shutdown_signal.hpp"
+#include "bus/process/shutdown_signal.hpp"
+#include "bus/service/heartbeat_publisher.hpp"
+#include "bus/service/service_loop.hpp"
+#include "bus/service/service_main.hpp"
+#include "bus/service/service_options.hpp"
+#include "bus/transport/channels.hpp"
 #include "dynamicsd/dynamics_service.hpp"
 
 namespace {

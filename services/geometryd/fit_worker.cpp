@@ -4,9 +4,10 @@
 #include <stdexcept>
 #include <utility>
 
-#include "bus/clock.hpp"
+#include "bus/transport/clock.hpp"
 #include "core/spline/spline_geometry_fit.hpp"
-#include "geometryd/spline_model_codec.hpp"
+#include "protocol/geometry/geometry_table_codec.hpp"
+#include "protocol/geometry/spline_model_codec.hpp"
 
 namespace wrc::geometryd {
 
@@ -98,8 +99,8 @@ void FitWorker::run() {
       const WheelsetGeometry geometry = make_geometry(job.spec);
       result.geometry_seconds = monotonic_seconds() - start;
       const SplineFit fit = fit_spline_geometry(geometry, job.options, progress);
-      result.model = encode_model(fit, job.spec, job.options);
-      for (const auto& grid : fit.samples) result.tables.push_back(encode_table(*grid, job.spec, result.model.model_key));
+      result.model = protocol::encode_model(fit, job.spec, job.options);
+      for (const auto& grid : fit.samples) result.tables.push_back(protocol::encode_table(*grid, job.spec, result.model.model_key));
       result.kind = FitEvent::Kind::kFinished;
     } catch (const std::exception& e) {
       result.kind = FitEvent::Kind::kFailed;

@@ -6,10 +6,12 @@
 #include <stdexcept>
 #include <utility>
 
-#include "bus/clock.hpp"
-#include "bus/signed_publish.hpp"
+#include "bus/auth/signed_publish.hpp"
+#include "bus/transport/clock.hpp"
 #include "core/identity/geometry_key.hpp"
-#include "geometryd/spline_model_codec.hpp"
+#include "protocol/geometry/fit_options_codec.hpp"
+#include "protocol/geometry/spline_model_codec.hpp"
+#include "protocol/geometry/track_codec.hpp"
 #include "wrc/geometry_request_t.hpp"
 
 namespace wrc::geometryd {
@@ -94,9 +96,9 @@ void GeometryService::on_request(const geometry_request_t& request, const bus::R
     why = "reply_channel '" + request.reply_channel + "' is longer than 63 characters";
   } else {
     try {
-      spec = from_message(request.track);
-      options = from_message(request.fit);
-      key = model_key(geometry_key(spec), options);
+      spec = protocol::from_message(request.track);
+      options = protocol::from_message(request.fit);
+      key = protocol::model_key(geometry_key(spec), options);
     } catch (const std::exception& e) {  // invalid_argument naming the field; ProfileError for a file
       why = e.what();
     }

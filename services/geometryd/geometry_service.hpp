@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
-#include "bus/channels.hpp"
-#include "bus/guarded_subscription.hpp"
-#include "bus/header_stamper.hpp"
-#include "bus/rejection_log.hpp"
-#include "bus/service_load.hpp"
+#include "bus/service/service_load.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/guarded_subscription.hpp"
+#include "bus/transport/header_stamper.hpp"
+#include "bus/transport/rejection_log.hpp"
 #include "geometryd/fit_worker.hpp"
 #include "geometryd/model_cache.hpp"
 #include "wrc/geometry_request_t.hpp"

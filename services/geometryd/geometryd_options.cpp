@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "core/options/options.hpp"
+#include "options/options.hpp"
 
 namespace wrc::geometryd {
 
@@ -23,7 +23,7 @@ std::vector<OptionSpec> geometryd_option_specs() {
 
 GeometrydOptions GeometrydOptions::parse(const std::vector<std::string>& args) {
   ParseRules rules;
-  rules.repeated = Repeated::kLastWins;  // as the options every service shares (bus/service_options.hpp)
+  rules.repeated = Repeated::kLastWins;  // as the options every service shares (bus/service/service_options.hpp)
   const Options parsed = [&] {
     try {
       return Options::for_program("wrc-geometryd", "[options]", geometryd_option_specs(), args, rules);

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// Command line of wrc-geometryd beyond the options every service shares (bus/service_options.hpp):
+/// Command line of wrc-geometryd beyond the options every service shares (bus/service/service_options.hpp):
 ///   --cache-dir DIR   where the model files are kept (default: default_cache_dir())
 
 #include <string>
@@ -15,7 +15,7 @@ struct GeometrydOptions {
   /// Parses the arguments ServiceOptions left over. Throws std::invalid_argument with one line
   /// naming the option (unknown option, missing or empty value).
   static GeometrydOptions parse(const std::vector<std::string>& args);
-  /// Help text of these options, one line each (from the table; core/options/options.hpp parses).
+  /// Help text of these options, one line each (from the table; options/options.hpp parses).
   static std::string help_text();
 };
 

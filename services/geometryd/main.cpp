@@ -14,13 +14,13 @@
 #include <exception>
 #include <iostream>
 
-#include "bus/channels.hpp"
-#include "bus/heartbeat_publisher.hpp"
-#include "bus/line_atomic_stderr.hpp"
-#include "bus/service_loop.hpp"
-#include "bus/service_main.hpp"
-#include "bus/service_options.hpp"
-#include "bus/shutdown_signal.hpp"
+#include "bus/process/line_atomic_stderr.hpp"
+#include "bus/process/shutdown_signal.hpp"
+#include "bus/service/heartbeat_publisher.hpp"
+#include "bus/service/service_loop.hpp"
+#include "bus/service/service_main.hpp"
+#include "bus/service/service_options.hpp"
+#include "bus/transport/channels.hpp"
 #include "geometryd/fit_worker.hpp"
 #include "geometryd/geometry_service.hpp"
 #include "geometryd/geometryd_options.hpp"

@@ -4,7 +4,9 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "geometryd/spline_model_codec.hpp"
+#include "protocol/geometry/geometry_table_codec.hpp"
+#include "protocol/geometry/spline_model_codec.hpp"
+#include "protocol/geometry/spline_model_file.hpp"
 
 namespace wrc::geometryd {
 
@@ -37,12 +39,12 @@ std::optional<spline_model_t> ModelCache::find(const std::string& model_key, std
   std::error_code ec;
   if (!fs::exists(file, ec)) return std::nullopt;
   try {
-    spline_model_t full = read_model_file(file);
+    spline_model_t full = protocol::read_model_file(file);
     if (full.model_key != model_key) {
       *why = file + " holds model_key " + full.model_key;
       return std::nullopt;
     }
-    decode_model(full);
+    protocol::decode_model(full);
     return full;
   } catch (const std::exception& e) {
     *why = e.what();
@@ -50,7 +52,7 @@ std::optional<spline_model_t> ModelCache::find(const std::string& model_key, std
   }
 }
 
-spline_model_t ModelCache::store(const spline_model_t& full) const { return write_model_file(full, path(full.model_key)); }
+spline_model_t ModelCache::store(const spline_model_t& full) const { return protocol::write_model_file(full, path(full.model_key)); }
 
 std::string ModelCache::table_path(const std::string& model_key, int wheel) const {
   return (fs::path(dir_) / (model_key + (wheel == geometry_table_t::LEFT ? ".left" : ".right") + kTableFileExtension))
@@ -58,7 +60,7 @@ std::string ModelCache::table_path(const std::string& model_key, int wheel) cons
 }
 
 geometry_table_t ModelCache::store_table(const geometry_table_t& full) const {
-  return write_table_file(full, table_path(full.model_key, full.wheel));
+  return protocol::write_table_file(full, table_path(full.model_key, full.wheel));
 }
 
 std::vector<geometry_table_t> ModelCache::find_tables(const std::string& model_key) const {
@@ -68,8 +70,8 @@ std::vector<geometry_table_t> ModelCache::find_tables(const std::string& model_k
     std::error_code ec;
     if (!fs::exists(file, ec)) continue;
     try {
-      geometry_table_t full = read_table_file(file);
-      if (full.model_key == model_key && full.wheel == wheel) out.push_back(table_reference(full, file));
+      geometry_table_t full = protocol::read_table_file(file);
+      if (full.model_key == model_key && full.wheel == wheel) out.push_back(protocol::table_reference(full, file));
     } catch (const std::exception&) {
       // an unusable table is not published; the next fit of this model rewrites it
     }
@@ -78,8 +80,8 @@ std::vector<geometry_table_t> ModelCache::find_tables(const std::string& model_k
 }
 
 spline_model_t answer_message(const spline_model_t& full, const std::string& path) {
-  if (!too_large_for_inline(full)) return full;
-  return file_reference(full, path);
+  if (!protocol::too_large_for_inline(full)) return full;
+  return protocol::file_reference(full, path);
 }
 
 }  // namespace wrc::geometryd

@@ -8,14 +8,14 @@
 #include <exception>
 #include <iostream>
 
-#include "bus/channels.hpp"
-#include "bus/heartbeat_publisher.hpp"
-#include "bus/line_atomic_stderr.hpp"
-#include "bus/request_server.hpp"
-#include "bus/service_loop.hpp"
-#include "bus/serving_activity.hpp"
-#include "bus/service_options.hpp"
-#include "bus/shutdown_signal.hpp"
+#include "bus/process/line_atomic_stderr.hpp"
+#include "bus/process/shutdown_signal.hpp"
+#include "bus/service/heartbeat_publisher.hpp"
+#include "bus/service/service_loop.hpp"
+#include "bus/service/service_options.hpp"
+#include "bus/service/serving_activity.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/request_server.hpp"
 #include "wrc/ping_reply_t.hpp"
 #include "wrc/ping_request_t.hpp"
 

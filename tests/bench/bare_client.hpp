@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "bus/clock.hpp"
+#include "bus/transport/clock.hpp"
 #include "wrc/contact_reply_t.hpp"
 #include "wrc/ping_reply_t.hpp"
 

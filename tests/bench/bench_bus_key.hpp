@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "bus/bus_auth.hpp"
-#include "bus/bus_key.hpp"
+#include "bus/auth/bus_auth.hpp"
+#include "bus/auth/bus_key.hpp"
 
 namespace wrc::bench {
 

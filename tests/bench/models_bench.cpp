@@ -15,9 +15,9 @@
 #include "core/contact/fastsim.hpp"
 #include "core/contact/hertz.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
+#include "core/model_interface/patch_builder.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/models/interpolated_model.hpp"
-#include "core/models/patch_builder.hpp"
 #include "core/profile/profile_factory.hpp"
 #include "core/spline/spline_geometry_fit.hpp"
 

@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <string>
 
+#include "core/model_interface/no_contact_error.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/models/contact_range.hpp"
-#include "core/models/no_contact_error.hpp"
 #include "spline_test_model.hpp"
 
 namespace wrc {

@@ -1,4 +1,4 @@
-// The wheelset problem of the IVP test set (services/core/dynamics/ivp_wheelset.hpp), integrated with
+// The wheelset problem of the IVP test set (tests/support/ivp_wheelset.hpp), integrated with
 // IDA and compared with the test set's published reference solution at t = 10 s; the constraints are
 // checked along the whole solution. Background and the numbers measured: docs/ivp-wheelset.md.
 //
@@ -18,7 +18,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/dynamics/ivp_wheelset.hpp"
+#include "support/ivp_wheelset.hpp"
 
 namespace wrc {
 namespace {

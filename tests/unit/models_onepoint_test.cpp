@@ -12,8 +12,8 @@
 
 #include "core/contact/hertz.hpp"
 #include "core/contact/kalker_coefficients.hpp"
+#include "core/model_interface/patch_builder.hpp"
 #include "core/models/one_point_model.hpp"
-#include "core/models/patch_builder.hpp"
 #include "core/profile/profile_factory.hpp"
 
 namespace wrc {

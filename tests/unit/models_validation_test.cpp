@@ -11,8 +11,8 @@
 #include <string>
 
 #include "core/contact/hertz.hpp"
+#include "core/model_interface/patch_builder.hpp"
 #include "core/models/contact_model_factory.hpp"
-#include "core/models/patch_builder.hpp"
 #include "core/profile/profile_factory.hpp"
 #include "spline_test_model.hpp"
 

@@ -13,9 +13,9 @@
 #include "cli/profile_options.hpp"
 #include "core/contact/hertz.hpp"
 #include "core/geometry/contact_area.hpp"
-#include "core/models/contact_model.hpp"
-#include "core/models/contact_model_options.hpp"
-#include "core/models/patch_builder.hpp"
+#include "core/model_interface/contact_model.hpp"
+#include "core/model_interface/contact_model_options.hpp"
+#include "core/model_interface/patch_builder.hpp"
 #include "core/spline/spline_geometry_fit.hpp"
 
 namespace wrc::cli::plot {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/models/contact_model.hpp"
+#include "core/model_interface/contact_model.hpp"
 
 namespace wrc {
 

@@ -16,7 +16,7 @@
 
 #include "core/dynamics/followed_branches.hpp"
 #include "core/dynamics/wheelset_parameters.hpp"
-#include "core/models/contact_model.hpp"
+#include "core/model_interface/contact_model.hpp"
 
 namespace wrc {
 

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/models/query_validation.hpp"
+#include "core/model_interface/query_validation.hpp"
 
 namespace wrc {
 namespace {

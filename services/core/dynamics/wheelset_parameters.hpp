@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "core/models/contact_model.hpp"
+#include "core/model_interface/contact_model.hpp"
 
 namespace wrc {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/models/contact_model.hpp"
-#include "core/models/contact_model_options.hpp"
+#include "core/model_interface/contact_model.hpp"
+#include "core/model_interface/contact_model_options.hpp"
 #include "core/spline/spline_contact_geometry.hpp"
 
 namespace wrc {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "core/geometry/rigid_wheelset.hpp"
-#include "core/models/contact_model.hpp"
+#include "core/model_interface/contact_model.hpp"
 #include "core/models/flange_climb.hpp"
 #include "core/models/one_point_model.hpp"
 #include "core/models/wheel_constraint.hpp"

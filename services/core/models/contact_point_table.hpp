@@ -12,7 +12,7 @@
 
 #include "core/geometry/contact_point.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
-#include "core/models/contact_model_options.hpp"
+#include "core/model_interface/contact_model_options.hpp"
 
 namespace wrc {
 

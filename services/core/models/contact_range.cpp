@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/models/no_contact_error.hpp"
+#include "core/model_interface/no_contact_error.hpp"
 #include "core/models/one_point_model.hpp"
 #include "core/numerics/length_text.hpp"
 

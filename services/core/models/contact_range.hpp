@@ -3,7 +3,7 @@
 /// The range of configurations the Hertzian contact models are valid for, checked on a computed
 /// result: the one place of these limits (the services and the CLI get them through the models).
 
-#include "core/models/contact_model.hpp"
+#include "core/model_interface/contact_model.hpp"
 
 namespace wrc {
 

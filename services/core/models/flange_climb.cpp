@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/models/contact_model.hpp"
+#include "core/model_interface/contact_model.hpp"
 #include "core/models/one_point_model.hpp"
 
 namespace wrc {

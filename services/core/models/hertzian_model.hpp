@@ -7,10 +7,10 @@
 #include <memory>
 #include <string>
 
-#include "core/models/contact_model.hpp"
-#include "core/models/contact_model_options.hpp"
+#include "core/model_interface/contact_model.hpp"
+#include "core/model_interface/contact_model_options.hpp"
+#include "core/model_interface/patch_builder.hpp"
 #include "core/models/fastsim_cache.hpp"
-#include "core/models/patch_builder.hpp"
 
 namespace wrc {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
-#include "core/models/patch_builder.hpp"
+#include "core/model_interface/patch_builder.hpp"
 #include "core/models/wheel_constraint.hpp"
 
 namespace wrc {

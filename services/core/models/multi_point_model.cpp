@@ -5,13 +5,13 @@
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
+#include "core/model_interface/patch_builder.hpp"
+#include "core/model_interface/query_validation.hpp"
+#include "core/model_interface/wheelset_motion.hpp"
 #include "core/models/flange_climb.hpp"
 #include "core/models/load_division.hpp"
 #include "core/models/one_point_model.hpp"
-#include "core/models/patch_builder.hpp"
-#include "core/models/query_validation.hpp"
 #include "core/models/wheel_constraint.hpp"
-#include "core/models/wheelset_motion.hpp"
 
 namespace wrc {
 

@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
+#include "core/model_interface/patch_builder.hpp"
 #include "core/models/flange_climb.hpp"
-#include "core/models/patch_builder.hpp"
 #include "core/models/wheel_constraint.hpp"
 
 namespace wrc {

@@ -7,7 +7,7 @@
 
 #include "core/geometry/contact_point.hpp"
 #include "core/geometry/wheelset_pose.hpp"
-#include "core/models/contact_model.hpp"
+#include "core/model_interface/contact_model.hpp"
 
 namespace wrc {
 

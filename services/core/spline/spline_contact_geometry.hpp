@@ -9,7 +9,7 @@
 
 #include "core/geometry/contact_point.hpp"
 #include "core/geometry/wheelset_pose.hpp"
-#include "core/models/patch_builder.hpp"
+#include "core/model_interface/patch_builder.hpp"
 #include "core/spline/spline_fields.hpp"
 #include "core/spline/tensor_spline.hpp"
 

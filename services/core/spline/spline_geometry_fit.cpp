@@ -13,7 +13,7 @@
 
 #include <Eigen/Dense>
 
-#include "core/models/contact_model_options.hpp"
+#include "core/model_interface/contact_model_options.hpp"
 
 namespace wrc {
 namespace {

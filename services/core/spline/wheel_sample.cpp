@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/models/patch_builder.hpp"
+#include "core/model_interface/patch_builder.hpp"
 
 namespace wrc {
 

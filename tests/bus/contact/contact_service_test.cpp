@@ -13,12 +13,13 @@
 #include <limits>
 #include <memory>
 
-#include "bus/clock.hpp"
+#include "bus/transport/clock.hpp"
 #include "bus_fixture.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/profile/profile_factory.hpp"
-#include "geometryd/spline_model_codec.hpp"
+#include "protocol/geometry/spline_model_codec.hpp"
+#include "protocol/geometry/spline_model_file.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
 #include "wrc/heartbeat_t.hpp"
@@ -391,8 +392,8 @@ TEST_F(ContactServiceTest, SplineServiceGetsItsModelFromALateGeometryService) {
 
   // The model the service loaded is the cached file's (same key the service asked for).
   const GeometrySpec spec;
-  const std::string key = geometryd::model_key(geometry_key(spec), SplineFitOptions{});
-  const auto model = geometryd::decode_model(geometryd::read_model_file(cache + "/" + key + ".splinemodel"));
+  const std::string key = protocol::model_key(geometry_key(spec), SplineFitOptions{});
+  const auto model = protocol::decode_model(protocol::read_model_file(cache + "/" + key + ".splinemodel"));
   const std::string hash = model->data_hash();
   EXPECT_EQ(monitor_->find("spline", "s", monotonic_seconds())->last.model_hash, hash);
 

@@ -17,8 +17,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bus/clock.hpp"
-#include "bus/guarded_subscription.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/guarded_subscription.hpp"
 #include "bus_fixture.hpp"
 #include "wrc/progress_t.hpp"
 #include "wrc/run_status_t.hpp"

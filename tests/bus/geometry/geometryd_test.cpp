@@ -20,13 +20,17 @@
 #include <optional>
 #include <vector>
 
-#include "bus/clock.hpp"
+#include "bus/transport/clock.hpp"
 #include "bus_fixture.hpp"
 #include "core/identity/geometry_key.hpp"
+#include "core/spline/wheel_sample.hpp"
 #include "geometryd/geometryd_options.hpp"
 #include "geometryd/model_cache.hpp"
-#include "geometryd/spline_model_codec.hpp"
-#include "core/spline/wheel_sample.hpp"
+#include "protocol/geometry/fit_options_codec.hpp"
+#include "protocol/geometry/geometry_table_codec.hpp"
+#include "protocol/geometry/spline_model_codec.hpp"
+#include "protocol/geometry/spline_model_file.hpp"
+#include "protocol/geometry/track_codec.hpp"
 #include "wrc/geometry_request_t.hpp"
 #include "wrc/geometry_table_t.hpp"
 #include "wrc/heartbeat_t.hpp"
@@ -37,8 +41,8 @@ namespace wrc::bus::test {
 namespace {
 
 namespace fs = std::filesystem;
-using geometryd::decode_model;
-using geometryd::resolve_model;
+using protocol::decode_model;
+using protocol::resolve_model;
 
 constexpr double kPeriod = 0.2;  // [s] heartbeat period of the services started here
 
@@ -118,8 +122,8 @@ class GeometryServiceTest : public BusTest {
     wrc::geometry_request_t r{};
     r.request_id = id;
     r.reply_channel = default_channel ? std::string() : reply_channel_;
-    r.track = geometryd::to_message(GeometrySpec{});
-    r.fit = geometryd::to_message(options);
+    r.track = protocol::to_message(GeometrySpec{});
+    r.fit = protocol::to_message(options);
     r.recompute = recompute;
     return r;
   }
@@ -162,7 +166,7 @@ class GeometryServiceTest : public BusTest {
 TEST_F(GeometryServiceTest, FitsASmallModelThenAnswersFromTheCache) {
   start_service();
   const SplineFitOptions options = small_options();
-  const std::string key = geometryd::model_key(geometry_key(GeometrySpec{}), options);
+  const std::string key = protocol::model_key(geometry_key(GeometrySpec{}), options);
 
   double t0 = monotonic_seconds();
   send(make_request(11, options));
@@ -240,7 +244,7 @@ TEST_F(GeometryServiceTest, PublishesTheExactSamplesAsGeometryTables) {
   for (const wrc::geometry_table_t& reference : tables_[21]) {
     EXPECT_EQ(reference.num_values, 0);  // the values are in the file
     EXPECT_EQ(reference.model_key, fitted->model_key);
-    const wrc::geometry_table_t t = geometryd::resolve_table(reference);
+    const wrc::geometry_table_t t = protocol::resolve_table(reference);
     const WheelSide side = t.wheel == wrc::geometry_table_t::LEFT ? WheelSide::kLeft : WheelSide::kRight;
     ASSERT_EQ(t.column_names[kFieldZ], "z");
     const int columns = t.num_columns;
@@ -359,7 +363,7 @@ TEST_F(GeometryServiceTest, HeartbeatsKeepComingDuringADefaultFit) {
 TEST_F(GeometryServiceTest, FitCommandPrecomputesOnTheService) {
   start_service();
   const SplineFitOptions options = small_options();
-  const std::string key = geometryd::model_key(geometry_key(GeometrySpec{}), options);
+  const std::string key = protocol::model_key(geometry_key(GeometrySpec{}), options);
   const std::string command = std::string(WRC_CLI_PATH) +
                               " fit --service --knots 4x1x1 --degree 3x1x1 --samples 3x3 --sample-step 5e-4 2>&1";
   int status = -1;

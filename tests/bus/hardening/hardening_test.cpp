@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "../malformed/malformed_messages.hpp"
-#include "bus/clock.hpp"
-#include "bus/request_client.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/request_client.hpp"
 #include "bus_fixture.hpp"
 #include "child_process.hpp"
 #include "wrc/contact_reply_t.hpp"

@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "bus/bus_auth.hpp"
-#include "bus/clock.hpp"
-#include "bus/lcm_url.hpp"
+#include "bus/auth/bus_auth.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/lcm_url.hpp"
 
 namespace wrc::bus::test {
 

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "bus/channels.hpp"
-#include "bus/heartbeat_monitor.hpp"
-#include "bus/request_client.hpp"
-#include "bus/signed_publish.hpp"
+#include "bus/auth/signed_publish.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/request_client.hpp"
 #include "child_process.hpp"
 #include "wrc/ping_reply_t.hpp"
 #include "wrc/ping_request_t.hpp"

@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include "bus/clock.hpp"
-#include "bus/spawn_child.hpp"
+#include "bus/process/spawn_child.hpp"
+#include "bus/transport/clock.hpp"
 
 namespace wrc::bus::test {
 

@@ -6,7 +6,7 @@
 
 #include <fstream>
 
-#include "bus/clock.hpp"
+#include "bus/transport/clock.hpp"
 #include "bus_fixture.hpp"
 #include "wrc/heartbeat_t.hpp"
 

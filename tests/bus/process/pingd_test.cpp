@@ -5,7 +5,7 @@
 
 #include <cstdlib>
 
-#include "bus/clock.hpp"
+#include "bus/transport/clock.hpp"
 #include "bus_fixture.hpp"
 #include "wrc/heartbeat_t.hpp"
 

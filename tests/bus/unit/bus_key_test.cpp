@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "bus/bus_key.hpp"
+#include "bus/auth/bus_key.hpp"
 
 namespace {
 using namespace wrc::bus;

@@ -1,7 +1,7 @@
 // Channel names: prefix rules, length limit, regex escaping.
 #include <gtest/gtest.h>
 
-#include "bus/channels.hpp"
+#include "bus/transport/channels.hpp"
 
 namespace {
 using wrc::bus::ChannelNames;

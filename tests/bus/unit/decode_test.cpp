@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "bus/decode.hpp"
+#include "bus/transport/decode.hpp"
 #include "wrc/heartbeat_t.hpp"
 #include "wrc/ping_request_t.hpp"
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "../malformed/malformed_messages.hpp"
-#include "bus/allocation_budget.hpp"
-#include "bus/decode.hpp"
+#include "bus/transport/allocation_budget.hpp"
+#include "bus/transport/decode.hpp"
 
 namespace {
 using namespace wrc::bus;

@@ -6,10 +6,10 @@
 #include <thread>
 #include <vector>
 
-#include "bus/heartbeat_monitor.hpp"
-#include "bus/heartbeat_publisher.hpp"
-#include "bus/drop_counters.hpp"
-#include "bus/message_auth.hpp"
+#include "bus/auth/message_auth.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
+#include "bus/service/heartbeat_publisher.hpp"
+#include "bus/transport/drop_counters.hpp"
 #include "memq_bus.hpp"
 #include "test_bus_key.hpp"
 

@@ -1,7 +1,7 @@
 // Launch profiles: parsing, comments, selection, and errors naming file, line and service.
 #include <gtest/gtest.h>
 
-#include "bus/launch_profile.hpp"
+#include "bus/process/launch_profile.hpp"
 
 namespace {
 using namespace wrc::bus;

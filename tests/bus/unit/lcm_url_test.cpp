@@ -1,6 +1,6 @@
-// The URL rule of bus/lcm_url.hpp: a udpm URL without recv_buf_size gets one no larger than the
+// The URL rule of bus/transport/lcm_url.hpp: a udpm URL without recv_buf_size gets one no larger than the
 // kernel allows; anything else is kept as the user wrote it.
-#include "bus/lcm_url.hpp"
+#include "bus/transport/lcm_url.hpp"
 
 #include <gtest/gtest.h>
 

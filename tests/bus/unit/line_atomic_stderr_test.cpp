@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "bus/line_atomic_stderr.hpp"
+#include "bus/process/line_atomic_stderr.hpp"
 
 namespace {
 

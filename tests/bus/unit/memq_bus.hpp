@@ -5,7 +5,7 @@
 
 #include <functional>
 
-#include "bus/clock.hpp"
+#include "bus/transport/clock.hpp"
 
 namespace wrc::bus::test {
 

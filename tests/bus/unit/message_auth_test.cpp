@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "bus/message_auth.hpp"
+#include "bus/auth/message_auth.hpp"
 #include "test_bus_key.hpp"
 
 namespace {

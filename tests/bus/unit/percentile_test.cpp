@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "bus/percentile.hpp"
+#include "bus/service/percentile.hpp"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // messages refused, the table bounded.
 #include <gtest/gtest.h>
 
-#include "bus/replay_guard.hpp"
+#include "bus/auth/replay_guard.hpp"
 
 namespace {
 using namespace wrc::bus;

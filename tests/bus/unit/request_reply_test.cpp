@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "bus/request_client.hpp"
-#include "bus/request_server.hpp"
-#include "bus/signed_publish.hpp"
+#include "bus/auth/signed_publish.hpp"
+#include "bus/transport/request_client.hpp"
+#include "bus/transport/request_server.hpp"
 #include "memq_bus.hpp"
 #include "test_bus_key.hpp"
 #include "wrc/ping_reply_t.hpp"

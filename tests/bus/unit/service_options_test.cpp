@@ -1,7 +1,7 @@
 // Common service options: parsed, passed through, or refused with a message naming the value.
 #include <gtest/gtest.h>
 
-#include "bus/service_options.hpp"
+#include "bus/service/service_options.hpp"
 
 namespace {
 using wrc::bus::ServiceOptions;

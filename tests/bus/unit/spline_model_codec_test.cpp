@@ -1,4 +1,4 @@
-// The spline model on the bus and on disk (services/geometryd/spline_model_codec.hpp): a fitted
+// The spline model on the bus and on disk (services/protocol/geometry/): a fitted
 // model survives encoding, the model file and decoding bit for bit; a corrupted file, a wrong
 // function list or a wrong model hash are refused naming what does not match; fit options and
 // track survive their messages.
@@ -11,9 +11,12 @@
 #include <fstream>
 
 #include "core/identity/geometry_key.hpp"
-#include "geometryd/spline_model_codec.hpp"
+#include "protocol/geometry/fit_options_codec.hpp"
+#include "protocol/geometry/spline_model_codec.hpp"
+#include "protocol/geometry/spline_model_file.hpp"
+#include "protocol/geometry/track_codec.hpp"
 
-namespace wrc::geometryd {
+namespace wrc::protocol {
 namespace {
 
 SplineFitOptions quick_options() {
@@ -137,4 +140,4 @@ TEST(SplineModelCodec, FitOptionsAndTrackSurviveTheirMessages) {
 }
 
 }  // namespace
-}  // namespace wrc::geometryd
+}  // namespace wrc::protocol

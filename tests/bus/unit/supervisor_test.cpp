@@ -9,8 +9,8 @@
 #include <sstream>
 #include <thread>
 
-#include "bus/clock.hpp"
-#include "bus/process_supervisor.hpp"
+#include "bus/process/process_supervisor.hpp"
+#include "bus/transport/clock.hpp"
 
 namespace {
 using namespace wrc::bus;

@@ -4,7 +4,7 @@
 
 #include "test_bus_key.hpp"
 
-#include "bus/bus_auth.hpp"
+#include "bus/auth/bus_auth.hpp"
 
 namespace wrc::bus::test {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The bus key every unit test of the bus runs with (installed before the first test).
-#include "bus/bus_key.hpp"
+#include "bus/auth/bus_key.hpp"
 
 namespace wrc::bus::test {
 

@@ -1,5 +1,5 @@
 /// @file
-/// Rigid two-point contact over the bus (services/contactd/query_adapter.hpp): the second point
+/// Rigid two-point contact over the bus (services/protocol/contact/contact_query_codec.hpp): the second point
 /// of each wheel (its tracked s and load in wheelset_configuration_t, its constraint in
 /// contact_result_t) lands in its own library field both ways, is absent when the library has
 /// none, a bad second load or tracked s is named, and the real one-point model answers a
@@ -10,11 +10,12 @@
 #include <limits>
 #include <memory>
 
-#include "contactd/query_adapter.hpp"
+#include "contactd/query_evaluation.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/profile/profile_factory.hpp"
+#include "protocol/contact/contact_query_codec.hpp"
 
-namespace wrc::contactd {
+namespace wrc::protocol {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -110,7 +111,7 @@ TEST(TwoPointCodec, OnePointModelAnswersTheSameThroughTheMessage) {
   q.configurations[0].roll = -0.00034;
   q.configurations[0].tracked_s_wheel_left = kNaN;
   wrc::contact_reply_t reply{};
-  evaluate_query(*model, q, reply);
+  contactd::evaluate_query(*model, q, reply);
   ASSERT_EQ(reply.status, wrc::contact_reply_t::OK) << reply.message;
   const ContactResult direct = model->evaluate(to_contact_query(q, 0));
   const ContactResult through = from_result_message(reply.results[0]);
@@ -123,4 +124,4 @@ TEST(TwoPointCodec, OnePointModelAnswersTheSameThroughTheMessage) {
 }
 
 }  // namespace
-}  // namespace wrc::contactd
+}  // namespace wrc::protocol

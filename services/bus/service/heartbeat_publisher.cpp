@@ -1,0 +1,89 @@
+#include "bus/service/heartbeat_publisher.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <stdexcept>
+
+#include "bus/auth/signed_publish.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/drop_counters.hpp"
+
+namespace wrc::bus {
+
+HeartbeatPublisher::HeartbeatPublisher(lcm::LCM& lcm, std::string channel, ServiceIdentity identity,
+                                       double period)
+    : lcm_(lcm),
+      channel_(std::move(channel)),
+      identity_(std::move(identity)),
+      period_(period),
+      started_(monotonic_seconds()),
+      started_utime_(wall_utime()),
+      last_sent_(-1e300),
+      stamper_(sender_name(identity_.program, identity_.instance)) {
+  if (!(period > 0.0) || !std::isfinite(period)) {
+    throw std::invalid_argument("heartbeat period " + std::to_string(period) + " s is not positive");
+  }
+}
+
+void HeartbeatPublisher::set_state(std::int8_t state, std::string reason) {
+  state_ = state;
+  state_reason_ = std::move(reason);
+  publish_now();
+}
+
+bool HeartbeatPublisher::tick() {
+  if (seconds_until_due() > 0.0) return false;
+  publish_now();
+  return true;
+}
+
+double HeartbeatPublisher::seconds_until_due() const {
+  return std::max(0.0, last_sent_ + period_ - monotonic_seconds());
+}
+
+void HeartbeatPublisher::publish_now() {
+  wrc::heartbeat_t hb{};
+  stamper_.stamp(hb.header);
+  hb.model = identity_.model;
+  hb.instance = identity_.instance;
+  hb.pid = static_cast<std::int32_t>(::getpid());
+  hb.state = state_;
+  hb.request_channel = identity_.request_channel;
+  hb.interface_version = wrc::heartbeat_t::INTERFACE_VERSION;
+  hb.period = period_;
+  const double now = monotonic_seconds();
+  hb.uptime = now - started_;
+  hb.requests_handled = load_.requests_handled;
+  hb.requests_rejected = load_.requests_rejected;
+  hb.max_queue = load_.max_queue;
+  hb.busy_fraction = load_.busy_fraction;
+  hb.latency_mean = load_.latency_mean;
+  hb.latency_p95 = load_.latency_p95;
+  hb.latency_max = load_.latency_max;
+  hb.geometry_key = geometry_key_;
+  hb.model_hash = model_hash_;
+  hb.started_utime = started_utime_;
+  hb.state_reason = state_reason_;
+  if (activity_source_) {
+    try {
+      hb.activity = activity_source_();
+    } catch (const std::exception& e) {
+      hb.activity = std::string("(activity unknown: ") + e.what() + ")";
+    }
+  }
+  const DropCounts drops = drop_counts();
+  hb.dropped_unsigned = drops.unsigned_messages();
+  hb.dropped_bad_signature = drops.bad_signature();
+  hb.dropped_replayed = drops.replayed();
+  hb.dropped_malformed = drops.malformed();
+  if (publish_signed(lcm_, channel_, hb) != 0) {
+    std::cerr << stamper_.sender() << ": publishing the heartbeat on " << channel_ << " failed\n";
+  }
+  last_sent_ = now;
+  ++published_;
+}
+
+}  // namespace wrc::bus

@@ -1,0 +1,173 @@
+#pragma once
+/// @file
+/// Client side of request/reply over LCM: every request carries a request id and a reply
+/// channel; the reply echoes the id. Requests are signed (bus/auth/signed_publish.hpp), replies
+/// arrive through the guarded path (bus/transport/guarded_subscription.hpp). Ids start at a random
+/// multiple of 2^32 per client (a per-client nonce) and count up from there. A call waits for its reply with a per-attempt timeout,
+/// re-sends the same request (same id) on timeout, and ignores stale or duplicate replies,
+/// counting them. Request types need `int64_t request_id` and `string reply_channel` fields,
+/// reply types `int64_t request_id`.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "bus/auth/signed_publish.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/clock.hpp"
+#include "bus/transport/guarded_subscription.hpp"
+#include "bus/transport/header_stamper.hpp"
+#include "bus/transport/rejection_log.hpp"
+
+namespace wrc::bus {
+
+/// How long to wait and how often to try.
+struct CallPolicy {
+  double timeout = 0.2;  ///< [s] wait for a reply per attempt, > 0
+  int retries = 3;       ///< [-] re-sends after the first attempt, >= 0
+};
+
+/// Counters of one client, for logs, heartbeats and run summaries.
+struct ClientCounters {
+  std::int64_t calls = 0;              ///< calls made
+  std::int64_t sent = 0;               ///< requests published, retries included
+  std::int64_t retries = 0;            ///< re-sends after a timeout
+  std::int64_t failed_calls = 0;       ///< calls that got no reply in any attempt
+  std::int64_t replies = 0;            ///< replies accepted
+  std::int64_t stale_replies = 0;      ///< replies to an id that is not pending (older calls)
+  std::int64_t duplicate_replies = 0;  ///< second replies to the last completed call
+  std::int64_t rejected_replies = 0;   ///< replies that did not decode
+};
+
+/// Outcome of one call: the reply when one arrived, and how many attempts it took.
+template <class Reply>
+struct CallResult {
+  std::optional<Reply> reply;  ///< the reply; empty when every attempt timed out
+  int attempts = 0;            ///< [-] requests sent for this call (1 = no retry)
+  double round_trip = 0.0;     ///< [s] from the first send to the accepted reply
+  explicit operator bool() const { return reply.has_value(); }
+};
+
+/// A unique client id for reply channels: "<program>-<pid>-<n>".
+std::string make_client_id(const std::string& program);
+
+/// Synchronous request/reply client on one LCM instance. Not thread-safe; while waiting it
+/// dispatches every subscription of the LCM object (heartbeat monitors keep working).
+template <class Request, class Reply>
+class RequestClient {
+ public:
+  /// request_channel and reply_channel are full bus names (prefix applied, see ChannelNames).
+  /// sender: header sender name. Throws std::runtime_error if the subscription fails.
+  RequestClient(lcm::LCM& lcm, std::string request_channel, std::string reply_channel,
+                std::string sender)
+      : lcm_(lcm),
+        request_channel_(std::move(request_channel)),
+        reply_channel_(std::move(reply_channel)),
+        stamper_(std::move(sender)),
+        last_id_(first_request_id()) {
+    subscription_ = std::make_unique<GuardedSubscription<Reply>>(
+        lcm_, reply_channel_, "request client on " + reply_channel_,
+        [this](const Reply& reply, const ReceivedMessage&) { on_reply(reply); }, 100);
+    subscription_->set_drop_observer([this](DropKind) { ++counters_.rejected_replies; });
+  }
+  RequestClient(const RequestClient&) = delete;
+  RequestClient& operator=(const RequestClient&) = delete;
+
+  /// Sends request (request_id, reply_channel and header are filled in here) and waits for the
+  /// reply, re-sending after each timeout up to policy.retries times. Throws
+  /// std::invalid_argument for a non-positive timeout or negative retries, std::runtime_error
+  /// when LCM fails.
+  CallResult<Reply> call(Request& request, const CallPolicy& policy) {
+    if (!(policy.timeout > 0.0) || !std::isfinite(policy.timeout)) {
+      throw std::invalid_argument("call timeout " + std::to_string(policy.timeout) +
+                                  " s is not a positive number");
+    }
+    if (policy.retries < 0) {
+      throw std::invalid_argument("call retries " + std::to_string(policy.retries) + " is negative");
+    }
+    ++counters_.calls;
+    pending_id_ = ++last_id_;
+    request.request_id = pending_id_;
+    request.reply_channel = reply_channel_;
+    answer_.reset();
+    CallResult<Reply> result;
+    const double start = monotonic_seconds();
+    for (int attempt = 0; attempt <= policy.retries && !answer_; ++attempt) {
+      if (attempt > 0) ++counters_.retries;
+      stamper_.stamp(request.header);
+      if (publish_signed(lcm_, request_channel_, request) != 0) {
+        throw std::runtime_error("publish on '" + request_channel_ + "' failed");
+      }
+      ++counters_.sent;
+      ++result.attempts;
+      wait_for_answer(monotonic_seconds() + policy.timeout);
+    }
+    pending_id_ = 0;
+    if (answer_) {
+      completed_id_ = request.request_id;
+      ++counters_.replies;
+      result.round_trip = monotonic_seconds() - start;
+      result.reply = std::move(answer_);
+      answer_.reset();
+    } else {
+      ++counters_.failed_calls;
+    }
+    return result;
+  }
+
+  /// Directs later requests to another channel (hot swap between services).
+  void set_request_channel(std::string channel) { request_channel_ = std::move(channel); }
+  /// Current request channel.
+  const std::string& request_channel() const { return request_channel_; }
+  /// Channel the replies arrive on.
+  const std::string& reply_channel() const { return reply_channel_; }
+  /// Counters since construction.
+  const ClientCounters& counters() const { return counters_; }
+
+ private:
+  void wait_for_answer(double deadline) {
+    while (!answer_) {
+      const double remaining = deadline - monotonic_seconds();
+      if (remaining <= 0.0) return;
+      const int ms = static_cast<int>(std::ceil(remaining * 1e3));
+      const int rc = lcm_.handleTimeout(ms);
+      if (rc < 0 && errno != EINTR) throw std::runtime_error("LCM handle failed while waiting for a reply");
+      if (rc < 0) return;  // interrupted by a signal: let the caller look at its shutdown flag
+    }
+  }
+
+  /// A random positive multiple of 2^32 below 2^62: ids of two clients do not meet.
+  static std::int64_t first_request_id() {
+    return static_cast<std::int64_t>((MessageAuth::random_nonce() % ((std::uint64_t{1} << 30) - 1)) + 1) << 32;
+  }
+
+  void on_reply(const Reply& reply) {
+    if (pending_id_ != 0 && reply.request_id == pending_id_ && !answer_) {
+      answer_ = reply;
+    } else if ((completed_id_ != 0 && reply.request_id == completed_id_) ||
+               (pending_id_ != 0 && reply.request_id == pending_id_)) {
+      ++counters_.duplicate_replies;
+    } else {
+      ++counters_.stale_replies;
+    }
+  }
+
+  lcm::LCM& lcm_;
+  std::string request_channel_;
+  std::string reply_channel_;
+  HeaderStamper stamper_;
+  std::unique_ptr<GuardedSubscription<Reply>> subscription_;
+  ClientCounters counters_;
+  std::int64_t last_id_;           // the first call gets last_id_ + 1, then +1 per call
+  std::int64_t pending_id_ = 0;    // id of the call in progress, 0 = none
+  std::int64_t completed_id_ = 0;  // id of the last call that got its reply
+  std::optional<Reply> answer_;
+};
+
+}  // namespace wrc::bus

@@ -1,0 +1,46 @@
+#pragma once
+/// @file
+/// The START command of a run and its library counterpart: RunRequest (model, geometry, the
+/// RunSpec, the contact client's timeouts, the scheduled swaps) <-> run_command_t, and the names of
+/// the run states. No transport here.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/dynamics/wheelset_simulation.hpp"
+#include "core/geometry/geometry_spec.hpp"
+#include "wrc/run_command_t.hpp"
+
+namespace wrc::protocol {
+
+/// A swap at a given simulated time.
+struct ScheduledSwap {
+  double t = 0;       ///< [s]
+  std::string model;  ///< model to swap to
+};
+
+/// Everything a START command says.
+struct RunRequest {
+  std::string run_id;
+  std::string model;
+  std::string instance;
+  GeometrySpec geometry;
+  bool in_process = false;
+  RunSpec spec;
+  double contact_timeout = 0.2;  ///< [s] per attempt
+  int contact_retries = 3;       ///< [-] re-sends per attempt round
+  double contact_wait = 10.0;    ///< [s] how long a run waits for a (restarted) contact service
+  std::vector<ScheduledSwap> swaps;
+};
+
+/// Name of a run_status_t state code, as the summary JSON and the logs write it ("idle",
+/// "running", "finished", "failed", "stopped"; "unknown" for any other code).
+const char* run_state_name(std::int8_t state);
+
+/// The START command of request (header, request_id are the caller's).
+run_command_t to_message(const RunRequest& request);
+/// @throws std::invalid_argument naming the first invalid field (unknown model, NaN, range).
+RunRequest from_message(const run_command_t& command);
+
+}  // namespace wrc::protocol

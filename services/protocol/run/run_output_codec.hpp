@@ -1,0 +1,24 @@
+#pragma once
+/// @file
+/// What a run publishes, in message form: WheelsetSnapshot -> wheelset_state_t, RunCounters ->
+/// integrator_stats_t, the end of a run -> run_summary_t. No transport here.
+
+#include <cstdint>
+#include <string>
+
+#include "core/dynamics/wheelset_simulation.hpp"
+#include "wrc/integrator_stats_t.hpp"
+#include "wrc/run_summary_t.hpp"
+#include "wrc/wheelset_state_t.hpp"
+
+namespace wrc::protocol {
+
+/// The state message of a snapshot at speed V (x = V t).
+wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, double speed);
+/// The counters message.
+integrator_stats_t to_stats_message(const RunCounters& c, const std::string& run_id, double t, double wall_time);
+/// The summary of a finished, failed or stopped simulation.
+run_summary_t to_summary_message(WheelsetSimulation& simulation, const std::string& run_id, std::int64_t request_id,
+                                 double wall_time);
+
+}  // namespace wrc::protocol

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The model cache of wrc-geometryd: one file per model, <dir>/<model_key>.splinemodel, in the
-/// format of spline_model_codec.hpp (write_model_file). Every model the service fits is stored;
+/// format of protocol/geometry/spline_model_file.hpp (write_model_file). Every model the service fits is stored;
 /// a request for a stored model is answered from its file.
 
 #include <optional>

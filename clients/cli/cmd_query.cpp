@@ -2,8 +2,9 @@
 // patches, one row per patch. The service is found by its heartbeat: a READY instance of model M
 // that computes with the asked geometry (its heartbeat's geometry_key equals the key of the
 // profile and track options, core/identity/geometry_key.hpp); with several, the smallest instance name
-// is addressed. When none is heard within 1.5 s, the query starts one (wrc-contactd from the build
-// tree) in the background, waits for READY, asks it and stops it afterwards.
+// is addressed. When none is heard within kServiceDiscoveryTime (cli/service_starter.hpp), the
+// query starts one (wrc-contactd from the build tree) in the background, waits for READY, asks it
+// and stops it afterwards.
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -36,6 +37,7 @@
 #include "core/geometry/wheelset_geometry.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "core/numerics/number_text.hpp"
 #include "protocol/contact/contact_status.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
@@ -83,20 +85,12 @@ double touching_height(const WheelsetGeometry& geometry, double y, double roll, 
 
 // ---- output --------------------------------------------------------------------------------------
 
-std::string number(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+std::string number(double v) { return number_text(v, 10); }
 
 void print_patches(const wrc::contact_reply_t& reply, const std::string& format) {
   // Full precision for csv (machine reading), six significant digits for the aligned table.
-  const char* number_format = format == "csv" ? "%.10g" : "%.6g";
-  auto cell = [&](double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, number_format, v);
-    return std::string(buf);
-  };
+  const int digits = format == "csv" ? 10 : 6;
+  auto cell = [&](double v) { return number_text(v, digits); };
   const std::vector<std::string> header{"wheel", "s", "angle", "a", "b", "penetration", "normal_force", "fx", "fy",
                                         "mz", "xi_x", "xi_y", "spin", "rolling_radius", "s_rail", "x", "y", "z",
                                         "lateral_curvature_floored"};
@@ -176,7 +170,9 @@ int run_query(const std::vector<std::string>& args) {
                  "(a rolling, b lateral semi-axis; forces on the wheel in the contact frame; x,y,z the contact\n"
                  "point on the wheel, track frame; SI units). The service is a READY instance of M heard on\n"
                  "HEARTBEAT that computes with the same profiles and track (smallest instance name first); when\n"
-                 "none is heard within 1.5 s one is started from the build tree and stopped afterwards.\n"
+                 "none is heard within "
+              << kServiceDiscoveryTime
+              << " s one is started from the build tree and stopped afterwards.\n"
                  "Rigid formulation: --load per wheel; z defaults to the height where the closer wheel just\n"
                  "touches (positions only; the loads set the forces). Elastic: the forces follow from the\n"
                  "penetration; without --z the rigid wheelset solution (both wheels touching; its roll unless\n"

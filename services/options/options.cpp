@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <sstream>
+
+#include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
@@ -19,13 +19,8 @@ bool looks_like_short_option(const std::string& arg) {
 }  // namespace
 
 double parse_finite(const std::string& text, const std::string& what) {
-  errno = 0;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(value)) {
-    throw UsageError(what + ": '" + text + "' is not a finite number");
-  }
-  return value;
+  if (const std::optional<double> value = finite_number(text)) return *value;
+  throw UsageError(not_a_finite_number(what, text));
 }
 
 Options::Options(std::string command, std::string synopsis, std::vector<OptionSpec> specs,

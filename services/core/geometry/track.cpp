@@ -1,8 +1,10 @@
 #include "core/geometry/track.hpp"
 
-#include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
@@ -32,13 +34,11 @@ void TrackParameters::validate() const {
 double parse_inclination(const std::string& text) {
   if (text == "none" || text == "0") return 0.0;
   if (text.rfind("1:", 0) == 0) {
-    char* end = nullptr;
-    const double n = std::strtod(text.c_str() + 2, &end);
-    if (end && *end == '\0' && std::isfinite(n) && n >= 5) return std::atan(1.0 / n);
+    const std::optional<double> n = finite_number(text.substr(2));
+    if (n && *n >= 5) return std::atan(1.0 / *n);
   } else {
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (!text.empty() && end && *end == '\0' && std::isfinite(v) && std::fabs(v) <= 0.2) return v;
+    const std::optional<double> v = finite_number(text);
+    if (v && std::fabs(*v) <= 0.2) return *v;
   }
   throw std::invalid_argument("inclination '" + text + "' is not 1:N (N >= 5), none, or an angle in [-0.2, 0.2] rad");
 }

@@ -1,22 +1,17 @@
 #include "core/identity/geometry_key.hpp"
 
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
 #include "core/identity/sha256.hpp"
+#include "core/numerics/number_text.hpp"
 #include "core/profile/profile_error.hpp"
 
 namespace wrc {
 namespace {
 
-std::string exact(double value) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", value);
-  return buf;
-}
+std::string exact(double value) { return exact_number_text(value); }
 
 bool starts_with(const std::string& text, const std::string& prefix) {
   return text.compare(0, prefix.size(), prefix) == 0;
@@ -26,10 +21,8 @@ bool starts_with(const std::string& text, const std::string& prefix) {
 // (make_profile rejects the spec anyway).
 std::string canonical_parameter(const std::string& spec, const std::string& prefix) {
   const std::string text = spec.substr(prefix.size());
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) return spec;
-  return prefix + exact(value);
+  const std::optional<double> value = finite_number(text);
+  return value ? prefix + exact(*value) : spec;
 }
 
 // One profile as its content: the canonical name of a built-in (the names make_profile knows),

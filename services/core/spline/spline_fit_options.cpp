@@ -1,22 +1,18 @@
 #include "core/spline/spline_fit_options.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/geometry/wheelset_geometry.hpp"
+#include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("spline fit: " + what); }
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string num(double v) { return exact_number_text(v); }
 
 void require_positive(double v, const char* name, const char* unit) {
   if (!(v > 0.0) || !std::isfinite(v)) bad(std::string(name) + " = " + num(v) + " " + unit + " must be positive and finite");

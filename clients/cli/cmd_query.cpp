@@ -147,7 +147,7 @@ int run_query(const std::vector<std::string>& args) {
       {"--z", true, "height of the wheelset centre above the top-of-rail plane [m]",
        "rigid: closer wheel just touching; elastic: that minus --penetration"},
       {"--penetration", true, "elastic without --z: how far the centre is lowered below touching [m]", "1e-4"},
-      {"--load", true, "normal load per wheel, rigid formulation [N]", "77357.5"},
+      {"--load", true, "normal load per wheel, rigid formulation [N]", number_text(kDefaultLoad)},
       {"--formulation", true, "rigid (loads given) or elastic (forces from penetration)", "rigid"},
       {"--speed", true, "forward speed V [m/s]", "30"},
       {"--spin-rate", true, "angular velocity about the axle [rad/s]", "V/r0"},
@@ -179,20 +179,20 @@ int run_query(const std::vector<std::string>& args) {
                  "--roll is given) is lowered by --penetration.\n";
     return 0;
   }
-  const std::string model = o.choice("--model", contact_model_names(), "");
+  const std::string model = o.choice("--model", contact_model_names());
   if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
-  const double y = o.required_number("--y", -0.5, 0.5);
-  const double yaw = o.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
-  const std::string formulation = o.choice("--formulation", {"rigid", "elastic"}, "rigid");
-  const double speed = o.number("--speed", 30.0, 1e-6, 1000.0);
-  const double load = o.number("--load", kDefaultLoad, 0.0, 1e8);
+  const double y = o.required_number("--y", {-0.5, 0.5});
+  const double yaw = o.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
+  const std::string formulation = o.choice("--formulation", {"rigid", "elastic"});
+  const double speed = o.number("--speed", {1e-6, 1000.0});
+  const double load = o.number("--load", {0.0, 1e8});
   int elements = 20, strips = 20;
   if (o.has("--grid")) parse_grid(o.text("--grid"), &elements, &strips);
   bus::CallPolicy policy;
-  policy.timeout = o.number("--timeout", 1.0, 1e-3, 600.0);
-  policy.retries = o.integer("--retries", 3, 0, 100);
-  const double start_timeout = o.number("--start-timeout", 300.0, 0.1, 3600.0);
-  const std::string format = o.choice("--format", {"csv", "table"}, "csv");
+  policy.timeout = o.number("--timeout", {1e-3, 600.0});
+  policy.retries = o.integer("--retries", {0, 100});
+  const double start_timeout = o.number("--start-timeout", {0.1, 3600.0});
+  const std::string format = o.choice("--format", {"csv", "table"});
   const GeometrySpec spec = geometry_spec_from_options(o);
   const std::string key = geometry_key(spec);
 
@@ -200,12 +200,12 @@ int run_query(const std::vector<std::string>& args) {
   wrc::wheelset_configuration_t c{};
   c.y = y;
   c.yaw = yaw;
-  c.roll = o.number("--roll", 0.0, -0.5, 0.5);
-  c.spin_rate = o.number("--spin-rate", speed / spec.track.nominal_radius, -1e4, 1e4);
+  c.roll = o.has("--roll") ? o.number("--roll", {-0.5, 0.5}) : 0.0;
+  c.spin_rate = o.has("--spin-rate") ? o.number("--spin-rate", {-1e4, 1e4}) : speed / spec.track.nominal_radius;
   c.normal_load_left = load;
   c.normal_load_right = load;
   if (o.has("--z")) {
-    c.z = o.number("--z", 0.0, -10.0, 10.0);
+    c.z = o.number("--z", {-10.0, 10.0});
   } else {
     const WheelsetGeometry geometry = make_geometry(spec);
     if (formulation == "elastic" && !o.has("--roll")) {
@@ -215,15 +215,15 @@ int run_query(const std::vector<std::string>& args) {
     } else {
       c.z = touching_height(geometry, y, c.roll, yaw);
     }
-    if (formulation == "elastic") c.z -= o.number("--penetration", 1e-4, 0.0, 0.01);
+    if (formulation == "elastic") c.z -= o.number("--penetration", {0.0, 0.01});
   }
   wrc::contact_query_t query{};
   query.model = model;
   query.geometry_key = key;
   query.formulation = formulation == "elastic" ? wrc::contact_query_t::ELASTIC : wrc::contact_query_t::RIGID;
-  query.shear_modulus = o.number("--shear-modulus", 8.2e10, 1.0, 1e13);
-  query.poisson_ratio = o.number("--poisson", 0.28, 0.0, 0.5);
-  query.friction = o.number("--friction", 0.3, 0.0, 10.0);
+  query.shear_modulus = o.number("--shear-modulus", {1.0, 1e13});
+  query.poisson_ratio = o.number("--poisson", {0.0, 0.5});
+  query.friction = o.number("--friction", {0.0, 10.0});
   query.fastsim_elements = static_cast<std::int16_t>(elements);
   query.fastsim_strips = static_cast<std::int16_t>(strips);
   query.speed = speed;

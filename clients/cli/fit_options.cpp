@@ -47,14 +47,14 @@ SplineFitOptions fit_options_from(const Options& options) {
     o.roll_max = parse_finite(text.substr(c1 + 1, c2 - c1 - 1), "--box roll_max");
     o.yaw_max = parse_finite(text.substr(c2 + 1), "--box yaw_max");
   }
-  const std::string placement = options.choice("--knot-placement", {"graded", "uniform"}, "graded");
+  const std::string placement = options.choice("--knot-placement", {"graded", "uniform"});
   o.placement = placement == "uniform" ? KnotPlacement::kUniform : KnotPlacement::kGraded;
-  o.sample_step_y = options.number("--sample-step", o.sample_step_y, 1e-6, 1e-2);
-  o.jump_weight = options.number("--jump-weight", o.jump_weight, 1e-12, 1.0);
-  o.jump_band = options.number("--jump-band", o.jump_band, 0.0, 0.01);
-  o.transition = options.number("--transition", o.transition, 0.0, 0.002);
-  o.flange_angle = options.number("--flange-angle", o.flange_angle, 0.1, 1.5);
-  o.threads = options.has("--threads") ? options.integer("--threads", 0, 0, 64) : 0;
+  if (options.has("--sample-step")) o.sample_step_y = options.number("--sample-step", {1e-6, 1e-2});
+  if (options.has("--jump-weight")) o.jump_weight = options.number("--jump-weight", {1e-12, 1.0});
+  if (options.has("--jump-band")) o.jump_band = options.number("--jump-band", {0.0, 0.01});
+  if (options.has("--transition")) o.transition = options.number("--transition", {0.0, 0.002});
+  if (options.has("--flange-angle")) o.flange_angle = options.number("--flange-angle", {0.1, 1.5});
+  o.threads = options.has("--threads") ? options.integer("--threads", {0, 64}) : 0;
   try {
     o.validate();
   } catch (const std::invalid_argument& e) {

@@ -50,12 +50,12 @@ std::vector<OptionSpec> run_option_specs() {
 
 protocol::RunRequest run_request_from(const Options& o) {
   protocol::RunRequest request;
-  request.model = o.choice("--model", contact_model_names(), "");
+  request.model = o.choice("--model", contact_model_names());
   if (request.model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
   RunSpec& spec = request.spec;
   if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
   if (o.has("--suspension")) {
-    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}, "benchmark") == "none"
+    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none"
                                    ? PrimarySuspension::none()
                                    : PrimarySuspension::benchmark();
   }

@@ -25,11 +25,11 @@ GeometrySpec geometry_spec_from_options(const Options& options) {
   spec.wheel = options.text("--wheel", spec.wheel);
   spec.rail = options.text("--rail", spec.rail);
   TrackParameters& track = spec.track;
-  track.gauge = options.number("--gauge", track.gauge, 0.5, 2.5);
-  track.gauge_depth = options.number("--gauge-depth", track.gauge_depth, 0.0, 0.05);
-  track.flange_back_spacing = options.number("--flange-back", track.flange_back_spacing, 0.4, 2.4);
-  track.taping_line_offset = options.number("--taping-line-offset", track.taping_line_offset, 0.0, 0.2);
-  track.nominal_radius = options.number("--r0", track.nominal_radius, 0.1, 1.5);
+  if (options.has("--gauge")) track.gauge = options.number("--gauge", {0.5, 2.5});
+  if (options.has("--gauge-depth")) track.gauge_depth = options.number("--gauge-depth", {0.0, 0.05});
+  if (options.has("--flange-back")) track.flange_back_spacing = options.number("--flange-back", {0.4, 2.4});
+  if (options.has("--taping-line-offset")) track.taping_line_offset = options.number("--taping-line-offset", {0.0, 0.2});
+  if (options.has("--r0")) track.nominal_radius = options.number("--r0", {0.1, 1.5});
   if (options.has("--inclination")) {
     try {
       track.inclination = parse_inclination(options.text("--inclination"));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -16,6 +17,11 @@
 #include "core/dynamics/run_counter_table.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
+#include "core/geometry/track_table.hpp"
+#include "core/identity/geometry_key.hpp"
+#include "core/numerics/number_text.hpp"
+#include "options/geometry_options.hpp"
+#include "protocol/geometry/track_codec.hpp"
 #include "options/parameter_options.hpp"
 #include "protocol/run/run_command_codec.hpp"
 #include "protocol/run/run_output_codec.hpp"
@@ -183,6 +189,53 @@ TEST(ParameterTables, EveryCounterCrossesTheStatsMessage) {
   for (const RunCounter& c : run_counter_table()) {
     const double expected = c.sum == CounterSum::kSum ? 2.0 * c.get(counters) : c.get(counters);
     EXPECT_EQ(c.get(sum), expected) << c.key;
+  }
+}
+
+}  // namespace
+}  // namespace wrc
+
+namespace wrc {
+namespace {
+
+GeometrySpec geometry_from_command_line(const std::vector<std::string>& args) {
+  return geometry_spec_from_options(Options("geometry", "", geometry_option_specs(), args));
+}
+
+// Track: every key through the command line, track_t and geometry_arguments (the command line a
+// contact service is started with); just outside each range refused by all and by validate().
+TEST(ParameterTables, EveryTrackKeyRoundTripsAndEveryRangeIsOneRule) {
+  for (const auto& p : track_parameter_table()) {
+    SCOPED_TRACE(p.key);
+    const double value = other_valid_value(p, p.get(TrackParameters{}));
+    GeometrySpec set;
+    p.set(set.track, value);
+    if (set.track.flange_back_spacing >= set.track.gauge) set.track.flange_back_spacing = 0.5 * set.track.gauge;
+    EXPECT_EQ(p.get(geometry_from_command_line({p.option_name(), exact_number_text(value)}).track), value);
+    const GeometrySpec from_message = protocol::from_message(protocol::to_message(set));
+    const GeometrySpec from_arguments = geometry_from_command_line(geometry_arguments(set));
+    for (const auto& q : track_parameter_table()) {
+      EXPECT_EQ(q.get(from_message.track), q.get(set.track)) << q.key;
+      EXPECT_EQ(q.get(from_arguments.track), q.get(set.track)) << q.key;
+    }
+    for (double bad : values_just_outside(p)) {
+      SCOPED_TRACE(exact_number_text(bad));
+      const std::string rule = p.range.text();
+      GeometrySpec outside;
+      p.set(outside.track, bad);
+      auto expect_rule = [&](const std::function<void()>& entry, const std::string& name) {
+        try {
+          entry();
+          ADD_FAILURE() << "taken";
+        } catch (const std::exception& e) {
+          EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+          EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
+        }
+      };
+      expect_rule([&] { geometry_from_command_line({p.option_name(), exact_number_text(bad)}); }, p.option_name());
+      expect_rule([&] { protocol::from_message(protocol::to_message(outside)); }, p.key);
+      expect_rule([&] { outside.track.validate(); }, p.key);
+    }
   }
 }
 

@@ -26,14 +26,17 @@ double parameter_option_value(const ParameterInfo& parameter, const std::string&
 template <class Entry, class T>
 std::vector<OptionSpec> parameter_option_specs(const std::vector<Entry>& table, const T& defaults) {
   std::vector<OptionSpec> specs;
-  for (const Entry& p : table) specs.push_back(parameter_option_spec(p, p.get(defaults)));
+  for (const Entry& p : table)
+    if (p.has_option()) specs.push_back(parameter_option_spec(p, p.get(defaults)));
   return specs;
 }
 
-/// Sets every member of value whose option options hold (options not given keep value's).
+/// Sets every member of value whose option options hold; options not given keep value's, and
+/// entries without an option of their own are the caller's.
 template <class Entry, class T>
 void apply_parameter_options(const std::vector<Entry>& table, const Options& options, T& value) {
   for (const Entry& p : table) {
+    if (!p.has_option()) continue;
     const std::string name = p.option_name();
     if (options.has(name)) p.set(value, parameter_option_value(p, options.text(name)));
   }

@@ -53,7 +53,8 @@ inline constexpr ParameterRange closed(double min, double max) { return {min, Bo
 /// What describes a parameter besides its accessors (the part the generated code reads).
 struct ParameterInfo {
   const char* key;          ///< name in the library's files, messages and summaries, e.g. "yaw0"
-  const char* option;       ///< command-line option, e.g. "--yaw0"; nullptr: "--" + key, '_' -> '-'
+  const char* option;       ///< command-line option, e.g. "--yaw0"; nullptr: "--" + key, '_' -> '-';
+                            ///< "": none of its own (set by a compound option, "--box")
   const char* unit;         ///< e.g. "rad"; "-" for none
   const char* description;  ///< one line, no unit
   ParameterKind kind = ParameterKind::kNumber;
@@ -67,6 +68,8 @@ struct ParameterInfo {
 
   /// The command-line option: option, or "--" + key with '_' written '-'.
   std::string option_name() const;
+  /// False for an entry with no option of its own (option "").
+  bool has_option() const { return !option || *option != '\0'; }
   /// Why value is not valid ("is outside (0, 0.1) [-]", "is not a whole number"), or nothing.
   std::optional<std::string> violation(double value) const;
   /// value as the parameter file and --help write it: true / false, a whole number, or the

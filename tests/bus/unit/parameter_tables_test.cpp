@@ -20,6 +20,8 @@
 #include "core/geometry/track_table.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/numerics/number_text.hpp"
+#include "core/spline/spline_fit_table.hpp"
+#include "protocol/geometry/fit_options_codec.hpp"
 #include "options/geometry_options.hpp"
 #include "protocol/geometry/track_codec.hpp"
 #include "options/parameter_options.hpp"
@@ -235,6 +237,54 @@ TEST(ParameterTables, EveryTrackKeyRoundTripsAndEveryRangeIsOneRule) {
       expect_rule([&] { geometry_from_command_line({p.option_name(), exact_number_text(bad)}); }, p.option_name());
       expect_rule([&] { protocol::from_message(protocol::to_message(outside)); }, p.key);
       expect_rule([&] { outside.track.validate(); }, p.key);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace wrc
+
+namespace wrc {
+namespace {
+
+// Spline fit options: every scalar key through spline_fit_options_t and, where it has an option of
+// its own, `wrc fit`'s options; just outside each range refused by the codec, validate() and the
+// option.
+TEST(ParameterTables, EveryFitKeyRoundTripsAndEveryRangeIsOneRule) {
+  const auto& table = spline_fit_table();
+  const std::vector<OptionSpec> specs = parameter_option_specs(table, SplineFitOptions{});
+  for (const auto& p : table) {
+    SCOPED_TRACE(p.key);
+    const double value = other_valid_value(p, p.get(SplineFitOptions{}));
+    SplineFitOptions set;
+    p.set(set, value);
+    const SplineFitOptions from_message = protocol::from_message(protocol::to_message(set));
+    for (const auto& q : table) EXPECT_EQ(q.get(from_message), q.get(set)) << q.key;
+    if (p.has_option()) {
+      SplineFitOptions from_cli;
+      apply_parameter_options(table, Options("fit", "", specs, {p.option_name(), exact_number_text(value)}), from_cli);
+      EXPECT_EQ(p.get(from_cli), value);
+    }
+    for (double bad : values_just_outside(p)) {
+      SCOPED_TRACE(exact_number_text(bad));
+      const std::string rule = p.range.text();
+      SplineFitOptions outside;
+      p.set(outside, bad);
+      for (const auto& entry : std::vector<std::function<void()>>{
+               [&] { outside.validate(); }, [&] { protocol::from_message(protocol::to_message(outside)); }}) {
+        try {
+          entry();
+          ADD_FAILURE() << "taken";
+        } catch (const std::invalid_argument& e) {
+          EXPECT_NE(std::string(e.what()).find(std::string(p.key) + " = "), std::string::npos) << e.what();
+          EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
+        }
+      }
+      if (p.has_option()) {
+        SplineFitOptions o;
+        EXPECT_THROW(apply_parameter_options(table, Options("fit", "", specs, {p.option_name(), exact_number_text(bad)}), o),
+                     UsageError);
+      }
     }
   }
 }

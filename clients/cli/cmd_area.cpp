@@ -64,11 +64,11 @@ int run_area(const std::vector<std::string>& args) {
   const WheelsetGeometry geometry = geometry_from_options(opt);
   const WheelsetPose pose = pose_from_options(opt, geometry.track().nominal_radius);
   const WheelSide side = side_from_options(opt);
-  const double eps0 = opt.number("--eps0", 150e-6, 1e-9, 0.01);
+  const double eps0 = opt.number("--eps0", {1e-9, 0.01});
   ContactAreaOptions options;
-  options.n_xi = options.n_eta = opt.integer("--grid", 61, 2, 2001);
-  options.half_width_xi = options.half_width_eta = opt.number("--half-width", 0.02, 1e-6, 0.1);
-  const bool csv = opt.choice("--format", {"csv", "table"}, "table") == "csv";
+  options.n_xi = options.n_eta = opt.integer("--grid", {2, 2001});
+  options.half_width_xi = options.half_width_eta = opt.number("--half-width", {1e-6, 0.1});
+  const bool csv = opt.choice("--format", {"csv", "table"}) == "csv";
 
   const ContactArea area = compute_contact_area(geometry, side, pose, options);
   if (csv) {

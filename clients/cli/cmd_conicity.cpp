@@ -25,9 +25,9 @@ int run_conicity(const std::vector<std::string>& args) {
                  "the exact rigid-wheelset geometry (contact-point jumps included). Output: amplitude,conicity.\n";
     return 0;
   }
-  opt.choice("--method", {"harmonic"}, "harmonic");
-  const int samples = opt.integer("--samples", 512, 8, 100000);
-  const bool csv = opt.choice("--format", {"csv", "table"}, "csv") == "csv";
+  opt.choice("--method", {"harmonic"});
+  const int samples = opt.integer("--samples", {8, 100000});
+  const bool csv = opt.choice("--format", {"csv", "table"}) == "csv";
   std::vector<double> amplitudes;
   std::stringstream list(opt.required_text("--amplitude"));
   for (std::string item; std::getline(list, item, ',');) {

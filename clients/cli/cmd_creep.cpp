@@ -66,19 +66,19 @@ int run_creep(const std::vector<std::string>& args) {
   patch.b = positive(o, "--b");
   patch.normal_force = o.required_number("--normal-force");
   if (patch.normal_force < 0.0) throw UsageError("--normal-force: " + o.text("--normal-force") + " must be >= 0");
-  patch.friction = o.number("--mu", 0.3);
+  patch.friction = o.number("--mu");
   if (patch.friction < 0.0) throw UsageError("--mu: " + o.text("--mu") + " must be >= 0");
-  patch.shear_modulus = o.number("--shear-modulus", 8.2e10);
+  patch.shear_modulus = o.number("--shear-modulus");
   if (!(patch.shear_modulus > 0.0)) {
     throw UsageError("--shear-modulus: " + o.text("--shear-modulus") + " must be positive");
   }
-  patch.poisson = o.number("--poisson", 0.28);
+  patch.poisson = o.number("--poisson");
   if (patch.poisson < 0.0 || patch.poisson > 0.5) {
     throw UsageError("--poisson: " + o.text("--poisson") + " must be in [0, 0.5]");
   }
-  const Creepages creep{o.number("--xi-x", 0.0), o.number("--xi-y", 0.0), o.number("--spin", 0.0)};
-  const std::string model = o.choice("--model", {"fastsim", "linear"}, "fastsim");
-  const std::string format = o.choice("--format", {"csv", "text"}, "csv");
+  const Creepages creep{o.number("--xi-x"), o.number("--xi-y"), o.number("--spin")};
+  const std::string model = o.choice("--model", {"fastsim", "linear"});
+  const std::string format = o.choice("--format", {"csv", "text"});
   int elements_per_strip = 20, strips = 20;
   parse_grid(o.text("--grid", "20x20"), &elements_per_strip, &strips);
 

@@ -51,10 +51,10 @@ int run_launch(const std::vector<std::string>& args) {
   const std::string profile_path = options.text("--profile", default_profile());
   const std::string build = options.text("--build-dir", bus::build_dir());
   bus::SupervisorPolicy policy;
-  policy.grace = options.number("--grace", 3.0, 0.0, 600.0);
-  policy.backoff_min = options.number("--backoff-min", 0.25, 0.01, 600.0);
-  policy.backoff_max = options.number("--backoff-max", 8.0, policy.backoff_min, 3600.0);
-  policy.hang_periods = options.number("--hang-periods", 2.0, 1.0, 100.0);
+  policy.grace = options.number("--grace", {0.0, 600.0});
+  policy.backoff_min = options.number("--backoff-min", {0.01, 600.0});
+  policy.backoff_max = options.number("--backoff-max", {policy.backoff_min, 3600.0});
+  policy.hang_periods = options.number("--hang-periods", {1.0, 100.0});
 
   const auto selected = bus::select_services(bus::read_launch_profile(profile_path), options.positional());
   std::vector<bus::ChildSpec> children;

@@ -30,9 +30,9 @@ int run_points(const std::vector<std::string>& args) {
     return 0;
   }
   const WheelsetGeometry geometry = geometry_from_options(opt);
-  const WheelsetPose pose = pose_from_options(opt, opt.number("--z", geometry.track().nominal_radius, 0.0, 2.0));
+  const WheelsetPose pose = pose_from_options(opt, opt.has("--z") ? opt.number("--z", {0.0, 2.0}) : geometry.track().nominal_radius);
   const WheelSide side = side_from_options(opt);
-  const bool csv = opt.choice("--format", {"csv", "table"}, "table") == "csv";
+  const bool csv = opt.choice("--format", {"csv", "table"}) == "csv";
   const auto points = geometry.potential_points(side, pose);
   const auto common = select_common_point(points);
   if (csv) {

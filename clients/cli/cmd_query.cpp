@@ -2,8 +2,9 @@
 // patches, one row per patch. The service is found by its heartbeat: a READY instance of model M
 // that computes with the asked geometry (its heartbeat's geometry_key equals the key of the
 // profile and track options, core/identity/geometry_key.hpp); with several, the smallest instance name
-// is addressed. When none is heard within 1.5 s, the query starts one (wrc-contactd from the build
-// tree) in the background, waits for READY, asks it and stops it afterwards.
+// is addressed. When none is heard within kServiceDiscoveryTime (cli/service_starter.hpp), the
+// query starts one (wrc-contactd from the build tree) in the background, waits for READY, asks it
+// and stops it afterwards.
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -36,6 +37,7 @@
 #include "core/geometry/wheelset_geometry.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "core/numerics/number_text.hpp"
 #include "protocol/contact/contact_status.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
@@ -83,20 +85,12 @@ double touching_height(const WheelsetGeometry& geometry, double y, double roll, 
 
 // ---- output --------------------------------------------------------------------------------------
 
-std::string number(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+std::string number(double v) { return number_text(v, 10); }
 
 void print_patches(const wrc::contact_reply_t& reply, const std::string& format) {
   // Full precision for csv (machine reading), six significant digits for the aligned table.
-  const char* number_format = format == "csv" ? "%.10g" : "%.6g";
-  auto cell = [&](double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, number_format, v);
-    return std::string(buf);
-  };
+  const int digits = format == "csv" ? 10 : 6;
+  auto cell = [&](double v) { return number_text(v, digits); };
   const std::vector<std::string> header{"wheel", "s", "angle", "a", "b", "penetration", "normal_force", "fx", "fy",
                                         "mz", "xi_x", "xi_y", "spin", "rolling_radius", "s_rail", "x", "y", "z",
                                         "lateral_curvature_floored"};
@@ -153,7 +147,7 @@ int run_query(const std::vector<std::string>& args) {
       {"--z", true, "height of the wheelset centre above the top-of-rail plane [m]",
        "rigid: closer wheel just touching; elastic: that minus --penetration"},
       {"--penetration", true, "elastic without --z: how far the centre is lowered below touching [m]", "1e-4"},
-      {"--load", true, "normal load per wheel, rigid formulation [N]", "77357.5"},
+      {"--load", true, "normal load per wheel, rigid formulation [N]", number_text(kDefaultLoad)},
       {"--formulation", true, "rigid (loads given) or elastic (forces from penetration)", "rigid"},
       {"--speed", true, "forward speed V [m/s]", "30"},
       {"--spin-rate", true, "angular velocity about the axle [rad/s]", "V/r0"},
@@ -176,27 +170,29 @@ int run_query(const std::vector<std::string>& args) {
                  "(a rolling, b lateral semi-axis; forces on the wheel in the contact frame; x,y,z the contact\n"
                  "point on the wheel, track frame; SI units). The service is a READY instance of M heard on\n"
                  "HEARTBEAT that computes with the same profiles and track (smallest instance name first); when\n"
-                 "none is heard within 1.5 s one is started from the build tree and stopped afterwards.\n"
+                 "none is heard within "
+              << kServiceDiscoveryTime
+              << " s one is started from the build tree and stopped afterwards.\n"
                  "Rigid formulation: --load per wheel; z defaults to the height where the closer wheel just\n"
                  "touches (positions only; the loads set the forces). Elastic: the forces follow from the\n"
                  "penetration; without --z the rigid wheelset solution (both wheels touching; its roll unless\n"
                  "--roll is given) is lowered by --penetration.\n";
     return 0;
   }
-  const std::string model = o.choice("--model", contact_model_names(), "");
+  const std::string model = o.choice("--model", contact_model_names());
   if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
-  const double y = o.required_number("--y", -0.5, 0.5);
-  const double yaw = o.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
-  const std::string formulation = o.choice("--formulation", {"rigid", "elastic"}, "rigid");
-  const double speed = o.number("--speed", 30.0, 1e-6, 1000.0);
-  const double load = o.number("--load", kDefaultLoad, 0.0, 1e8);
+  const double y = o.required_number("--y", {-0.5, 0.5});
+  const double yaw = o.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
+  const std::string formulation = o.choice("--formulation", {"rigid", "elastic"});
+  const double speed = o.number("--speed", {1e-6, 1000.0});
+  const double load = o.number("--load", {0.0, 1e8});
   int elements = 20, strips = 20;
   if (o.has("--grid")) parse_grid(o.text("--grid"), &elements, &strips);
   bus::CallPolicy policy;
-  policy.timeout = o.number("--timeout", 1.0, 1e-3, 600.0);
-  policy.retries = o.integer("--retries", 3, 0, 100);
-  const double start_timeout = o.number("--start-timeout", 300.0, 0.1, 3600.0);
-  const std::string format = o.choice("--format", {"csv", "table"}, "csv");
+  policy.timeout = o.number("--timeout", {1e-3, 600.0});
+  policy.retries = o.integer("--retries", {0, 100});
+  const double start_timeout = o.number("--start-timeout", {0.1, 3600.0});
+  const std::string format = o.choice("--format", {"csv", "table"});
   const GeometrySpec spec = geometry_spec_from_options(o);
   const std::string key = geometry_key(spec);
 
@@ -204,12 +200,12 @@ int run_query(const std::vector<std::string>& args) {
   wrc::wheelset_configuration_t c{};
   c.y = y;
   c.yaw = yaw;
-  c.roll = o.number("--roll", 0.0, -0.5, 0.5);
-  c.spin_rate = o.number("--spin-rate", speed / spec.track.nominal_radius, -1e4, 1e4);
+  c.roll = o.has("--roll") ? o.number("--roll", {-0.5, 0.5}) : 0.0;
+  c.spin_rate = o.has("--spin-rate") ? o.number("--spin-rate", {-1e4, 1e4}) : speed / spec.track.nominal_radius;
   c.normal_load_left = load;
   c.normal_load_right = load;
   if (o.has("--z")) {
-    c.z = o.number("--z", 0.0, -10.0, 10.0);
+    c.z = o.number("--z", {-10.0, 10.0});
   } else {
     const WheelsetGeometry geometry = make_geometry(spec);
     if (formulation == "elastic" && !o.has("--roll")) {
@@ -219,15 +215,15 @@ int run_query(const std::vector<std::string>& args) {
     } else {
       c.z = touching_height(geometry, y, c.roll, yaw);
     }
-    if (formulation == "elastic") c.z -= o.number("--penetration", 1e-4, 0.0, 0.01);
+    if (formulation == "elastic") c.z -= o.number("--penetration", {0.0, 0.01});
   }
   wrc::contact_query_t query{};
   query.model = model;
   query.geometry_key = key;
   query.formulation = formulation == "elastic" ? wrc::contact_query_t::ELASTIC : wrc::contact_query_t::RIGID;
-  query.shear_modulus = o.number("--shear-modulus", 8.2e10, 1.0, 1e13);
-  query.poisson_ratio = o.number("--poisson", 0.28, 0.0, 0.5);
-  query.friction = o.number("--friction", 0.3, 0.0, 10.0);
+  query.shear_modulus = o.number("--shear-modulus", {1.0, 1e13});
+  query.poisson_ratio = o.number("--poisson", {0.0, 0.5});
+  query.friction = o.number("--friction", {0.0, 10.0});
   query.fastsim_elements = static_cast<std::int16_t>(elements);
   query.fastsim_strips = static_cast<std::int16_t>(strips);
   query.speed = speed;

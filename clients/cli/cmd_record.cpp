@@ -124,7 +124,7 @@ int run_replay(const std::vector<std::string>& args) {
     return 0;
   }
   if (o.positional().size() != 1) throw UsageError("give exactly one FILE");
-  std::vector<std::string> words{"--speed=" + std::to_string(o.number("--speed", 1.0, 1e-3, 1e3))};
+  std::vector<std::string> words{"--speed=" + std::to_string(o.number("--speed", {1e-3, 1e3}))};
   if (o.has("--channels")) words.push_back("--regexp=" + o.text("--channels"));
   if (o.has("--lcm-url")) words.push_back("--lcm-url=" + o.text("--lcm-url"));
   words.push_back(o.positional().front());

@@ -54,8 +54,8 @@ int run_status(const std::vector<std::string>& args) {
                                    "(\"doing: run r1: spline, t = 0.84 of 2 s, ...\", \"fitting ...\", a query rate).\n";
     return 0;
   }
-  const double duration = options.number("--duration", 1.5, 0.05, 3600.0);
-  const std::string format = options.choice("--format", {"table", "csv"}, "table");
+  const double duration = options.number("--duration", {0.05, 3600.0});
+  const std::string format = options.choice("--format", {"table", "csv"});
   const bus::ChannelNames names(options.text("--channel-prefix"));
   auto lcm = bus::open_lcm(options.text("--lcm-url"), options.text("--bus-key"));
   bus::HeartbeatMonitor monitor(*lcm, names.name(bus::channel::kHeartbeat));

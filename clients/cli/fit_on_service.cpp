@@ -40,7 +40,7 @@ std::vector<OptionSpec> fit_on_service_option_specs() {
 }
 
 int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOptions& fit) {
-  const double wait = o.number("--wait", 600.0, 1.0, 86400.0);
+  const double wait = o.number("--wait", {1.0, 86400.0});
   const std::string key = geometry_key(spec);
   const std::string model_key = protocol::model_key(key, fit);
   CommandBus session(o, "fit");

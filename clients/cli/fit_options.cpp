@@ -1,26 +1,44 @@
 #include "cli/fit_options.hpp"
 
+#include <array>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+
+#include "core/numerics/number_text.hpp"
+#include "core/spline/spline_fit_table.hpp"
+#include "options/parameter_options.hpp"
 
 namespace wrc::cli {
 
+namespace {
+
+// "NxMxK", or "N" when all three are the same (how --knots and --degree are written).
+std::string triple_text(const std::array<int, 3>& v) {
+  if (v[0] == v[1] && v[1] == v[2]) return std::to_string(v[0]);
+  return std::to_string(v[0]) + "x" + std::to_string(v[1]) + "x" + std::to_string(v[2]);
+}
+
+}  // namespace
+
 std::vector<OptionSpec> fit_option_specs() {
-  return {
-      {"--knots", true, "knot intervals in y x roll x yaw [-]", "10x2x2"},
-      {"--degree", true, "spline degree, one for all or y x roll x yaw [-] (0..3)", "3"},
+  const SplineFitOptions d;
+  std::vector<OptionSpec> specs{
+      {"--knots", true, "knot intervals in y x roll x yaw [-]", triple_text(d.intervals)},
+      {"--degree", true, "spline degree, one for all or y x roll x yaw [-] (0..3)", triple_text(d.degrees)},
       {"--box", true, "left wheel's box YMIN:YMAX,ROLL_MAX,YAW_MAX [m, rad, rad] (right: mirrored)",
-       "-0.006:0.006,0.001,0.005"},
-      {"--knot-placement", true, "breakpoints in y: graded (dense where jumps sweep) or uniform", "graded"},
-      {"--samples", true, "exact-geometry samples in roll x yaw [-]", "9x9"},
-      {"--sample-step", true, "spacing of the samples in y [m]", "1e-4"},
-      {"--jump-weight", true, "weight of samples near a tread jump of the common point [-], (0, 1]", "0.01"},
-      {"--jump-band", true, "half-width in y of the down-weighted band around each jump [m]", "5e-4"},
-      {"--transition", true, "half-width of the blend between branch fits at a jump [m] (0: one fit across the jumps)", "2e-4"},
-      {"--flange-angle", true, "profile slope angle that starts the flange region [rad]", "0.7"},
-      {"--paper-variant", false, "the paper's benchmark splines: cubic 15x4 in (y, roll), quadratic in yaw", ""},
-      {"--threads", true, "sampling threads (0: one per core)", "0"},
+       number_text(d.y_min) + ":" + number_text(d.y_max) + "," + number_text(d.roll_max) + "," +
+           number_text(d.yaw_max)},
+      {"--knot-placement", true, "breakpoints in y: graded (dense where jumps sweep) or uniform",
+       d.placement == KnotPlacement::kUniform ? "uniform" : "graded"},
+      {"--samples", true, "exact-geometry samples in roll x yaw [-]",
+       std::to_string(d.roll_samples) + "x" + std::to_string(d.yaw_samples)},
   };
+  for (auto& spec : parameter_option_specs(spline_fit_table(), SplineFitOptions{})) specs.push_back(spec);
+  specs.push_back(
+      {"--paper-variant", false, "the paper's benchmark splines: cubic 15x4 in (y, roll), quadratic in yaw", ""});
+  specs.push_back({"--threads", true, "sampling threads (0: one per core)", std::to_string(SplineFitOptions{}.threads)});
+  return specs;
 }
 
 SplineFitOptions fit_options_from(const Options& options) {
@@ -47,14 +65,10 @@ SplineFitOptions fit_options_from(const Options& options) {
     o.roll_max = parse_finite(text.substr(c1 + 1, c2 - c1 - 1), "--box roll_max");
     o.yaw_max = parse_finite(text.substr(c2 + 1), "--box yaw_max");
   }
-  const std::string placement = options.choice("--knot-placement", {"graded", "uniform"}, "graded");
+  const std::string placement = options.choice("--knot-placement", {"graded", "uniform"});
   o.placement = placement == "uniform" ? KnotPlacement::kUniform : KnotPlacement::kGraded;
-  o.sample_step_y = options.number("--sample-step", o.sample_step_y, 1e-6, 1e-2);
-  o.jump_weight = options.number("--jump-weight", o.jump_weight, 1e-12, 1.0);
-  o.jump_band = options.number("--jump-band", o.jump_band, 0.0, 0.01);
-  o.transition = options.number("--transition", o.transition, 0.0, 0.002);
-  o.flange_angle = options.number("--flange-angle", o.flange_angle, 0.1, 1.5);
-  o.threads = options.has("--threads") ? options.integer("--threads", 0, 0, 64) : 0;
+  apply_parameter_options(spline_fit_table(), options, o);
+  o.threads = options.integer("--threads", {0, 64});
   try {
     o.validate();
   } catch (const std::invalid_argument& e) {

@@ -16,15 +16,15 @@ OptionSpec side_option_spec() { return {"--wheel-side", true, "left or right", "
 
 WheelsetPose pose_from_options(const Options& options, double z) {
   WheelsetPose pose;
-  pose.y = options.required_number("--y", -0.05, 0.05);
-  pose.roll = options.number("--roll", 0.0, -0.1, 0.1);
-  pose.yaw = options.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
+  pose.y = options.required_number("--y", {-0.05, 0.05});
+  pose.roll = options.number("--roll", {-0.1, 0.1});
+  pose.yaw = options.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
   pose.z = z;
   return pose;
 }
 
 WheelSide side_from_options(const Options& options) {
-  return options.choice("--wheel-side", {"left", "right"}, "left") == "left" ? WheelSide::kLeft : WheelSide::kRight;
+  return options.choice("--wheel-side", {"left", "right"}) == "left" ? WheelSide::kLeft : WheelSide::kRight;
 }
 
 }  // namespace wrc::cli

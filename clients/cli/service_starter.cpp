@@ -120,7 +120,7 @@ StartContext start_context_from(const Options& o, const std::string& command, co
   context.instance = instance;
   if (o.has("--channel-prefix")) context.bus_args.insert(context.bus_args.end(), {"--channel-prefix", o.text("--channel-prefix")});
   if (o.has("--lcm-url")) context.bus_args.insert(context.bus_args.end(), {"--lcm-url", o.text("--lcm-url")});
-  context.start_timeout = o.number("--start-timeout", 300.0, 0.1, 3600.0);
+  context.start_timeout = o.number("--start-timeout", {0.1, 3600.0});
   return context;
 }
 

@@ -1,22 +1,16 @@
 #include "contactd/query_evaluation.hpp"
 
-#include <cstdio>
 #include <exception>
 #include <stdexcept>
 #include <string>
 
 #include "core/model_interface/no_contact_error.hpp"
+#include "core/numerics/number_text.hpp"
 #include "protocol/contact/contact_query_codec.hpp"
 #include "protocol/contact/contact_status.hpp"
 
 namespace wrc::contactd {
 namespace {
-
-std::string number_text(double value) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", value);
-  return buf;
-}
 
 std::string configuration_label(const wrc::wheelset_configuration_t& c, int i) {
   return "configuration " + std::to_string(i) + " (y=" + number_text(c.y) + ", roll=" + number_text(c.roll) +

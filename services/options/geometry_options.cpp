@@ -3,41 +3,28 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/geometry/track_table.hpp"
+#include "options/parameter_options.hpp"
+
 namespace wrc {
 
 std::vector<OptionSpec> geometry_option_specs() {
-  return {
-      {"--wheel", true, "wheel profile: S1002, conic:<slope>, or a profile file", "S1002"},
-      {"--rail", true, "rail profile: UIC60, UIC60-MB, circle:<radius [m]>, or a profile file", "UIC60"},
+  std::vector<OptionSpec> specs{
+      {"--wheel", true, "wheel profile: S1002, conic:<slope>, or a profile file", GeometrySpec{}.wheel},
+      {"--rail", true, "rail profile: UIC60, UIC60-MB, circle:<radius [m]>, or a profile file", GeometrySpec{}.rail},
       {"--rail-cant", true, "inclination already contained in a rail profile file: 1:N, none or [rad] "
                             "(SIMPACK files saying 'canted': 1:40)", "from the file"},
-      {"--gauge", true, "track gauge, measured --gauge-depth below the top of rail [m]", "1.435"},
-      {"--gauge-depth", true, "depth below the top of rail where the gauge is measured [m]", "0.014"},
-      {"--flange-back", true, "flange-back spacing [m]", "1.360"},
-      {"--taping-line-offset", true, "distance of the taping line from the wheel's inner face [m]", "0.070"},
-      {"--inclination", true, "rail inclination: 1:40, 1:20, none, or an angle [rad]", "1:40"},
-      {"--r0", true, "nominal rolling radius [m]", "0.46"},
   };
+  for (auto& spec : parameter_option_specs(track_parameter_table(), TrackParameters{})) specs.push_back(spec);
+  return specs;
 }
 
 GeometrySpec geometry_spec_from_options(const Options& options) {
   GeometrySpec spec;
   spec.wheel = options.text("--wheel", spec.wheel);
   spec.rail = options.text("--rail", spec.rail);
-  TrackParameters& track = spec.track;
-  track.gauge = options.number("--gauge", track.gauge, 0.5, 2.5);
-  track.gauge_depth = options.number("--gauge-depth", track.gauge_depth, 0.0, 0.05);
-  track.flange_back_spacing = options.number("--flange-back", track.flange_back_spacing, 0.4, 2.4);
-  track.taping_line_offset = options.number("--taping-line-offset", track.taping_line_offset, 0.0, 0.2);
-  track.nominal_radius = options.number("--r0", track.nominal_radius, 0.1, 1.5);
-  if (options.has("--inclination")) {
-    try {
-      track.inclination = parse_inclination(options.text("--inclination"));
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(std::string("--inclination: ") + e.what());
-    }
-  }
-  track.validate();
+  apply_parameter_options(track_parameter_table(), options, spec.track);
+  spec.track.validate();
   if (options.has("--rail-cant")) {
     try {
       spec.rail_cant = parse_inclination(options.text("--rail-cant"));

@@ -1,8 +1,8 @@
 #pragma once
 /// @file
-/// The one table of the profile and track options (--wheel, --rail, --rail-cant, --gauge,
+/// The profile and track options (--wheel, --rail, --rail-cant, --gauge,
 /// --gauge-depth, --flange-back, --taping-line-offset, --inclination, --r0) and its one reader:
-/// used by the geometry commands of the `wrc` front end and by wrc-contactd, so both mean the same
+/// the track's from the track parameter table (core/geometry/track_table.hpp). Used by the geometry commands of the `wrc` front end and by wrc-contactd, so both mean the same
 /// by the same words (core/identity/geometry_key.hpp: geometry_arguments writes them).
 
 #include <vector>

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <sstream>
+
+#include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
@@ -19,13 +19,8 @@ bool looks_like_short_option(const std::string& arg) {
 }  // namespace
 
 double parse_finite(const std::string& text, const std::string& what) {
-  errno = 0;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(value)) {
-    throw UsageError(what + ": '" + text + "' is not a finite number");
-  }
-  return value;
+  if (const std::optional<double> value = finite_number(text)) return *value;
+  throw UsageError(not_a_finite_number(what, text));
 }
 
 Options::Options(std::string command, std::string synopsis, std::vector<OptionSpec> specs,
@@ -112,7 +107,21 @@ std::string Options::help() const {
   return out.str();
 }
 
+const OptionSpec& Options::declared(const std::string& name) const {
+  for (const OptionSpec& s : specs_)
+    if (s.name == name) return s;
+  throw std::logic_error(program_ + ": lookup of the undeclared option " + name);
+}
+
+double Options::default_number(const std::string& name) const {
+  const OptionSpec& spec = declared(name);
+  if (const std::optional<double> value = finite_number(spec.default_text)) return *value;
+  throw std::logic_error(program_ + ": option " + name + " has no number as its default ('" + spec.default_text +
+                         "'); its absence is the caller's to handle");
+}
+
 std::optional<std::string> Options::find(const std::string& name) const {
+  declared(name);
   for (const auto& [k, v] : values_)
     if (k == name) return v;
   return std::nullopt;
@@ -139,30 +148,33 @@ static double check_range(double value, const std::string& name, const std::stri
   return value;
 }
 
-double Options::number(const std::string& name, double fallback, double min, double max) const {
+double Options::number(const std::string& name, NumberRange range) const {
   auto v = find(name);
-  if (!v) return fallback;
-  return check_range(parse_finite(*v, name), name, *v, min, max);
+  if (!v) return default_number(name);
+  return check_range(parse_finite(*v, name), name, *v, range.min, range.max);
 }
 
-double Options::required_number(const std::string& name, double min, double max) const {
+double Options::required_number(const std::string& name, NumberRange range) const {
   auto v = find(name);
   if (!v) throw UsageError("missing required option " + name);
-  return check_range(parse_finite(*v, name), name, *v, min, max);
+  return check_range(parse_finite(*v, name), name, *v, range.min, range.max);
 }
 
-int Options::integer(const std::string& name, int fallback, int min, int max) const {
+int Options::integer(const std::string& name, IntegerRange range) const {
   auto v = find(name);
-  if (!v) return fallback;
+  if (!v) {
+    const double d = default_number(name);
+    if (d != std::floor(d)) throw std::logic_error(program_ + ": option " + name + " has no whole number as its default");
+    return static_cast<int>(d);
+  }
   const double d = parse_finite(*v, name);
   if (d != std::floor(d)) throw UsageError(name + ": '" + *v + "' is not a whole number");
-  return static_cast<int>(check_range(d, name, *v, min, max));
+  return static_cast<int>(check_range(d, name, *v, range.min, range.max));
 }
 
-std::string Options::choice(const std::string& name, const std::vector<std::string>& words,
-                            const std::string& fallback) const {
+std::string Options::choice(const std::string& name, const std::vector<std::string>& words) const {
   auto v = find(name);
-  if (!v) return fallback;
+  if (!v) return declared(name).default_text;
   if (std::find(words.begin(), words.end(), *v) != words.end()) return *v;
   std::string list;
   for (const auto& w : words) list += (list.empty() ? "" : ", ") + w;

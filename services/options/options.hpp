@@ -14,7 +14,10 @@
 namespace wrc {
 
 /// Declaration of one option: its name (with the leading --), whether it takes a value,
-/// the help text (state the unit in brackets) and the default shown in --help.
+/// the help text (state the unit in brackets) and its default: shown in --help and, when it is a
+/// value (a number, a word of a choice), the value number(), integer() and choice() give for an
+/// absent option, so a default is written once. A default that is a description ("from the
+/// file", "none") leaves the absent case to the caller (has()).
 struct OptionSpec {
   std::string name;
   bool takes_value = true;
@@ -46,7 +49,21 @@ struct ParseRules {
   Repeated repeated = Repeated::kRejected;
 };
 
-/// Parsed options of one command or program.
+/// The valid values of a number option: [min, max].
+struct NumberRange {
+  double min = -1e300;
+  double max = 1e300;
+};
+
+/// The valid values of a whole-number option: [min, max].
+struct IntegerRange {
+  int min = 1;
+  int max = 1000000;
+};
+
+/// Parsed options of one command or program. Every lookup (has, text, number, ...) must name a
+/// declared option: an undeclared name is a programming error (a misspelled "--yaww" would
+/// otherwise read as absent), std::logic_error naming it.
 class Options {
  public:
   /// Parses the arguments of `wrc <command>` against specs. Unknown options, missing values and
@@ -76,16 +93,17 @@ class Options {
   std::string text(const std::string& name, const std::string& fallback = "") const;
   /// A required text option; throws UsageError naming it when absent.
   std::string required_text(const std::string& name) const;
-  /// A finite number; throws UsageError naming the option and the text when not a finite number
-  /// or outside [min, max].
-  double number(const std::string& name, double fallback, double min = -1e300, double max = 1e300) const;
-  /// A required finite number in [min, max].
-  double required_number(const std::string& name, double min = -1e300, double max = 1e300) const;
-  /// A positive whole number.
-  int integer(const std::string& name, int fallback, int min = 1, int max = 1000000) const;
-  /// One of the given words; throws UsageError listing them otherwise.
-  std::string choice(const std::string& name, const std::vector<std::string>& words,
-                     const std::string& fallback) const;
+  /// A finite number in range, the declared default when absent; throws UsageError naming the
+  /// option and the text when not a finite number or outside range, std::logic_error when absent
+  /// and the declared default is no number.
+  double number(const std::string& name, NumberRange range = {}) const;
+  /// A required finite number in range.
+  double required_number(const std::string& name, NumberRange range = {}) const;
+  /// A whole number in range, the declared default when absent (as number()).
+  int integer(const std::string& name, IntegerRange range = {}) const;
+  /// One of the given words, the declared default when absent; throws UsageError listing them
+  /// otherwise.
+  std::string choice(const std::string& name, const std::vector<std::string>& words) const;
   /// Positional arguments (those not starting with --).
   const std::vector<std::string>& positional() const { return positional_; }
   /// With Unknown::kPassedOn: the arguments not consumed here, verbatim and in order.
@@ -96,6 +114,10 @@ class Options {
   /// message ("geometry: "; empty for a program, whose main() names it already).
   Options(std::string program, std::string label, std::string synopsis, std::vector<OptionSpec> specs,
           const std::vector<std::string>& args, ParseRules rules);
+  /// The declaration of name. @throws std::logic_error when name is not declared.
+  const OptionSpec& declared(const std::string& name) const;
+  /// The declared default of name as a number. @throws std::logic_error when it is none.
+  double default_number(const std::string& name) const;
   std::optional<std::string> find(const std::string& name) const;
   std::string program_;
   std::string label_;

@@ -57,11 +57,11 @@ int run_area(const std::vector<std::string>& args) {
   const WheelsetGeometry geometry = make_geometry(spec);
   const WheelsetPose pose = pose_from_options(opt, geometry.track().nominal_radius);
   const WheelSide side = side_from_options(opt);
-  const double eps0 = opt.number("--eps0", 150e-6, 25e-6, 0.01);
-  const double normal_force = opt.number("--normal-force", 75e3, 0.0, 1e7);
+  const double eps0 = opt.number("--eps0", {25e-6, 0.01});
+  const double normal_force = opt.number("--normal-force", {0.0, 1e7});
   ContactAreaOptions options;
-  options.n_xi = options.n_eta = opt.integer("--grid", 161, 3, 2001);
-  options.half_width_xi = options.half_width_eta = opt.number("--half-width", 0.02, 1e-4, 0.1);
+  options.n_xi = options.n_eta = opt.integer("--grid", {3, 2001});
+  options.half_width_xi = options.half_width_eta = opt.number("--half-width", {1e-4, 0.1});
   const bool with_spline = opt.has("--spline");
   const SplineFitOptions fit_options = fit_options_from(opt);
   const ImageRequest image = image_from_options(opt, "area.png");

@@ -26,10 +26,10 @@ int run_conicity(const std::vector<std::string>& args) {
                  "amplitude A, delta_r from the exact rigid-wheelset geometry (as wrc conicity).\n";
     return 0;
   }
-  const double a_from = opt.number("--a-from", 2.5e-4, 1e-7, 0.02);
-  const double a_to = opt.number("--a-to", 0.01, 1e-7, 0.02);
-  const double step = opt.number("--a-step", 2.5e-4, 1e-7, 0.02);
-  const int samples = opt.integer("--samples", 256, 8, 100000);
+  const double a_from = opt.number("--a-from", {1e-7, 0.02});
+  const double a_to = opt.number("--a-to", {1e-7, 0.02});
+  const double step = opt.number("--a-step", {1e-7, 0.02});
+  const int samples = opt.integer("--samples", {8, 100000});
   if (!(a_to >= a_from)) throw UsageError(format("--a-to %g is below --a-from %g", a_to, a_from));
   const long count = inclusive_step_count(a_from, a_to, step);
   if (count > 10000) throw UsageError(format("--a-step %g gives more than 10000 amplitudes", step));

@@ -32,11 +32,11 @@ int run_displacement(const std::vector<std::string>& args) {
                  "Jumps of the common point show as sharp colour edges.\n";
     return 0;
   }
-  const double y_max = opt.number("--y-max", 0.01, 1e-5, 0.05);
-  const double roll_max = opt.number("--roll-max", 0.02, 1e-5, 0.1);
-  const double yaw = opt.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
+  const double y_max = opt.number("--y-max", {1e-5, 0.05});
+  const double roll_max = opt.number("--roll-max", {1e-5, 0.1});
+  const double yaw = opt.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
   const WheelSide side = side_from_options(opt);
-  const int nodes = opt.integer("--grid", 81, 2, 1001);
+  const int nodes = opt.integer("--grid", {2, 1001});
   const GeometrySpec spec = geometry_spec_from_options(opt);
   const WheelsetGeometry geometry = make_geometry(spec);
   const ImageRequest image = image_from_options(opt, "displacement.png");

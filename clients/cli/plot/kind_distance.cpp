@@ -32,7 +32,7 @@ int run_distance(const std::vector<std::string>& args) {
   const WheelsetGeometry geometry = make_geometry(spec);
   const WheelsetPose pose = pose_from_options(opt, geometry.track().nominal_radius);
   const WheelSide side = side_from_options(opt);
-  const int samples = opt.integer("--samples", 4000, 10, 1000000);
+  const int samples = opt.integer("--samples", {10, 1000000});
   const ImageRequest image = image_from_options(opt, "distance.png");
 
   const auto points = geometry.potential_points(side, pose);

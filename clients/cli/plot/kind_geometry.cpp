@@ -28,10 +28,10 @@ int run_geometry(const std::vector<std::string>& args) {
                  "on the wheel profile (s) and on the rail profile (u). Points, not lines: jumps stay visible.\n";
     return 0;
   }
-  const double y_from = opt.number("--y-from", -0.01, -0.05, 0.05);
-  const double y_to = opt.number("--y-to", 0.01, -0.05, 0.05);
-  const double step = opt.number("--y-step", 5e-5, 1e-7, 0.05);
-  const double yaw = opt.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
+  const double y_from = opt.number("--y-from", {-0.05, 0.05});
+  const double y_to = opt.number("--y-to", {-0.05, 0.05});
+  const double step = opt.number("--y-step", {1e-7, 0.05});
+  const double yaw = opt.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
   if (!(y_to > y_from)) throw UsageError(format("--y-to %g is not above --y-from %g", y_to, y_from));
   const long count = inclusive_step_count(y_from, y_to, step);
   if (count > 200000) throw UsageError(format("--y-step %g gives more than 200000 shifts", step));

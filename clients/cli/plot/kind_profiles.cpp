@@ -29,8 +29,8 @@ int run_profiles(const std::vector<std::string>& args) {
                  "left, right wheel right, each around its rail.\n";
     return 0;
   }
-  const double y = opt.number("--y", 0.0, -0.05, 0.05);
-  const double yaw = opt.number("--yaw", 0.0, -kMaxValidatedYaw, kMaxValidatedYaw);
+  const double y = opt.number("--y", {-0.05, 0.05});
+  const double yaw = opt.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
   const GeometrySpec spec = geometry_spec_from_options(opt);
   const WheelsetGeometry geometry = make_geometry(spec);
   const ImageRequest image = image_from_options(opt, "profiles.png");

@@ -14,8 +14,8 @@ std::vector<OptionSpec> image_option_specs(const std::string& default_out) {
 }
 
 ImageRequest image_from_options(const Options& options, const std::string& default_out) {
-  return image_request(options.text("--out", default_out), options.integer("--width", 1200, 1, 100000),
-                       options.integer("--height", 900, 1, 100000));
+  return image_request(options.text("--out", default_out), options.integer("--width", {1, 100000}),
+                       options.integer("--height", {1, 100000}));
 }
 
 std::string format(const char* pattern, ...) {

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "core/numerics/number_text.hpp"
 #include "wrc/wheelset_state_t.hpp"
 
 namespace wrc::cli::plot {
@@ -88,17 +90,11 @@ RunHistory read_run_history(const std::string& path) {
       if (index >= static_cast<int>(fields.size()))
         throw std::runtime_error(path + ":" + std::to_string(number) + ": missing column '" + header[index] + "'");
       const std::string& text = fields[index];
-      size_t used = 0;
-      double v = NAN;
-      try {
-        v = std::stod(text, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used == 0 || used != text.size())
+      const std::optional<double> v = whole_number(text);
+      if (!v)
         throw std::runtime_error(path + ":" + std::to_string(number) + ": '" + text + "' in column '" + header[index] +
                                  "' is not a number");
-      return v;
+      return *v;
     };
     history.t.push_back(value(t));
     history.y.push_back(value(y));

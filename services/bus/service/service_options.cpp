@@ -1,23 +1,21 @@
 #include "bus/service/service_options.hpp"
 
 #include <cctype>
-#include <cmath>
-#include <cstdlib>
+#include <optional>
 #include <stdexcept>
 
+#include "core/numerics/number_text.hpp"
 #include "options/options.hpp"
 
 namespace wrc::bus {
 
 namespace {
 double parse_period(const std::string& text) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value <= 0.0 ||
-      value > 60.0) {
+  const std::optional<double> value = finite_number(text);
+  if (!value || *value <= 0.0 || *value > 60.0) {
     throw std::invalid_argument("--heartbeat-period: '" + text + "' is not a number in (0, 60] s");
   }
-  return value;
+  return *value;
 }
 
 void check_instance(const std::string& name) {

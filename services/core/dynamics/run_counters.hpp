@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// The counters of one run, summed across every integrator restart (IDAReInit resets IDA's own).
+/// The counters of one run, summed across every integrator restart (IDAReInit resets IDA's own);
+/// their names, units and meanings are run_counter_table()'s (core/dynamics/run_counter_table.hpp).
 
 namespace wrc {
 
@@ -30,31 +31,9 @@ struct RunCounters {
   int last_order = 0;          ///< method order of the last step [-]
   double last_step = 0;        ///< size of the last step [s]
 
-  RunCounters& operator+=(const RunCounters& o) {
-    steps += o.steps;
-    residual_evals += o.residual_evals;
-    jacobian_evals += o.jacobian_evals;
-    jacobian_residual_evals += o.jacobian_residual_evals;
-    lin_setups += o.lin_setups;
-    err_test_fails += o.err_test_fails;
-    nonlin_iters += o.nonlin_iters;
-    nonlin_conv_fails += o.nonlin_conv_fails;
-    root_evals += o.root_evals;
-    root_returns += o.root_returns;
-    restarts += o.restarts;
-    contact_switches += o.contact_switches;
-    missed_switches += o.missed_switches;
-    two_point_entries += o.two_point_entries;
-    two_point_time += o.two_point_time;
-    floored_patches += o.floored_patches;
-    floored_time += o.floored_time;
-    max_branch_excess = max_branch_excess > o.max_branch_excess ? max_branch_excess : o.max_branch_excess;
-    contact_queries += o.contact_queries;
-    contact_configurations += o.contact_configurations;
-    contact_retries += o.contact_retries;
-    contact_timeouts += o.contact_timeouts;
-    return *this;
-  }
+  /// Adds the counters of a later stretch of the run: sums, the larger of max_branch_excess;
+  /// last_order and last_step stay (run_counter_table() says which is which).
+  RunCounters& operator+=(const RunCounters& later);
 };
 
 }  // namespace wrc

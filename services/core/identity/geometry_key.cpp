@@ -1,22 +1,18 @@
 #include "core/identity/geometry_key.hpp"
 
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
+#include "core/geometry/track_table.hpp"
 #include "core/identity/sha256.hpp"
+#include "core/numerics/number_text.hpp"
 #include "core/profile/profile_error.hpp"
 
 namespace wrc {
 namespace {
 
-std::string exact(double value) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", value);
-  return buf;
-}
+std::string exact(double value) { return exact_number_text(value); }
 
 bool starts_with(const std::string& text, const std::string& prefix) {
   return text.compare(0, prefix.size(), prefix) == 0;
@@ -26,10 +22,8 @@ bool starts_with(const std::string& text, const std::string& prefix) {
 // (make_profile rejects the spec anyway).
 std::string canonical_parameter(const std::string& spec, const std::string& prefix) {
   const std::string text = spec.substr(prefix.size());
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) return spec;
-  return prefix + exact(value);
+  const std::optional<double> value = finite_number(text);
+  return value ? prefix + exact(*value) : spec;
 }
 
 // One profile as its content: the canonical name of a built-in (the names make_profile knows),
@@ -49,17 +43,11 @@ std::string profile_content(const char* field, const std::string& spec) {
 }  // namespace
 
 std::string geometry_key_text(const GeometrySpec& spec) {
-  const TrackParameters& t = spec.track;
   std::string text = std::string(kGeometryKeyVersion) + "\n";
   text += profile_content("wheel", spec.wheel);
   text += profile_content("rail", spec.rail);
   text += "rail_cant " + (spec.rail_cant ? exact(*spec.rail_cant) : std::string("profile")) + "\n";
-  text += "gauge " + exact(t.gauge) + "\n";
-  text += "gauge_depth " + exact(t.gauge_depth) + "\n";
-  text += "flange_back_spacing " + exact(t.flange_back_spacing) + "\n";
-  text += "taping_line_offset " + exact(t.taping_line_offset) + "\n";
-  text += "inclination " + exact(t.inclination) + "\n";
-  text += "nominal_radius " + exact(t.nominal_radius) + "\n";
+  for (const auto& p : track_parameter_table()) text += std::string(p.key) + " " + exact(p.get(spec.track)) + "\n";
   return text;
 }
 
@@ -72,10 +60,7 @@ std::string profile_content_hash(const std::string& profile_spec) {
 std::vector<std::string> geometry_arguments(const GeometrySpec& spec) {
   std::vector<std::string> args{"--wheel", spec.wheel, "--rail", spec.rail};
   if (spec.rail_cant) args.insert(args.end(), {"--rail-cant", exact(*spec.rail_cant)});
-  const TrackParameters& t = spec.track;
-  args.insert(args.end(), {"--gauge", exact(t.gauge), "--gauge-depth", exact(t.gauge_depth), "--flange-back",
-                           exact(t.flange_back_spacing), "--taping-line-offset", exact(t.taping_line_offset),
-                           "--inclination", exact(t.inclination), "--r0", exact(t.nominal_radius)});
+  for (const auto& p : track_parameter_table()) args.insert(args.end(), {p.option_name(), exact(p.get(spec.track))});
   return args;
 }
 

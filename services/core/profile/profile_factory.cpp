@@ -1,9 +1,10 @@
 #include "core/profile/profile_factory.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <memory>
+#include <optional>
+
+#include "core/numerics/number_text.hpp"
 
 #include "core/profile/circle_rail.hpp"
 #include "core/profile/conic.hpp"
@@ -28,14 +29,9 @@ void require_side(const std::string& spec, ProfileSide wanted, ProfileSide actua
 // Parses the number after "<prefix>:"; the whole rest must be one finite number.
 double parse_parameter(const std::string& spec, std::size_t prefix_length) {
   const std::string text = spec.substr(prefix_length);
-  errno = 0;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE ||
-      !std::isfinite(value)) {
-    throw ProfileError(spec, 0, "'" + text + "' is not a finite number");
-  }
-  return value;
+  const std::optional<double> value = finite_number(text);
+  if (!value) throw ProfileError(spec, 0, "'" + text + "' is not a finite number");
+  return *value;
 }
 
 bool starts_with(const std::string& text, const std::string& prefix) {

@@ -7,6 +7,7 @@
 
 #include <sys/stat.h>
 
+#include "core/numerics/number_text.hpp"
 #include "core/profile/profile_error.hpp"
 #include "core/profile/profile_limits.hpp"
 
@@ -41,10 +42,9 @@ std::vector<std::string> split_fields(const std::string& text) {
 }
 
 bool parse_number(const std::string& token, double& value) {
-  if (token.empty()) return false;
-  char* end = nullptr;
-  value = std::strtod(token.c_str(), &end);
-  return end == token.c_str() + token.size();
+  const std::optional<double> number = whole_number(token);
+  if (number) value = *number;
+  return number.has_value();
 }
 
 std::string base_name(const std::string& path) {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <regex>
 
+#include "core/numerics/number_text.hpp"
 #include "core/profile/profile_error.hpp"
 #include "core/profile/profile_plausibility.hpp"
 #include "core/profile/profile_points.hpp"
@@ -99,7 +100,7 @@ double cant_from_comment(const std::string& comment) {
   std::smatch match;
   static const std::regex ratio("1\\s*:\\s*([0-9]+(\\.[0-9]*)?)");
   if (std::regex_search(text, match, ratio)) {
-    return std::atan(1.0 / std::stod(match[1].str()));
+    return std::atan(1.0 / parse_finite_number(match[1].str(), "cant ratio"));
   }
   return kStandardCant;
 }

@@ -1,22 +1,18 @@
 #include "core/spline/spline_fit_options.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
-#include "core/geometry/wheelset_geometry.hpp"
+#include "core/numerics/number_text.hpp"
+#include "core/spline/spline_fit_table.hpp"
 
 namespace wrc {
 namespace {
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("spline fit: " + what); }
 
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string num(double v) { return exact_number_text(v); }
 
 void require_positive(double v, const char* name, const char* unit) {
   if (!(v > 0.0) || !std::isfinite(v)) bad(std::string(name) + " = " + num(v) + " " + unit + " must be positive and finite");
@@ -32,15 +28,15 @@ SplineFitOptions SplineFitOptions::paper_benchmark() {
   return o;
 }
 
+// Each scalar's rule is its table's (core/spline/spline_fit_table.cpp); what is left here are the
+// triples, the breakpoints and the rules between members.
 void SplineFitOptions::validate() const {
-  if (!std::isfinite(y_min) || !std::isfinite(y_max) || !(y_min < y_max))
-    bad("the box in y [" + num(y_min) + ", " + num(y_max) + "] m must be finite and increasing");
-  require_positive(roll_max, "roll_max", "rad");
-  require_positive(yaw_max, "yaw_max", "rad");
-  if (roll_max > 0.05) bad("roll_max = " + num(roll_max) + " rad is beyond 0.05 rad (a wheel lifted off its rail)");
-  if (yaw_max > kMaxValidatedYaw)
-    bad("yaw_max = " + num(yaw_max) + " rad is beyond the validated yaw range of the geometry, " +
-        num(kMaxValidatedYaw) + " rad");
+  try {
+    validate_parameters(spline_fit_table(), *this);
+  } catch (const std::invalid_argument& e) {
+    bad(e.what());
+  }
+  if (!(y_min < y_max)) bad("the box in y [" + num(y_min) + ", " + num(y_max) + "] m must be increasing");
   const char* names[3] = {"y", "roll", "yaw"};
   for (int k = 0; k < 3; ++k) {
     if (intervals[k] < 1 || intervals[k] > 200)
@@ -56,8 +52,6 @@ void SplineFitOptions::validate() const {
       if (!(y_breakpoints[i] > y_breakpoints[i - 1]))
         bad("y_breakpoints[" + std::to_string(i) + "] = " + num(y_breakpoints[i]) + " m is not above the previous one");
   }
-  if (!(grading >= 0.0) || !std::isfinite(grading)) bad("grading = " + num(grading) + " must be >= 0");
-  require_positive(sample_step_y, "sample_step_y", "m");
   const int y_basis = (y_breakpoints.empty() ? intervals[0] : static_cast<int>(y_breakpoints.size()) - 1) + degrees[0];
   if ((y_max - y_min) / sample_step_y < 2.0 * y_basis)
     bad("sample_step_y = " + num(sample_step_y) + " m gives fewer than two samples per basis function in y");
@@ -67,13 +61,6 @@ void SplineFitOptions::validate() const {
   if (yaw_samples < intervals[2] + degrees[2] || yaw_samples > 101)
     bad("yaw_samples = " + std::to_string(yaw_samples) + " must be at least intervals + degree in yaw (" +
         std::to_string(intervals[2] + degrees[2]) + ") and at most 101");
-  if (!(jump_weight > 0.0 && jump_weight <= 1.0)) bad("jump_weight = " + num(jump_weight) + " must lie in (0, 1]");
-  if (!(jump_band >= 0.0) || !std::isfinite(jump_band)) bad("jump_band = " + num(jump_band) + " m must be >= 0");
-  if (!(transition >= 0.0) || !(transition <= 2e-3))
-    bad("transition = " + num(transition) + " m must be in [0, 0.002]");
-  if (!(flange_angle > 0.1 && flange_angle < 1.5))
-    bad("flange_angle = " + num(flange_angle) + " rad must lie in (0.1, 1.5)");
-  require_positive(clearance_cap, "clearance_cap", "m");
   require_positive(search.step, "search.step", "m");
   if (threads < 0 || threads > 64) bad("threads = " + std::to_string(threads) + " must be 0..64");
 }

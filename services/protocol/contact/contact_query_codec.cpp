@@ -1,23 +1,17 @@
 #include "protocol/contact/contact_query_codec.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <exception>
 #include <stdexcept>
 
 #include "core/geometry/wheelset_geometry.hpp"
 #include "core/model_interface/query_validation.hpp"
+#include "core/numerics/number_text.hpp"
 #include "wrc/contact_reply_t.hpp"
 
 namespace wrc::protocol {
 
 namespace {
-
-std::string number_text(double value) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.9g", value);
-  return buf;
-}
 
 /// "" when value is finite and in [lo, hi], else "<name> = <value> is ...".
 std::string check_range(const std::string& name, double value, double lo, double hi, const char* unit) {

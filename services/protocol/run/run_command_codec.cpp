@@ -5,13 +5,33 @@
 
 #include "core/models/contact_model_factory.hpp"
 #include "protocol/geometry/track_codec.hpp"
+#include "protocol/message_fields.hpp"
+#include "protocol/run/run_request_table.hpp"
 #include "wrc/run_status_t.hpp"
 
 namespace wrc::protocol {
 namespace {
 
-void require_finite(const char* name, double v) {
-  if (!std::isfinite(v)) throw std::invalid_argument(std::string(name) + " = " + std::to_string(v) + " is not finite");
+// The field of each run_request_table() key (protocol/message_fields.hpp).
+const std::vector<MessageField<run_command_t>>& run_command_fields() {
+  using M = run_command_t;
+  static const std::vector<MessageField<M>> fields{
+      WRC_MESSAGE_FIELD(M, mass), WRC_MESSAGE_FIELD(M, roll_inertia), WRC_MESSAGE_FIELD(M, yaw_inertia),
+      WRC_MESSAGE_FIELD(M, spin_inertia), WRC_MESSAGE_FIELD(M, speed), WRC_MESSAGE_FIELD(M, vertical_force),
+      WRC_MESSAGE_FIELD(M, lateral_force), WRC_MESSAGE_FIELD(M, include_gravity), WRC_MESSAGE_FIELD(M, gravity),
+      WRC_MESSAGE_FIELD(M, longitudinal_stiffness), WRC_MESSAGE_FIELD(M, lateral_stiffness),
+      WRC_MESSAGE_FIELD(M, vertical_stiffness), WRC_MESSAGE_FIELD(M, longitudinal_damping),
+      WRC_MESSAGE_FIELD(M, lateral_damping), WRC_MESSAGE_FIELD(M, vertical_damping), WRC_MESSAGE_FIELD(M, half_spacing),
+      WRC_MESSAGE_FIELD(M, shear_modulus), WRC_MESSAGE_FIELD(M, poisson_ratio), WRC_MESSAGE_FIELD(M, friction),
+      WRC_MESSAGE_FIELD(M, fastsim_elements), WRC_MESSAGE_FIELD(M, fastsim_strips), WRC_MESSAGE_FIELD(M, y0),
+      WRC_MESSAGE_FIELD(M, yaw0), WRC_MESSAGE_FIELD(M, y_dot0), WRC_MESSAGE_FIELD(M, yaw_dot0),
+      WRC_MESSAGE_FIELD(M, spin_rate_offset), WRC_MESSAGE_FIELD(M, t_end), WRC_MESSAGE_FIELD(M, rtol),
+      WRC_MESSAGE_FIELD(M, position_tolerance), WRC_MESSAGE_FIELD(M, velocity_tolerance),
+      WRC_MESSAGE_FIELD(M, max_step), WRC_MESSAGE_FIELD(M, max_steps), WRC_MESSAGE_FIELD(M, output_period),
+      WRC_MESSAGE_FIELD(M, contact_timeout), WRC_MESSAGE_FIELD(M, contact_retries),
+      WRC_MESSAGE_FIELD(M, contact_wait),
+  };
+  return fields;
 }
 
 }  // namespace
@@ -35,46 +55,7 @@ run_command_t to_message(const RunRequest& r) {
   m.instance = r.instance;
   m.track = to_message(r.geometry);
   m.in_process = r.in_process ? 1 : 0;
-  const WheelsetParameters& w = r.spec.wheelset;
-  m.mass = w.mass;
-  m.roll_inertia = w.roll_inertia;
-  m.yaw_inertia = w.yaw_inertia;
-  m.spin_inertia = w.spin_inertia;
-  m.speed = w.speed;
-  m.vertical_force = w.vertical_force;
-  m.lateral_force = w.lateral_force;
-  m.include_gravity = w.include_gravity ? 1 : 0;
-  m.gravity = w.gravity;
-  const PrimarySuspension& s = w.suspension;
-  m.longitudinal_stiffness = s.longitudinal_stiffness;
-  m.lateral_stiffness = s.lateral_stiffness;
-  m.vertical_stiffness = s.vertical_stiffness;
-  m.longitudinal_damping = s.longitudinal_damping;
-  m.lateral_damping = s.lateral_damping;
-  m.vertical_damping = s.vertical_damping;
-  m.half_spacing = s.half_spacing;
-  m.shear_modulus = w.material.shear_modulus;
-  m.poisson_ratio = w.material.poisson_ratio;
-  m.friction = w.material.friction;
-  m.fastsim_elements = static_cast<std::int16_t>(w.fastsim_elements);
-  m.fastsim_strips = static_cast<std::int16_t>(w.fastsim_strips);
-  const InitialState& i = r.spec.initial;
-  m.y0 = i.y;
-  m.yaw0 = i.yaw;
-  m.y_dot0 = i.y_dot;
-  m.yaw_dot0 = i.yaw_dot;
-  m.spin_rate_offset = i.spin_rate_offset;
-  const IntegratorSettings& g = r.spec.integrator;
-  m.t_end = g.t_end;
-  m.rtol = g.relative_tolerance;
-  m.position_tolerance = g.position_tolerance;
-  m.velocity_tolerance = g.velocity_tolerance;
-  m.max_step = g.max_step;
-  m.max_steps = g.max_steps;
-  m.output_period = g.output_period;
-  m.contact_timeout = r.contact_timeout;
-  m.contact_retries = r.contact_retries;
-  m.contact_wait = r.contact_wait;
+  to_message_fields(run_request_table(), r, run_command_fields(), m);
   m.num_scheduled_swaps = static_cast<std::int32_t>(r.swaps.size());
   for (const ScheduledSwap& swap : r.swaps) {
     m.scheduled_swap_times.push_back(swap.t);
@@ -91,55 +72,9 @@ RunRequest from_message(const run_command_t& m) {
   r.instance = m.instance;
   r.geometry = from_message(m.track);
   r.in_process = m.in_process != 0;
-  WheelsetParameters& w = r.spec.wheelset;
-  w.mass = m.mass;
-  w.roll_inertia = m.roll_inertia;
-  w.yaw_inertia = m.yaw_inertia;
-  w.spin_inertia = m.spin_inertia;
-  w.speed = m.speed;
-  w.vertical_force = m.vertical_force;
-  w.lateral_force = m.lateral_force;
-  w.include_gravity = m.include_gravity != 0;
-  w.gravity = m.gravity;
-  PrimarySuspension& s = w.suspension;
-  s.longitudinal_stiffness = m.longitudinal_stiffness;
-  s.lateral_stiffness = m.lateral_stiffness;
-  s.vertical_stiffness = m.vertical_stiffness;
-  s.longitudinal_damping = m.longitudinal_damping;
-  s.lateral_damping = m.lateral_damping;
-  s.vertical_damping = m.vertical_damping;
-  s.half_spacing = m.half_spacing;
-  w.material.shear_modulus = m.shear_modulus;
-  w.material.poisson_ratio = m.poisson_ratio;
-  w.material.friction = m.friction;
-  w.fastsim_elements = m.fastsim_elements;
-  w.fastsim_strips = m.fastsim_strips;
-  InitialState& i = r.spec.initial;
-  i.y = m.y0;
-  i.yaw = m.yaw0;
-  i.y_dot = m.y_dot0;
-  i.yaw_dot = m.yaw_dot0;
-  i.spin_rate_offset = m.spin_rate_offset;
-  IntegratorSettings& g = r.spec.integrator;
-  g.t_end = m.t_end;
-  g.relative_tolerance = m.rtol;
-  g.position_tolerance = m.position_tolerance;
-  g.velocity_tolerance = m.velocity_tolerance;
-  g.max_step = m.max_step;
-  g.max_steps = m.max_steps;
-  g.output_period = m.output_period;
-  r.spec.validate();
-  require_finite("contact_timeout", m.contact_timeout);
-  require_finite("contact_wait", m.contact_wait);
-  if (!(m.contact_timeout > 0.0 && m.contact_timeout <= 60.0))
-    throw std::invalid_argument("contact_timeout = " + std::to_string(m.contact_timeout) + " s is outside (0, 60]");
-  if (m.contact_retries < 0 || m.contact_retries > 100)
-    throw std::invalid_argument("contact_retries = " + std::to_string(m.contact_retries) + " is outside [0, 100]");
-  if (!(m.contact_wait >= 0.0 && m.contact_wait <= 3600.0))
-    throw std::invalid_argument("contact_wait = " + std::to_string(m.contact_wait) + " s is outside [0, 3600]");
-  r.contact_timeout = m.contact_timeout;
-  r.contact_retries = m.contact_retries;
-  r.contact_wait = m.contact_wait;
+  from_message_fields(run_request_table(), m, run_command_fields(), r);
+  r.spec.validate();  // the rules between parameters
+  const IntegratorSettings& g = r.spec.integrator;
   if (m.num_scheduled_swaps < 0 || m.num_scheduled_swaps > 1000 ||
       static_cast<std::size_t>(m.num_scheduled_swaps) != m.scheduled_swap_times.size() ||
       m.scheduled_swap_models.size() != m.scheduled_swap_times.size())

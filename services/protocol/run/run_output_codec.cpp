@@ -2,6 +2,8 @@
 
 #include <exception>
 
+#include "core/dynamics/run_counter_table.hpp"
+#include "protocol/message_fields.hpp"
 #include "wrc/run_status_t.hpp"
 
 namespace wrc::protocol {
@@ -25,6 +27,38 @@ void copy_motion(const WheelsetSnapshot& s, Message& m) {
   }
 }
 
+// The field of each run_counter_table() name; three kept the message's older names.
+const std::vector<MessageField<integrator_stats_t>>& stats_fields() {
+  using M = integrator_stats_t;
+  static const std::vector<MessageField<M>> fields{
+      WRC_MESSAGE_FIELD(M, steps),
+      message_field("residual_evals", &M::rhs_evals),
+      message_field("jacobian_evals", &M::jac_evals),
+      message_field("jacobian_residual_evals", &M::rhs_evals_jac),
+      WRC_MESSAGE_FIELD(M, lin_setups),
+      WRC_MESSAGE_FIELD(M, err_test_fails),
+      WRC_MESSAGE_FIELD(M, nonlin_iters),
+      WRC_MESSAGE_FIELD(M, nonlin_conv_fails),
+      WRC_MESSAGE_FIELD(M, root_evals),
+      WRC_MESSAGE_FIELD(M, root_returns),
+      WRC_MESSAGE_FIELD(M, restarts),
+      WRC_MESSAGE_FIELD(M, contact_switches),
+      WRC_MESSAGE_FIELD(M, missed_switches),
+      WRC_MESSAGE_FIELD(M, two_point_entries),
+      WRC_MESSAGE_FIELD(M, two_point_time),
+      WRC_MESSAGE_FIELD(M, max_branch_excess),
+      WRC_MESSAGE_FIELD(M, floored_patches),
+      WRC_MESSAGE_FIELD(M, floored_time),
+      WRC_MESSAGE_FIELD(M, contact_queries),
+      WRC_MESSAGE_FIELD(M, contact_configurations),
+      WRC_MESSAGE_FIELD(M, contact_retries),
+      WRC_MESSAGE_FIELD(M, contact_timeouts),
+      WRC_MESSAGE_FIELD(M, last_order),
+      WRC_MESSAGE_FIELD(M, last_step),
+  };
+  return fields;
+}
+
 }  // namespace
 
 wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, double speed) {
@@ -43,32 +77,15 @@ integrator_stats_t to_stats_message(const RunCounters& c, const std::string& run
   integrator_stats_t m{};
   m.run_id = run_id;
   m.t = t;
-  m.steps = c.steps;
-  m.rhs_evals = c.residual_evals;
-  m.rhs_evals_jac = c.jacobian_residual_evals;
-  m.jac_evals = c.jacobian_evals;
-  m.lin_setups = c.lin_setups;
-  m.err_test_fails = c.err_test_fails;
-  m.nonlin_iters = c.nonlin_iters;
-  m.nonlin_conv_fails = c.nonlin_conv_fails;
-  m.root_evals = c.root_evals;
-  m.root_returns = c.root_returns;
-  m.restarts = c.restarts;
-  m.contact_switches = c.contact_switches;
-  m.last_order = c.last_order;
-  m.last_step = c.last_step;
   m.wall_time = wall_time;
-  m.contact_queries = c.contact_queries;
-  m.contact_configurations = c.contact_configurations;
-  m.contact_retries = c.contact_retries;
-  m.contact_timeouts = c.contact_timeouts;
-  m.missed_switches = c.missed_switches;
-  m.two_point_entries = c.two_point_entries;
-  m.two_point_time = c.two_point_time;
-  m.max_branch_excess = c.max_branch_excess;
-  m.floored_patches = c.floored_patches;
-  m.floored_time = c.floored_time;
+  to_message_fields(run_counter_table(), c, stats_fields(), m);
   return m;
+}
+
+RunCounters from_stats_message(const integrator_stats_t& m) {
+  RunCounters c;
+  for (const RunCounter& counter : run_counter_table()) counter.set(c, field_of(stats_fields(), counter.key).get(m));
+  return c;
 }
 
 run_summary_t to_summary_message(WheelsetSimulation& sim, const std::string& run_id, std::int64_t request_id,

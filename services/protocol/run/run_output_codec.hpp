@@ -15,8 +15,10 @@ namespace wrc::protocol {
 
 /// The state message of a snapshot at speed V (x = V t).
 wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, double speed);
-/// The counters message.
+/// The counters message (every counter of run_counter_table(); t [s] and wall_time [s] as given).
 integrator_stats_t to_stats_message(const RunCounters& c, const std::string& run_id, double t, double wall_time);
+/// The counters of a counters message.
+RunCounters from_stats_message(const integrator_stats_t& message);
 /// The summary of a finished, failed or stopped simulation.
 run_summary_t to_summary_message(WheelsetSimulation& simulation, const std::string& run_id, std::int64_t request_id,
                                  double wall_time);

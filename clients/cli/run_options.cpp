@@ -1,0 +1,71 @@
+#include "cli/run_options.hpp"
+
+#include <unistd.h>
+
+#include <sstream>
+
+#include "cli/profile_options.hpp"
+#include "cli/service_starter.hpp"
+#include "core/dynamics/run_parameters_file.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "options/parameter_options.hpp"
+#include "protocol/run/run_request_table.hpp"
+
+namespace wrc::cli {
+
+std::vector<protocol::ScheduledSwap> parse_swaps(const std::string& text, double t_end) {
+  std::vector<protocol::ScheduledSwap> swaps;
+  std::stringstream list(text);
+  std::string item;
+  while (std::getline(list, item, ',')) {
+    const auto colon = item.find(':');
+    if (colon == std::string::npos) throw UsageError("--swap-at: '" + item + "' is not T:MODEL");
+    protocol::ScheduledSwap s;
+    s.t = parse_finite(item.substr(0, colon), "--swap-at");
+    s.model = item.substr(colon + 1);
+    contact_model_entry(s.model);
+    if (!(s.t > (swaps.empty() ? 0.0 : swaps.back().t) && s.t < t_end))
+      throw UsageError("--swap-at: times must increase within (0, t_end): '" + item + "'");
+    swaps.push_back(s);
+  }
+  return swaps;
+}
+
+std::vector<OptionSpec> run_option_specs() {
+  std::vector<OptionSpec> specs{
+      {"--model", true, "contact model to start with: onepoint, interp, multipoint or spline", ""},
+      {"--summary", true, "write the run summary here (JSON)", ""},
+      {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
+      {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
+      {"--swap-at", true, "swap the model at the first step at or after simulated times: T:M[,T2:M2...]", "none"},
+      {"--history", true, "write the state at every output period here (CSV)", "none"},
+      {"--in-process", false, "the dynamics evaluates the contact model itself (comparison only)", ""},
+      {"--run-id", true, "name of the run", "run-<pid>"},
+  };
+  for (auto& spec : parameter_option_specs(protocol::run_request_table(), protocol::RunRequest{})) specs.push_back(spec);
+  for (auto& spec : service_start_option_specs()) specs.push_back(spec);
+  for (auto& spec : profile_option_specs()) specs.push_back(spec);
+  return specs;
+}
+
+protocol::RunRequest run_request_from(const Options& o) {
+  protocol::RunRequest request;
+  request.model = o.choice("--model", contact_model_names());
+  if (request.model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
+  RunSpec& spec = request.spec;
+  if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
+  if (o.has("--suspension")) {
+    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none"
+                                   ? PrimarySuspension::none()
+                                   : PrimarySuspension::benchmark();
+  }
+  apply_parameter_options(protocol::run_request_table(), o, request);
+  spec.validate();  // the rules between parameters (the total vertical load)
+  if (o.has("--swap-at")) request.swaps = parse_swaps(o.text("--swap-at"), spec.integrator.t_end);
+  request.in_process = o.has("--in-process");
+  request.run_id = o.text("--run-id", "run-" + std::to_string(::getpid()));
+  request.geometry = geometry_spec_from_options(o);
+  return request;
+}
+
+}  // namespace wrc::cli

@@ -1,0 +1,89 @@
+#include "cli/run_outputs.hpp"
+
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+
+#include "core/dynamics/run_counter_table.hpp"
+#include "core/dynamics/run_parameter_table.hpp"
+#include "protocol/run/run_output_codec.hpp"
+
+namespace wrc::cli {
+namespace {
+
+// The members of value as a JSON object, each by its table key: booleans as true / false, whole
+// numbers as integers.
+template <class Entry, class T>
+nlohmann::json table_json(const std::vector<Entry>& table, const T& value) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const Entry& p : table) {
+    const double v = p.get(value);
+    if (p.kind == ParameterKind::kBoolean)
+      j[p.key] = v != 0.0;
+    else if (p.kind == ParameterKind::kInteger)
+      j[p.key] = static_cast<long long>(v);
+    else
+      j[p.key] = v;
+  }
+  return j;
+}
+
+}  // namespace
+
+nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& request, const std::string& key) {
+  nlohmann::json j;
+  j["run_id"] = s.run_id;
+  j["state"] = protocol::run_state_name(s.state);
+  j["message"] = s.message;
+  j["model"] = s.model;
+  j["initial_model"] = request.model;
+  j["formulation"] = s.formulation;
+  j["in_process"] = request.in_process;
+  j["geometry_key"] = key;
+  j["t_end"] = s.t_end;
+  j["final_state"] = {{"y", s.y},
+                      {"z", s.z},
+                      {"roll", s.roll},
+                      {"yaw", s.yaw},
+                      {"y_dot", s.y_dot},
+                      {"z_dot", s.z_dot},
+                      {"roll_dot", s.roll_dot},
+                      {"yaw_dot", s.yaw_dot},
+                      {"spin_rate", s.spin_rate},
+                      {"normal_force_left", s.normal_force[0]},
+                      {"normal_force_right", s.normal_force[1]},
+                      {"s_wheel_left", s.s_wheel[0]},
+                      {"s_wheel_right", s.s_wheel[1]}};
+  j["wall_time"] = s.wall_time;
+  j["counters"] = table_json(run_counter_table(), protocol::from_stats_message(s.stats));
+  nlohmann::json swaps = nlohmann::json::array();
+  for (std::size_t k = 0; k < s.swap_times.size(); ++k)
+    swaps.push_back({{"t", s.swap_times[k]}, {"model", s.swap_models[k]}});
+  j["swaps"] = swaps;
+  j["parameters"] = table_json(run_parameter_table(), request.spec);
+  return j;
+}
+
+void write_summary(const std::string& path, const nlohmann::json& summary) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot write the summary");
+  out << summary.dump(2) << "\n";
+  if (!out) throw std::runtime_error(path + ": write error");
+}
+
+void write_history(const std::string& path, const std::map<double, wheelset_state_t>& history) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error(path + ": cannot write the history");
+  out << "t,y,z,roll,yaw,y_dot,z_dot,roll_dot,yaw_dot,spin_rate,s_left,s_right,angle_left,angle_right,"
+         "normal_force_left,normal_force_right,model\n";
+  out << std::setprecision(17);
+  for (const auto& [t, m] : history) {
+    out << m.t << ',' << m.y << ',' << m.z << ',' << m.roll << ',' << m.yaw << ',' << m.y_dot << ',' << m.z_dot << ','
+        << m.roll_dot << ',' << m.yaw_dot << ',' << m.spin_rate << ',' << m.s_wheel[0] << ',' << m.s_wheel[1] << ','
+        << m.contact_angle[0] << ',' << m.contact_angle[1] << ',' << m.normal_force[0] << ',' << m.normal_force[1]
+        << ',' << m.model << '\n';
+  }
+  if (!out) throw std::runtime_error(path + ": write error");
+}
+
+}  // namespace wrc::cli

@@ -1,0 +1,70 @@
+#include "core/dynamics/run_counter_table.hpp"
+
+#include <algorithm>
+
+namespace wrc {
+namespace {
+
+template <class V>
+RunCounter counter(const char* name, const char* unit, const char* description, V RunCounters::*member,
+                   CounterSum sum = CounterSum::kSum) {
+  RunCounter c;
+  static_cast<Parameter<RunCounters>&>(c) = member_parameter<RunCounters>({name, nullptr, unit, description}, member);
+  c.sum = sum;
+  return c;
+}
+
+}  // namespace
+
+const std::vector<RunCounter>& run_counter_table() {
+  using C = RunCounters;
+  static const std::vector<RunCounter> table{
+      counter("steps", "-", "accepted integrator steps", &C::steps),
+      counter("residual_evals", "-", "residual evaluations by IDA (not those of the Jacobian)", &C::residual_evals),
+      counter("jacobian_evals", "-", "Jacobian evaluations (each one batch of perturbed states)", &C::jacobian_evals),
+      counter("jacobian_residual_evals", "-", "residual evaluations for the finite-difference Jacobians",
+              &C::jacobian_residual_evals),
+      counter("lin_setups", "-", "linear solver set-ups", &C::lin_setups),
+      counter("err_test_fails", "-", "local error test failures", &C::err_test_fails),
+      counter("nonlin_iters", "-", "Newton iterations", &C::nonlin_iters),
+      counter("nonlin_conv_fails", "-", "Newton convergence failures", &C::nonlin_conv_fails),
+      counter("root_evals", "-", "evaluations of the event functions", &C::root_evals),
+      counter("root_returns", "-", "returns at an event (contact-point switch, flange contact)", &C::root_returns),
+      counter("restarts", "-", "re-initialisations after an event or a model swap", &C::restarts),
+      counter("contact_switches", "-", "contact-point switches located as events (both wheels)", &C::contact_switches),
+      counter("missed_switches", "-", "of those, found by the branch check at an accepted step, not by root finding",
+              &C::missed_switches),
+      counter("two_point_entries", "-", "switches into rigid two-point contact (sliding on a switching surface)",
+              &C::two_point_entries),
+      counter("two_point_time", "s", "simulated time with a wheel in two-point contact, summed over the wheels",
+              &C::two_point_time),
+      counter("max_branch_excess", "m",
+              "largest height of a followed point above the lowest minimum at an accepted step", &C::max_branch_excess,
+              CounterSum::kMax),
+      counter("floored_patches", "-",
+              "patches at accepted steps whose lateral curvature was floored (conformal, Hertz does not hold)",
+              &C::floored_patches),
+      counter("floored_time", "s", "simulated time of the steps ending with such a patch", &C::floored_time),
+      counter("contact_queries", "-", "contact evaluations asked for (a batch counts once)", &C::contact_queries),
+      counter("contact_configurations", "-", "configurations in them", &C::contact_configurations),
+      counter("contact_retries", "-", "contact queries re-sent after a timeout (over the bus)", &C::contact_retries),
+      counter("contact_timeouts", "-", "attempt rounds without a reply (the run waited for a service)",
+              &C::contact_timeouts),
+      counter("last_order", "-", "method order of the last step", &C::last_order, CounterSum::kKept),
+      counter("last_step", "s", "size of the last step", &C::last_step, CounterSum::kKept),
+  };
+  return table;
+}
+
+RunCounters& RunCounters::operator+=(const RunCounters& later) {
+  for (const RunCounter& c : run_counter_table()) {
+    switch (c.sum) {
+      case CounterSum::kSum: c.set(*this, c.get(*this) + c.get(later)); break;
+      case CounterSum::kMax: c.set(*this, std::max(c.get(*this), c.get(later))); break;
+      case CounterSum::kKept: break;
+    }
+  }
+  return *this;
+}
+
+}  // namespace wrc

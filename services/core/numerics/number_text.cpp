@@ -1,0 +1,41 @@
+#include "core/numerics/number_text.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace wrc {
+
+std::optional<double> whole_number(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size()) return std::nullopt;
+  return value;
+}
+
+std::optional<double> finite_number(const std::string& text) {
+  errno = 0;
+  const std::optional<double> value = whole_number(text);
+  if (!value || errno == ERANGE || !std::isfinite(*value)) return std::nullopt;
+  return value;
+}
+
+std::string not_a_finite_number(const std::string& what, const std::string& text) {
+  return what + ": '" + text + "' is not a finite number";
+}
+
+double parse_finite_number(const std::string& text, const std::string& what) {
+  if (const std::optional<double> value = finite_number(text)) return *value;
+  throw std::invalid_argument(not_a_finite_number(what, text));
+}
+
+std::string number_text(double value, int digits) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, value);
+  return buf;
+}
+
+}  // namespace wrc

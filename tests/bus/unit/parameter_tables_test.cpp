@@ -1,0 +1,293 @@
+// The parameter tables and every entry point they drive agree: each key set to a non-default
+// valid value reads the same through the parameter file, the command line and the message; a
+// value just outside each range is refused by all of them, and by the library, with the table's
+// rule; every counter crosses integrator_stats_t.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/dynamics/run_counter_table.hpp"
+#include "core/dynamics/run_parameter_table.hpp"
+#include "core/dynamics/run_parameters_file.hpp"
+#include "core/geometry/track_table.hpp"
+#include "core/identity/geometry_key.hpp"
+#include "core/numerics/number_text.hpp"
+#include "core/spline/spline_fit_table.hpp"
+#include "protocol/geometry/fit_options_codec.hpp"
+#include "options/geometry_options.hpp"
+#include "protocol/geometry/track_codec.hpp"
+#include "options/parameter_options.hpp"
+#include "protocol/run/run_command_codec.hpp"
+#include "protocol/run/run_output_codec.hpp"
+#include "protocol/run/run_request_table.hpp"
+
+namespace wrc {
+namespace {
+
+// A valid value of p other than default_value.
+double other_valid_value(const ParameterInfo& p, double default_value) {
+  if (p.kind == ParameterKind::kBoolean) return default_value != 0.0 ? 0.0 : 1.0;
+  const ParameterRange& r = p.range;
+  std::vector<double> candidates;
+  if (std::isfinite(r.min) && std::isfinite(r.max)) candidates.push_back(0.5 * (r.min + r.max));
+  if (std::isfinite(r.max)) candidates.push_back(0.5 * r.max);
+  candidates.insert(candidates.end(), {2.0 * default_value, default_value + 1.0, 0.5 * default_value});
+  for (double c : candidates) {
+    if (p.kind == ParameterKind::kInteger) c = std::floor(c);
+    if (c != default_value && !p.violation(c)) return c;
+  }
+  ADD_FAILURE() << p.key << ": no other valid value";
+  return default_value;
+}
+
+// Values just outside each finite end of p's range (the end itself when open).
+std::vector<double> values_just_outside(const ParameterInfo& p) {
+  std::vector<double> out;
+  const ParameterRange& r = p.range;
+  const bool whole = p.kind == ParameterKind::kInteger;
+  auto step = [&](double end) { return whole ? 1.0 : 1e-9 * std::max(1.0, std::abs(end)); };
+  if (std::isfinite(r.min)) out.push_back(r.lower == Bound::kOpen ? r.min : r.min - step(r.min));
+  if (std::isfinite(r.max)) out.push_back(r.upper == Bound::kOpen ? r.max : r.max + step(r.max));
+  return out;
+}
+
+protocol::RunRequest valid_request() {
+  protocol::RunRequest request;
+  request.model = "onepoint";
+  request.run_id = "tables";
+  return request;
+}
+
+std::string file_with(const ParameterInfo& p, double value) {
+  return "{\"" + std::string(p.key) + "\": " + p.value_text(value) + "}";
+}
+
+Options command_line_with(const std::vector<Parameter<protocol::RunRequest>>& table, const ParameterInfo& p,
+                          double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", value);
+  const std::string text = p.kind == ParameterKind::kBoolean ? p.value_text(value) : std::string(buf);
+  return Options("run", "", parameter_option_specs(table, protocol::RunRequest{}), {p.option_name(), text});
+}
+
+TEST(ParameterTables, EveryRunKeyRoundTripsThroughFileCommandLineAndMessage) {
+  const auto& table = protocol::run_request_table();
+  for (const auto& p : table) {
+    SCOPED_TRACE(p.key);
+    const protocol::RunRequest defaults = valid_request();
+    const double value = other_valid_value(p, p.get(defaults));
+    // the command line
+    protocol::RunRequest from_cli = defaults;
+    apply_parameter_options(table, command_line_with(table, p, value), from_cli);
+    EXPECT_EQ(p.get(from_cli), value);
+    // the message
+    protocol::RunRequest set = defaults;
+    p.set(set, value);
+    const protocol::RunRequest from_message = protocol::from_message(protocol::to_message(set));
+    for (const auto& q : table) EXPECT_EQ(q.get(from_message), q.get(set)) << q.key;
+    // the parameter file (the run parameters; the contact client's settings are no file keys)
+    if (const RunParameter* r = find_parameter(run_parameter_table(), p.key)) {
+      RunSpec from_file;
+      apply_run_parameters(file_with(p, value), "p.json", from_file);
+      EXPECT_EQ(r->get(from_file), value);
+      RunSpec written;
+      r->set(written, value);
+      RunSpec read;
+      apply_run_parameters(run_parameter_text(written), "written", read);
+      EXPECT_EQ(r->get(read), value);
+    }
+  }
+}
+
+TEST(ParameterTables, ValueJustOutsideEachRangeIsRefusedEverywhereWithTheSameRule) {
+  const auto& table = protocol::run_request_table();
+  int checked = 0;
+  for (const auto& p : table) {
+    for (double bad : values_just_outside(p)) {
+      SCOPED_TRACE(std::string(p.key) + " = " + p.value_text(bad));
+      const std::string rule = p.range.text();
+      ++checked;
+      try {
+        apply_parameter_options(table, command_line_with(table, p, bad), *std::make_unique<protocol::RunRequest>());
+        ADD_FAILURE() << "the command line took it";
+      } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find(p.option_name() + ": "), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
+      }
+      protocol::RunRequest request = valid_request();
+      p.set(request, bad);
+      run_command_t message = protocol::to_message(request);
+      try {
+        protocol::from_message(message);
+        ADD_FAILURE() << "the message codec took it";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(std::string(p.key) + " = "), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
+      }
+      const RunParameter* r = find_parameter(run_parameter_table(), p.key);
+      if (!r) continue;
+      try {
+        request.spec.validate();
+        ADD_FAILURE() << "RunSpec::validate took it";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
+      }
+      try {
+        RunSpec s;
+        apply_run_parameters(file_with(*r, bad), "p.json", s);
+        ADD_FAILURE() << "the parameter file took it";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("p.json: " + std::string(p.key)), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
+      }
+    }
+  }
+  EXPECT_GT(checked, 20);
+}
+
+// The drift this table ended: --yaw0 0.06 passed `wrc run` and failed in the library.
+TEST(ParameterTables, YawLimitIsOpenAtEveryEntryPoint) {
+  const auto& table = protocol::run_request_table();
+  const auto* yaw0 = find_parameter(table, "yaw0");
+  ASSERT_NE(yaw0, nullptr);
+  protocol::RunRequest request = valid_request();
+  EXPECT_THROW(apply_parameter_options(table, command_line_with(table, *yaw0, 0.06), request), UsageError);
+  apply_parameter_options(table, command_line_with(table, *yaw0, 0.0599), request);
+  EXPECT_EQ(request.spec.initial.yaw, 0.0599);
+}
+
+TEST(ParameterTables, DefaultsOfTheOptionsAreTheLibrarys) {
+  const auto& table = protocol::run_request_table();
+  const Options none("run", "", parameter_option_specs(table, protocol::RunRequest{}), {});
+  protocol::RunRequest request;
+  apply_parameter_options(table, none, request);
+  for (const auto& spec : parameter_option_specs(table, protocol::RunRequest{})) {
+    const auto* p = [&]() -> const Parameter<protocol::RunRequest>* {
+      for (const auto& q : table)
+        if (q.option_name() == spec.name) return &q;
+      return nullptr;
+    }();
+    ASSERT_NE(p, nullptr) << spec.name;
+    EXPECT_EQ(p->parse(spec.default_text, spec.name), p->get(protocol::RunRequest{})) << spec.name;
+  }
+}
+
+TEST(ParameterTables, EveryCounterCrossesTheStatsMessage) {
+  RunCounters counters;
+  double value = 1.0;
+  for (const RunCounter& c : run_counter_table()) c.set(counters, value += 1.0);
+  const RunCounters read = protocol::from_stats_message(protocol::to_stats_message(counters, "r", 1.0, 2.0));
+  for (const RunCounter& c : run_counter_table()) EXPECT_EQ(c.get(read), c.get(counters)) << c.key;
+  RunCounters sum = counters;
+  sum += counters;
+  for (const RunCounter& c : run_counter_table()) {
+    const double expected = c.sum == CounterSum::kSum ? 2.0 * c.get(counters) : c.get(counters);
+    EXPECT_EQ(c.get(sum), expected) << c.key;
+  }
+}
+
+}  // namespace
+}  // namespace wrc
+
+namespace wrc {
+namespace {
+
+GeometrySpec geometry_from_command_line(const std::vector<std::string>& args) {
+  return geometry_spec_from_options(Options("geometry", "", geometry_option_specs(), args));
+}
+
+// Track: every key through the command line, track_t and geometry_arguments (the command line a
+// contact service is started with); just outside each range refused by all and by validate().
+TEST(ParameterTables, EveryTrackKeyRoundTripsAndEveryRangeIsOneRule) {
+  for (const auto& p : track_parameter_table()) {
+    SCOPED_TRACE(p.key);
+    const double value = other_valid_value(p, p.get(TrackParameters{}));
+    GeometrySpec set;
+    p.set(set.track, value);
+    if (set.track.flange_back_spacing >= set.track.gauge) set.track.flange_back_spacing = 0.5 * set.track.gauge;
+    EXPECT_EQ(p.get(geometry_from_command_line({p.option_name(), exact_number_text(value)}).track), value);
+    const GeometrySpec from_message = protocol::from_message(protocol::to_message(set));
+    const GeometrySpec from_arguments = geometry_from_command_line(geometry_arguments(set));
+    for (const auto& q : track_parameter_table()) {
+      EXPECT_EQ(q.get(from_message.track), q.get(set.track)) << q.key;
+      EXPECT_EQ(q.get(from_arguments.track), q.get(set.track)) << q.key;
+    }
+    for (double bad : values_just_outside(p)) {
+      SCOPED_TRACE(exact_number_text(bad));
+      const std::string rule = p.range.text();
+      GeometrySpec outside;
+      p.set(outside.track, bad);
+      auto expect_rule = [&](const std::function<void()>& entry, const std::string& name) {
+        try {
+          entry();
+          ADD_FAILURE() << "taken";
+        } catch (const std::exception& e) {
+          EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+          EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
+        }
+      };
+      expect_rule([&] { geometry_from_command_line({p.option_name(), exact_number_text(bad)}); }, p.option_name());
+      expect_rule([&] { protocol::from_message(protocol::to_message(outside)); }, p.key);
+      expect_rule([&] { outside.track.validate(); }, p.key);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace wrc
+
+namespace wrc {
+namespace {
+
+// Spline fit options: every scalar key through spline_fit_options_t and, where it has an option of
+// its own, `wrc fit`'s options; just outside each range refused by the codec, validate() and the
+// option.
+TEST(ParameterTables, EveryFitKeyRoundTripsAndEveryRangeIsOneRule) {
+  const auto& table = spline_fit_table();
+  const std::vector<OptionSpec> specs = parameter_option_specs(table, SplineFitOptions{});
+  for (const auto& p : table) {
+    SCOPED_TRACE(p.key);
+    const double value = other_valid_value(p, p.get(SplineFitOptions{}));
+    SplineFitOptions set;
+    p.set(set, value);
+    const SplineFitOptions from_message = protocol::from_message(protocol::to_message(set));
+    for (const auto& q : table) EXPECT_EQ(q.get(from_message), q.get(set)) << q.key;
+    if (p.has_option()) {
+      SplineFitOptions from_cli;
+      apply_parameter_options(table, Options("fit", "", specs, {p.option_name(), exact_number_text(value)}), from_cli);
+      EXPECT_EQ(p.get(from_cli), value);
+    }
+    for (double bad : values_just_outside(p)) {
+      SCOPED_TRACE(exact_number_text(bad));
+      const std::string rule = p.range.text();
+      SplineFitOptions outside;
+      p.set(outside, bad);
+      for (const auto& entry : std::vector<std::function<void()>>{
+               [&] { outside.validate(); }, [&] { protocol::from_message(protocol::to_message(outside)); }}) {
+        try {
+          entry();
+          ADD_FAILURE() << "taken";
+        } catch (const std::invalid_argument& e) {
+          EXPECT_NE(std::string(e.what()).find(std::string(p.key) + " = "), std::string::npos) << e.what();
+          EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
+        }
+      }
+      if (p.has_option()) {
+        SplineFitOptions o;
+        EXPECT_THROW(apply_parameter_options(table, Options("fit", "", specs, {p.option_name(), exact_number_text(bad)}), o),
+                     UsageError);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace wrc

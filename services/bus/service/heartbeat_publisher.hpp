@@ -16,6 +16,14 @@
 
 namespace wrc::bus {
 
+/// [s] shortest heartbeat period a service may have and a monitor believes: below 10 ms the
+/// heartbeats alone would load the bus and the hang checks would act on scheduling jitter.
+inline constexpr double kMinHeartbeatPeriod = 0.01;
+/// [s] longest: clients wait missed_periods (3) periods before they call a silent instance
+/// dead, so a claimed period of an hour would hold every unaddressed query to a vanished (or
+/// invented) instance for hours; 10 s bounds that wait to 30 s.
+inline constexpr double kMaxHeartbeatPeriod = 10.0;
+
 /// Identity of a service as shown in its heartbeat.
 struct ServiceIdentity {
   std::string program;          ///< executable name, e.g. "wrc-pingd"

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "bus/service/heartbeat_publisher.hpp"
 #include "options/options.hpp"
 
 namespace wrc::bus {
@@ -13,9 +14,9 @@ namespace {
 double parse_period(const std::string& text) {
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || value <= 0.0 ||
-      value > 60.0) {
-    throw std::invalid_argument("--heartbeat-period: '" + text + "' is not a number in (0, 60] s");
+  if (text.empty() || end != text.c_str() + text.size() || !(value >= kMinHeartbeatPeriod) ||
+      !(value <= kMaxHeartbeatPeriod)) {
+    throw std::invalid_argument("--heartbeat-period: '" + text + "' is not a number in [0.01, 10] s");
   }
   return value;
 }

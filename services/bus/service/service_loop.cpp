@@ -89,6 +89,7 @@ void ServiceLoop::run_idle_hook() {
 }
 
 int ServiceLoop::run() {
+  heartbeat_.start_keeper(kMaxBusyLoop);
   if (!listen(1.1 * heartbeat_.period())) {
     std::cerr << "service loop: LCM failed while listening for other instances, stopping\n";
     heartbeat_.set_state(wrc::heartbeat_t::DRAINING);

@@ -19,6 +19,13 @@
 
 namespace wrc::bus {
 
+/// [s] the longest a service's loop may take to come round (one handler, one piece of periodic
+/// work) before its heartbeats stop: up to then the heartbeat keeper thread covers for it
+/// (HeartbeatPublisher::start_keeper). The longest legitimate wait is the dynamics' wait for a
+/// restarted contact service (contact_wait, 10 s by default); a loop stuck for 30 s is hung, and
+/// the launcher kills it 20 periods after its heartbeats stop.
+inline constexpr double kMaxBusyLoop = 30.0;
+
 /// Loads the bus key (bus/auth/bus_auth.hpp: bus_key_path(bus_key_option), unless one is loaded) and
 /// opens LCM at url (empty = default). Throws std::runtime_error naming the key file or the URL
 /// when either is not usable (no key, bad permissions, no multicast route).
@@ -48,7 +55,7 @@ class ServiceLoop {
   /// [s] longest wait in one handleTimeout call (default 0.1), bounds the reaction to a signal.
   void set_max_wait(double seconds) { max_wait_ = seconds; }
 
-  /// Listens for 1.1 heartbeat periods (an older holder of the name is heard in that time),
+  /// Starts the heartbeat keeper (kMaxBusyLoop), listens for 1.1 heartbeat periods (an older holder of the name is heard in that time),
   /// publishes READY (or DUPLICATE), loops until ShutdownSignal::requested(), publishes
   /// DRAINING. Returns the process exit code: 0 after a clean shutdown, 1 when LCM failed.
   int run();

@@ -99,7 +99,7 @@ int run_launch(const std::vector<std::string>& args) {
     while (lcm->handleTimeout(0) > 0) {
     }
     for (const bus::ServiceStatus& s : heartbeats.services(bus::monotonic_seconds())) {
-      supervisor.heartbeat_seen(s.last.pid, s.last.period, s.last_seen);
+      supervisor.heartbeat_seen(s.last.pid, s.nonce, s.last.period, s.last_seen);
     }
     supervisor.poll();
   }

@@ -57,12 +57,14 @@ void DynamicsService::publish(const char* base, Message& message) {
 }
 
 void DynamicsService::on_command(const run_command_t& command) {
+  if (serving_ && !serving_()) return;  // a duplicate stays passive
   if (command.request_id <= 0 || command.request_id == last_request_id_) return;  // repeats of one command
   last_request_id_ = command.request_id;
   pending_command_ = command;  // acted on at the next step boundary (poll)
 }
 
 void DynamicsService::on_select(const contact_select_t& select) {
+  if (serving_ && !serving_()) return;
   if (select.seq <= last_select_seq_) return;  // republished copies of a selection already seen
   last_select_seq_ = select.seq;
   pending_select_ = select;

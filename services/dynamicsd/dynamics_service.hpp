@@ -41,6 +41,10 @@ class DynamicsService {
   bool running() const { return simulation_ && simulation_->state() == RunState::kRunning; }
   /// What the service is doing, one line for its heartbeat (heartbeat_t::activity).
   std::string activity() const;
+  /// serving() false: run commands and swaps are ignored (this process is a duplicate of an older
+  /// instance of the same name, bus/service/duplicate_instance_guard.hpp), as a duplicate contact
+  /// service answers no queries. Default: always serving.
+  void set_serving_check(std::function<bool()> serving) { serving_ = std::move(serving); }
 
  private:
   void on_command(const run_command_t& command);
@@ -58,6 +62,7 @@ class DynamicsService {
   lcm::LCM& lcm_;
   bus::ChannelNames names_;
   std::function<void()> keepalive_;
+  std::function<bool()> serving_;
   bus::HeaderStamper stamper_;
   bus::HeartbeatMonitor monitor_;
   bus::RequestClient<contact_query_t, contact_reply_t> client_;

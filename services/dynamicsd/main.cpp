@@ -29,6 +29,7 @@ int run(const wrc::bus::ServiceOptions& options, const wrc::bus::NoOwnOptions&) 
   heartbeat.publish_now();  // STARTING
   wrc::dynamics::DynamicsService service(*lcm, names, sender, [&heartbeat] { heartbeat.tick(); });
   heartbeat.set_activity_source([&service] { return service.activity(); });
+  service.set_serving_check([&heartbeat] { return heartbeat.state() != wrc::heartbeat_t::DUPLICATE; });
   ServiceLoop loop(*lcm, heartbeat);
   // Whole integrator steps for at most a fifth of a heartbeat period per turn, so that heartbeats
   // and commands keep flowing during a run.

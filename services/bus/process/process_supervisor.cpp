@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <thread>
@@ -85,6 +86,7 @@ void ProcessSupervisor::start(ChildState& child) {
   child.pid = pid;
   child.started_at = monotonic_seconds();
   child.last_heartbeat = -1.0;
+  child.nonce = 0;
   std::ostringstream command;
   for (const auto& w : words) command << (command.tellp() > 0 ? " " : "") << w;
   log_ << "launch: started " << child.spec.name << " (pid " << pid << "): " << command.str() << std::endl;
@@ -105,21 +107,46 @@ void ProcessSupervisor::on_exit(ChildState& child, int wait_status, double now, 
   child.pid = -1;
 }
 
-void ProcessSupervisor::heartbeat_seen(pid_t pid, double period, double seen_at) {
+void ProcessSupervisor::heartbeat_seen(pid_t pid, std::uint64_t nonce, double period, double seen_at) {
   if (pid <= 0 || !(period > 0.0)) return;
   for (auto& child : children_) {
     if (child.pid != pid || seen_at <= child.last_heartbeat || seen_at < child.started_at) continue;
+    if (child.nonce == 0) {
+      child.nonce = nonce;
+      child.heartbeat_period = period;
+    } else if (nonce != child.nonce) {
+      continue;  // another sender naming this pid
+    }
     child.last_heartbeat = seen_at;
-    child.heartbeat_period = period;
   }
 }
 
-void ProcessSupervisor::kill_hung(ChildState& child, double now) {
+bool process_stopped(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  if (!std::getline(in, text)) return false;
+  // "pid (comm) S ...": comm may hold blanks and parentheses, the state follows the last ')'.
+  const auto close = text.rfind(')');
+  if (close == std::string::npos || close + 2 >= text.size()) return false;
+  const char state = text[close + 2];
+  return state == 'T' || state == 't';
+}
+
+const char* ProcessSupervisor::hang_reason(const ChildState& child, double now) const {
+  if (child.last_heartbeat < 0.0) return nullptr;
+  const double silent = now - child.last_heartbeat;
+  if (silent > policy_.unconfirmed_hang_periods * child.heartbeat_period) return "silent, not stopped";
+  if (silent > policy_.hang_periods * child.heartbeat_period && process_stopped(child.pid)) return "stopped";
+  return nullptr;
+}
+
+void ProcessSupervisor::kill_hung(ChildState& child, double now, const char* why) {
   ++child.hangs;
   log_ << "launch: " << child.spec.name << " (pid " << child.pid << ") sent no heartbeat for " << std::fixed
        << std::setprecision(2) << now - child.last_heartbeat << " s (" << std::setprecision(1)
-       << policy_.hang_periods << " periods of " << std::setprecision(2) << child.heartbeat_period
-       << " s): hung or stopped; killing it (SIGKILL)" << std::defaultfloat << std::endl;
+       << (now - child.last_heartbeat) / child.heartbeat_period << " periods of " << std::setprecision(2)
+       << child.heartbeat_period << " s) and is " << why << ": killing it (SIGKILL)" << std::defaultfloat
+       << std::endl;
   ::kill(-child.pid, SIGKILL);
   ::kill(child.pid, SIGKILL);
   int status = 0;
@@ -136,15 +163,21 @@ void ProcessSupervisor::kill_hung(ChildState& child, double now) {
 
 void ProcessSupervisor::poll() {
   const double now = monotonic_seconds();
+  // Time this supervisor itself was away (its loop behind, descheduled) is nobody's silence:
+  // every child's last heartbeat moves on by it.
+  if (last_poll_ >= 0.0 && now - last_poll_ > policy_.own_delay) {
+    for (auto& child : children_)
+      if (child.last_heartbeat >= 0.0) child.last_heartbeat += now - last_poll_;
+  }
+  last_poll_ = now;
   for (auto& child : children_) {
     if (child.pid > 0) {
       int status = 0;
       const pid_t r = ::waitpid(child.pid, &status, WNOHANG);
       if (r == child.pid) {
         on_exit(child, status, now);
-      } else if (child.last_heartbeat >= 0.0 &&
-                 now - child.last_heartbeat > policy_.hang_periods * child.heartbeat_period) {
-        kill_hung(child, now);
+      } else if (const char* why = hang_reason(child, now)) {
+        kill_hung(child, now, why);
       }
     }
     if (child.pid < 0 && child.restart_at <= now) start(child);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "bus/service/heartbeat_publisher.hpp"
 #include "bus/transport/clock.hpp"
 
 namespace wrc::bus {
@@ -19,10 +20,11 @@ HeartbeatMonitor::HeartbeatMonitor(lcm::LCM& lcm, std::string channel, double mi
 }
 
 void HeartbeatMonitor::on_heartbeat(const wrc::heartbeat_t& hb, const ReceivedMessage& info) {
-  if (!(hb.period > 0.0) || hb.period > 3600.0) {
+  if (!(hb.period >= kMinHeartbeatPeriod && hb.period <= kMaxHeartbeatPeriod)) {
     ++rejected_;
     rejections_.reject(*info.channel, "heartbeat of " + hb.model.substr(0, 40) + "/" + hb.instance.substr(0, 40) +
-                                          " has period " + std::to_string(hb.period) + " s outside (0, 3600]");
+                                          " has period " + std::to_string(hb.period) + " s outside [" + std::to_string(kMinHeartbeatPeriod) + ", " +
+                                          std::to_string(kMaxHeartbeatPeriod) + "] (implausible)");
     return;
   }
   const double now = monotonic_seconds();

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
@@ -21,8 +22,8 @@ HeartbeatPublisher::HeartbeatPublisher(lcm::LCM& lcm, std::string channel, Servi
       period_(period),
       started_(monotonic_seconds()),
       started_utime_(wall_utime()),
-      last_sent_(-1e300),
-      stamper_(sender_name(identity_.program, identity_.instance)) {
+      stamper_(sender_name(identity_.program, identity_.instance)),
+      last_sent_(-1e300) {
   if (!(period > 0.0) || !std::isfinite(period)) {
     throw std::invalid_argument("heartbeat period " + std::to_string(period) + " s is not positive");
   }
@@ -34,19 +35,75 @@ void HeartbeatPublisher::set_state(std::int8_t state, std::string reason) {
   publish_now();
 }
 
+HeartbeatPublisher::~HeartbeatPublisher() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_keeper_ = true;
+  }
+  keeper_wakeup_.notify_all();
+  if (keeper_.joinable()) keeper_.join();
+}
+
 bool HeartbeatPublisher::tick() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    last_tick_ = monotonic_seconds();
+  }
   if (seconds_until_due() > 0.0) return false;
   publish_now();
   return true;
 }
 
 double HeartbeatPublisher::seconds_until_due() const {
+  std::lock_guard<std::mutex> lock(mutex_);
   return std::max(0.0, last_sent_ + period_ - monotonic_seconds());
+}
+
+std::int64_t HeartbeatPublisher::published() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return published_;
+}
+
+std::int64_t HeartbeatPublisher::kept_alive() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return kept_alive_;
+}
+
+void HeartbeatPublisher::start_keeper(double max_busy) {
+  if (!(max_busy > 0.0)) throw std::invalid_argument("keeper: max_busy " + std::to_string(max_busy) + " s is not positive");
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (keeper_.joinable()) return;
+  max_busy_ = max_busy;
+  last_tick_ = monotonic_seconds();
+  keeper_ = std::thread([this] { keep_alive(); });
+}
+
+void HeartbeatPublisher::keep_alive() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!stop_keeper_) {
+    keeper_wakeup_.wait_for(lock, std::chrono::duration<double>(0.25 * period_));
+    if (stop_keeper_) break;
+    const double now = monotonic_seconds();
+    if (published_ == 0 || now - last_sent_ < period_ || now - last_tick_ > max_busy_) continue;
+    // The owner's loop is late but alive: the last heartbeat again, stamped anew.
+    wrc::heartbeat_t hb = last_heartbeat_;
+    stamper_.stamp(hb.header);
+    hb.uptime = now - started_;
+    send_locked(hb, now);
+    ++kept_alive_;
+  }
+}
+
+void HeartbeatPublisher::send_locked(const wrc::heartbeat_t& hb, double now) {
+  if (publish_signed(lcm_, channel_, hb) != 0) {
+    std::cerr << stamper_.sender() << ": publishing the heartbeat on " << channel_ << " failed\n";
+  }
+  last_sent_ = now;
+  ++published_;
 }
 
 void HeartbeatPublisher::publish_now() {
   wrc::heartbeat_t hb{};
-  stamper_.stamp(hb.header);
   hb.model = identity_.model;
   hb.instance = identity_.instance;
   hb.pid = static_cast<std::int32_t>(::getpid());
@@ -79,11 +136,10 @@ void HeartbeatPublisher::publish_now() {
   hb.dropped_bad_signature = drops.bad_signature();
   hb.dropped_replayed = drops.replayed();
   hb.dropped_malformed = drops.malformed();
-  if (publish_signed(lcm_, channel_, hb) != 0) {
-    std::cerr << stamper_.sender() << ": publishing the heartbeat on " << channel_ << " failed\n";
-  }
-  last_sent_ = now;
-  ++published_;
+  std::lock_guard<std::mutex> lock(mutex_);
+  stamper_.stamp(hb.header);
+  last_heartbeat_ = hb;
+  send_locked(hb, now);
 }
 
 }  // namespace wrc::bus

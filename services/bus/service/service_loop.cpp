@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <exception>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
 #include "bus/auth/bus_auth.hpp"
 #include "bus/process/shutdown_signal.hpp"
@@ -65,7 +67,29 @@ bool ServiceLoop::listen(double seconds) {
   return true;
 }
 
+void ServiceLoop::run_idle_hook() {
+  // No exception of the service's own work ends the process: it is logged (at most once per
+  // second, with the count of those not logged) and the loop goes on serving and heartbeating.
+  std::string failure;
+  try {
+    idle_hook_();
+    return;
+  } catch (const std::exception& e) {
+    failure = e.what();
+  } catch (...) {
+    failure = "unknown exception";
+  }
+  ++idle_failures_;
+  const double now = monotonic_seconds();
+  if (now < next_idle_failure_log_) return;
+  std::cerr << "service loop: the service's periodic work failed: " << failure;
+  if (idle_failures_ > 1) std::cerr << " (" << idle_failures_ << " failures so far)";
+  std::cerr << "; the service goes on\n";
+  next_idle_failure_log_ = now + 1.0;
+}
+
 int ServiceLoop::run() {
+  heartbeat_.start_keeper(kMaxBusyLoop);
   if (!listen(1.1 * heartbeat_.period())) {
     std::cerr << "service loop: LCM failed while listening for other instances, stopping\n";
     heartbeat_.set_state(wrc::heartbeat_t::DRAINING);
@@ -98,7 +122,7 @@ int ServiceLoop::run() {
     } else {
       consecutive_errors = 0;
     }
-    if (idle_hook_) idle_hook_();
+    if (idle_hook_) run_idle_hook();
     if (const double now = monotonic_seconds(); now >= next_identity_check_) {
       check_identity(now);
       next_identity_check_ = now + 0.25 * heartbeat_.period();  // heartbeats come once a period

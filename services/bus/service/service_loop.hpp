@@ -7,6 +7,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -17,6 +18,13 @@
 #include "bus/service/service_load.hpp"
 
 namespace wrc::bus {
+
+/// [s] the longest a service's loop may take to come round (one handler, one piece of periodic
+/// work) before its heartbeats stop: up to then the heartbeat keeper thread covers for it
+/// (HeartbeatPublisher::start_keeper). The longest legitimate wait is the dynamics' wait for a
+/// restarted contact service (contact_wait, 10 s by default); a loop stuck for 30 s is hung, and
+/// the launcher kills it 20 periods after its heartbeats stop.
+inline constexpr double kMaxBusyLoop = 30.0;
 
 /// Loads the bus key (bus/auth/bus_auth.hpp: bus_key_path(bus_key_option), unless one is loaded) and
 /// opens LCM at url (empty = default). Throws std::runtime_error naming the key file or the URL
@@ -41,12 +49,13 @@ class ServiceLoop {
 
   /// Adds a request server whose load goes into the heartbeat.
   void add_load_source(LoadSource* source) { sources_.push_back(source); }
-  /// Called once per loop iteration (at least every heartbeat period).
+  /// Called once per loop iteration (at least every heartbeat period). An exception from it is
+  /// logged (rate-limited) and the loop goes on.
   void set_idle_hook(std::function<void()> hook) { idle_hook_ = std::move(hook); }
   /// [s] longest wait in one handleTimeout call (default 0.1), bounds the reaction to a signal.
   void set_max_wait(double seconds) { max_wait_ = seconds; }
 
-  /// Listens for 1.1 heartbeat periods (an older holder of the name is heard in that time),
+  /// Starts the heartbeat keeper (kMaxBusyLoop), listens for 1.1 heartbeat periods (an older holder of the name is heard in that time),
   /// publishes READY (or DUPLICATE), loops until ShutdownSignal::requested(), publishes
   /// DRAINING. Returns the process exit code: 0 after a clean shutdown, 1 when LCM failed.
   int run();
@@ -57,6 +66,8 @@ class ServiceLoop {
   void check_identity(double now);
   /// Dispatches what arrives for up to `seconds`; false when LCM failed.
   bool listen(double seconds);
+  /// The idle hook, its exceptions caught and logged.
+  void run_idle_hook();
 
   lcm::LCM& lcm_;
   HeartbeatPublisher& heartbeat_;
@@ -65,6 +76,8 @@ class ServiceLoop {
   double next_identity_check_ = 0.0;  // [s] monotonic time of the next duplicate check
   std::vector<LoadSource*> sources_;
   std::function<void()> idle_hook_;
+  std::int64_t idle_failures_ = 0;       // exceptions of the idle hook since the start
+  double next_idle_failure_log_ = 0.0;  // [s] monotonic time before which no failure is logged
   double max_wait_ = 0.1;
   int max_queue_ = 0;  // most messages handled back to back without waiting, this period, minus 1
 };

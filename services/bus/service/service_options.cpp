@@ -4,6 +4,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "bus/service/heartbeat_publisher.hpp"
 #include "core/numerics/number_text.hpp"
 #include "options/options.hpp"
 
@@ -12,8 +13,8 @@ namespace wrc::bus {
 namespace {
 double parse_period(const std::string& text) {
   const std::optional<double> value = finite_number(text);
-  if (!value || *value <= 0.0 || *value > 60.0) {
-    throw std::invalid_argument("--heartbeat-period: '" + text + "' is not a number in (0, 60] s");
+  if (!value || !(*value >= kMinHeartbeatPeriod) || !(*value <= kMaxHeartbeatPeriod)) {
+    throw std::invalid_argument("--heartbeat-period: '" + text + "' is not a number in [0.01, 10] s");
   }
   return *value;
 }

@@ -23,7 +23,7 @@ struct ServiceOptions {
   std::vector<std::string> rest; ///< arguments not consumed here, in order
 
   /// Parses argv[1..]. Throws std::invalid_argument with a one-line message naming the bad
-  /// option or value (missing value, period not in (0, 60], bad instance name).
+  /// option or value (missing value, period not in [kMinHeartbeatPeriod, kMaxHeartbeatPeriod] = [0.01, 10] s, bad instance name).
   static ServiceOptions parse(int argc, const char* const* argv);
   /// Help text of the common options, one line each (from the table).
   static std::string help_text();

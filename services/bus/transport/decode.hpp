@@ -10,10 +10,12 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "bus/transport/allocation_budget.hpp"
 #include "bus/transport/drop_counters.hpp"
@@ -34,7 +36,8 @@ struct DecodeFailure {
   std::string reason;  ///< one line naming the type and what was wrong
 };
 
-/// Decodes data[0..size) into msg. Returns nothing on success (every byte used), else why not.
+/// Decodes data[0..size) into msg. Returns nothing on success (every byte used, and the message
+/// encodes back to exactly these bytes), else why not.
 template <class Message>
 std::optional<DecodeFailure> decode_bytes(const void* data, std::size_t size, Message& msg) {
   const std::string type = Message::getTypeName();
@@ -74,6 +77,17 @@ std::optional<DecodeFailure> decode_bytes(const void* data, std::size_t size, Me
     return DecodeFailure{DropKind::kTrailingBytes, type + " has " + std::to_string(length - used) +
                                                        " trailing bytes (" + std::to_string(size) + " received, " +
                                                        std::to_string(used) + " decoded)"};
+  }
+  // What was read must encode back to the same bytes: LCM's decoder keeps a NUL byte inside a
+  // string, but its encoder stops at the first NUL (strlen), so such a message could be read but
+  // not answered, echoed in a status or logged to an LCM log. Refused here, every field of every
+  // type is one that re-encodes.
+  std::vector<unsigned char> again(size);
+  if (msg.encode(again.data(), 0, length) != length || std::memcmp(again.data(), bytes, size) != 0) {
+    msg = Message();
+    return DecodeFailure{DropKind::kUndecodable, type + " (" + std::to_string(size) +
+                                                     " bytes) does not encode back to the bytes received "
+                                                     "(a string with a NUL byte?)"};
   }
   return std::nullopt;
 }

@@ -1,13 +1,11 @@
 #include "core/identity/geometry_key.hpp"
 
-#include <fstream>
-#include <iterator>
 #include <optional>
 
 #include "core/geometry/track_table.hpp"
 #include "core/identity/sha256.hpp"
 #include "core/numerics/number_text.hpp"
-#include "core/profile/profile_error.hpp"
+#include "core/profile/profile_file_bytes.hpp"
 
 namespace wrc {
 namespace {
@@ -33,10 +31,7 @@ std::string profile_content(const char* field, const std::string& spec) {
   if (spec == "S1002" || spec == "UIC60" || spec == "UIC60-MB") return head + "builtin " + spec + "\n";
   if (starts_with(spec, "conic:")) return head + "builtin " + canonical_parameter(spec, "conic:") + "\n";
   if (starts_with(spec, "circle:")) return head + "builtin " + canonical_parameter(spec, "circle:") + "\n";
-  std::ifstream in(spec, std::ios::binary);
-  if (!in) throw ProfileError(spec, 0, "cannot be read (for the geometry key)");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw ProfileError(spec, 0, "reading failed (for the geometry key)");
+  const std::string bytes = read_profile_file_bytes(spec);
   return head + "file " + std::to_string(bytes.size()) + "\n" + bytes + "\n";
 }
 

@@ -2,7 +2,7 @@
 /// @file
 /// The limits a profile file must respect to be read: its size, the magnitude of each value and
 /// the shape a wheel or rail profile can have. The one place of these numbers; each says why.
-/// Checked by profile_text::read_lines() (size, file kind), validate_profile_points() (magnitude)
+/// Checked by read_profile_file_bytes() (size, file kind), validate_profile_points() (magnitude)
 /// and check_profile_plausibility() (shape).
 
 #include <cstddef>

@@ -1,15 +1,10 @@
 #include "core/profile/profile_text.hpp"
 
 #include <cctype>
-#include <cstdint>
 #include <cstdlib>
-#include <fstream>
-
-#include <sys/stat.h>
 
 #include "core/numerics/number_text.hpp"
-#include "core/profile/profile_error.hpp"
-#include "core/profile/profile_limits.hpp"
+#include "core/profile/profile_file_bytes.hpp"
 
 namespace wrc {
 namespace profile_text {
@@ -53,32 +48,18 @@ std::string base_name(const std::string& path) {
 }
 
 std::vector<std::string> read_lines(const std::string& path) {
-  // stat first: opening a FIFO would block, and a device (/dev/urandom) never ends.
-  struct stat info {};
-  if (::stat(path.c_str(), &info) != 0) throw ProfileError(path, 0, "cannot open file");
-  if (!S_ISREG(info.st_mode)) {
-    const char* kind = S_ISDIR(info.st_mode)    ? "a directory"
-                       : S_ISFIFO(info.st_mode) ? "a FIFO"
-                       : S_ISCHR(info.st_mode)  ? "a character device"
-                       : S_ISBLK(info.st_mode)  ? "a block device"
-                       : S_ISSOCK(info.st_mode) ? "a socket"
-                                                : "not a plain file";
-    throw ProfileError(path, 0, std::string("not a regular file (") + kind + ")");
-  }
-  const auto too_large = [&](std::uintmax_t bytes) {
-    return ProfileError(path, 0, "file too large: " + std::to_string(bytes) + " bytes (at most " +
-                                     std::to_string(kMaxProfileFileBytes) + ")");
-  };
-  if (static_cast<std::uintmax_t>(info.st_size) > kMaxProfileFileBytes) throw too_large(info.st_size);
-  std::ifstream in(path);
-  if (!in) throw ProfileError(path, 0, "cannot open file");
+  // Lines as std::getline gives them: split at '\n', no empty line after a final '\n'.
+  const std::string bytes = read_profile_file_bytes(path);
   std::vector<std::string> lines;
-  std::string line;
-  std::size_t bytes = 0;
-  while (std::getline(in, line)) {
-    bytes += line.size() + 1;
-    if (bytes > kMaxProfileFileBytes) throw too_large(bytes);  // it grew since stat
-    lines.push_back(line);
+  std::size_t start = 0;
+  while (start < bytes.size()) {
+    const std::size_t end = bytes.find('\n', start);
+    if (end == std::string::npos) {
+      lines.push_back(bytes.substr(start));
+      break;
+    }
+    lines.push_back(bytes.substr(start, end - start));
+    start = end + 1;
   }
   return lines;
 }

@@ -24,9 +24,8 @@ bool parse_number(const std::string& token, double& value);
 /// The final path component, for profile names.
 std::string base_name(const std::string& path);
 
-/// All lines of a file. @throws ProfileError(path, 0, reason): "cannot open file", "not a regular
-/// file (a FIFO)" (checked before opening, so a FIFO or a device is refused at once), "file too
-/// large" (beyond kMaxProfileFileBytes, profile_limits.hpp).
+/// All lines of a profile file, read by the one profile file rule (profile_file_bytes.hpp).
+/// @throws ProfileError(path, 0, reason) as read_profile_file_bytes does.
 std::vector<std::string> read_lines(const std::string& path);
 
 }  // namespace profile_text

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -177,6 +178,55 @@ TEST_F(DynamicsServiceTest, PacketLossGivesTheSameFinalState) {
   ASSERT_EQ(lossy["state"], "finished") << lossy.dump();
   EXPECT_GT(lossy["counters"]["contact_retries"].get<long>(), 0) << "the loss rule did not act";
   expect_same_final_state(clean, lossy);
+}
+
+// Under `wrc launch`, 5 % of every datagram lost (heartbeats, queries, replies, commands,
+// statuses) for the whole test: the launcher kills no service (single lost heartbeats are not
+// silence, busy loops are covered by the heartbeat keeper), and a one-point and a spline run end
+// bit for bit where the same runs end on the clean bus. WRC_LOSS_SECONDS (default 0) keeps the
+// loss and a stream of runs going for that long first (the 10-minute campaign of README's
+// reliability section); the check on the kills covers all of it.
+TEST_F(DynamicsServiceTest, LossyBusKillsNoServiceAndRunsEndTheSame) {
+  if (!in_netns()) GTEST_SKIP() << "packet loss is only injected inside a private network namespace";
+  if (std::system("nft --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "nft (nftables) is not installed";
+  const std::string log = temp_path("launch.log");
+  auto launcher = launch({"geometry", "contact-onepoint", "contact-spline", "dynamics"}, log);
+  for (const char* model : {"onepoint", "spline", "dynamicsd"})
+    ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
+  const auto runs = [&](const std::string& tag) {
+    std::map<std::string, nlohmann::json> out;
+    for (const std::string model : {"onepoint", "spline"}) {
+      std::vector<std::string> args = run_args(model, 0.3, temp_path(tag + "-" + model + ".json"));
+      args.insert(args.end(), {"--timeout", "0.05", "--retries", "5"});
+      out[model] = run(args, tag + "-" + model);
+    }
+    return out;
+  };
+  const auto clean = runs("clean");
+  if (std::system("nft add table inet t && nft add chain inet t in '{ type filter hook input priority 0; }'") != 0)
+    GTEST_SKIP() << "nft cannot create a table in this namespace (no CAP_NET_ADMIN?)";
+  ASSERT_EQ(std::system("nft add rule inet t in udp dport 7667 numgen random mod 100 lt 5 counter drop"), 0);
+  const char* seconds_text = std::getenv("WRC_LOSS_SECONDS");
+  const double campaign = seconds_text ? std::atof(seconds_text) : 0.0;
+  const double campaign_end = monotonic_seconds() + campaign;
+  int campaign_runs = 0;
+  while (monotonic_seconds() < campaign_end) {
+    runs("campaign-" + std::to_string(campaign_runs));
+    ++campaign_runs;
+  }
+  const auto lossy = runs("lossy");
+  std::system("nft delete table inet t");
+  for (const std::string model : {"onepoint", "spline"}) {
+    ASSERT_EQ(lossy.at(model)["state"], "finished") << model << ": " << lossy.at(model).dump();
+    expect_same_final_state(clean.at(model), lossy.at(model));
+  }
+  const std::string text = read_text(log);
+  EXPECT_EQ(text.find("killing it"), std::string::npos) << text;
+  EXPECT_EQ(text.find("restart #"), std::string::npos) << text;
+  std::cerr << "5 % loss: " << campaign << " s of runs (" << campaign_runs << " rounds) and the checked runs, "
+            << "no service killed\n";
+  launcher->signal(SIGINT);
+  launcher->wait(20.0);
 }
 
 // A swap to a model whose service is not on the bus is refused: the run keeps its model and its

@@ -1,6 +1,8 @@
 // Checked decoding: wrong type, truncated bytes and trailing bytes are reported, never thrown.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
 #include "bus/transport/decode.hpp"
@@ -59,5 +61,25 @@ TEST(Decode, ReportsTruncatedAndTrailingBytes) {
   EXPECT_NE(wrc::bus::decode_message(buffer(tiny), out).find("too short"), std::string::npos);
   bytes.push_back(0);
   EXPECT_NE(wrc::bus::decode_message(buffer(bytes), out).find("trailing"), std::string::npos);
+}
+
+// A NUL byte inside a string decodes with LCM's decoder but cannot be encoded again (its encoder
+// stops at the first NUL): such a message is refused at decoding, so no handler ever holds a value
+// it cannot answer with (wrc-dynamicsd used to exit on re-encoding a run id with a NUL in it).
+TEST(Decode, RefusesAStringWithANulByte) {
+  auto bytes = encode(sample_request());
+  const std::string text = "PING_REPLY.x";
+  const auto at = std::search(bytes.begin(), bytes.end(), text.begin(), text.end());
+  ASSERT_NE(at, bytes.end());
+  wrc::ping_request_t out{};
+  ASSERT_EQ(wrc::bus::decode_message(buffer(bytes), out), "");  // intact: accepted
+  *(at + 4) = 0;                                                 // "PING\0REPLY.x"
+  wrc::ping_request_t bad{};
+  const std::string why = wrc::bus::decode_message(buffer(bytes), bad);
+  EXPECT_NE(why.find("ping_request_t (" + std::to_string(bytes.size()) + " bytes) does not encode back"),
+            std::string::npos)
+      << why;
+  EXPECT_EQ(bad.reply_channel, "");  // nothing of it stays behind
+  EXPECT_EQ(bad.request_id, 0);
 }
 }  // namespace

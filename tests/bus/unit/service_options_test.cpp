@@ -50,8 +50,9 @@ void expect_refused(std::vector<const char*> args, const std::string& expected) 
 // services' own are not refused here: they pass through to the service (ContactdOptions names an
 // unknown one, contactd_options_test.cpp).
 TEST(ServiceOptions, RefusesBadValues) {
-  expect_refused({"--heartbeat-period", "-1"}, "--heartbeat-period: '-1' is not a number in (0, 60] s");
-  expect_refused({"--heartbeat-period=61"}, "--heartbeat-period: '61' is not a number in (0, 60] s");
+  expect_refused({"--heartbeat-period", "-1"}, "--heartbeat-period: '-1' is not a number in [0.01, 10] s");
+  expect_refused({"--heartbeat-period=11"}, "--heartbeat-period: '11' is not a number in [0.01, 10] s");
+  expect_refused({"--heartbeat-period", "0.005"}, "--heartbeat-period: '0.005' is not a number in [0.01, 10] s");
   expect_refused({"--heartbeat-period", "fast"}, "--heartbeat-period: 'fast' is not a number");
   expect_refused({"--instance", "a b"}, "--instance: 'a b' must be 1-24 letters, digits, '_' or '-'");
   expect_refused({"--instance", "abcdefghijklmnopqrstuvwxy"}, "--instance: 'abcdefghijklmnopqrstuvwxy' must be 1-24");

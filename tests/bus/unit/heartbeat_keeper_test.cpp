@@ -1,0 +1,55 @@
+// The heartbeat keeper (HeartbeatPublisher::start_keeper) over memq://: while the owner's loop is
+// busy (no tick() for many periods, but less than max_busy) heartbeats keep coming once per period
+// from the keeper thread, so a service answering a burst of requests or retrying a contact query
+// is not taken for dead; once the loop has not ticked for max_busy the heartbeats stop, so a
+// stuck loop still goes silent. Period 0.05 s, max_busy 0.6 s; the windows below leave at least
+// 0.15 s (3 periods) around each threshold.
+#include <gtest/gtest.h>
+
+#include "bus/service/heartbeat_monitor.hpp"
+#include "bus/service/heartbeat_publisher.hpp"
+#include "memq_bus.hpp"
+#include "test_bus_key.hpp"
+
+namespace {
+using namespace wrc::bus;
+
+TEST(HeartbeatKeeper, CoversABusyLoopButNotAStuckOne) {
+  lcm::LCM lcm("memq://");
+  HeartbeatMonitor monitor(lcm, "HEARTBEAT");
+  const double period = 0.05;
+  HeartbeatPublisher publisher(lcm, "HEARTBEAT", {"wrc-test", "pingd", "k", ""}, period);
+  publisher.set_state(wrc::heartbeat_t::READY);
+  publisher.start_keeper(0.6);
+  ASSERT_TRUE(test::handle_until(lcm, [&] { return monitor.find("pingd", "k", monotonic_seconds()).has_value(); }));
+
+  // Busy for 0.4 s (8 periods) without a tick: the monitor keeps it alive, the keeper sent them.
+  const std::int64_t before = publisher.published();
+  const double busy_until = monotonic_seconds() + 0.4;
+  bool always_alive = true;
+  while (monotonic_seconds() < busy_until) {
+    lcm.handleTimeout(10);
+    auto s = monitor.find("pingd", "k", monotonic_seconds());
+    always_alive = always_alive && s && s->alive;
+  }
+  EXPECT_TRUE(always_alive);
+  EXPECT_GE(publisher.published() - before, 5);  // 8 periods, one each, less scheduling slack
+  EXPECT_EQ(publisher.kept_alive(), publisher.published() - before);
+  auto s = monitor.find("pingd", "k", monotonic_seconds());
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->last.state, wrc::heartbeat_t::READY);  // the last heartbeat again
+
+  // Still no tick: past max_busy (0.6 s after the last tick) the keeper stops; 3 periods later
+  // the monitor calls it dead.
+  EXPECT_TRUE(test::handle_until(
+      lcm, [&] { return !monitor.find("pingd", "k", monotonic_seconds())->alive; }, 1.0));
+  const std::int64_t stopped_at = publisher.published();
+  test::handle_until(lcm, [] { return false; }, 0.2);
+  EXPECT_EQ(publisher.published(), stopped_at);
+
+  // The loop comes back: tick() publishes at once and the keeper covers again.
+  EXPECT_TRUE(publisher.tick());
+  EXPECT_TRUE(test::handle_until(lcm, [&] { return monitor.find("pingd", "k", monotonic_seconds())->alive; }));
+}
+
+}  // namespace

@@ -7,6 +7,7 @@
 #include <iterator>
 
 #include "core/identity/sha256.hpp"
+#include "core/profile/builtin_profiles.hpp"
 #include "core/profile/profile_error.hpp"
 
 namespace wrc {
@@ -36,9 +37,9 @@ std::string canonical_parameter(const std::string& spec, const std::string& pref
 // or the bytes of a file.
 std::string profile_content(const char* field, const std::string& spec) {
   const std::string head = std::string(field) + " ";
-  if (spec == "S1002" || spec == "UIC60" || spec == "UIC60-MB") return head + "builtin " + spec + "\n";
-  if (starts_with(spec, "conic:")) return head + "builtin " + canonical_parameter(spec, "conic:") + "\n";
-  if (starts_with(spec, "circle:")) return head + "builtin " + canonical_parameter(spec, "circle:") + "\n";
+  if (find_builtin_profile(spec)) return head + "builtin " + spec + "\n";
+  for (const char* prefix : {kConicPrefix, kCirclePrefix})
+    if (starts_with(spec, prefix)) return head + "builtin " + canonical_parameter(spec, prefix) + "\n";
   std::ifstream in(spec, std::ios::binary);
   if (!in) throw ProfileError(spec, 0, "cannot be read (for the geometry key)");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -230,7 +230,7 @@ std::string SplineContactGeometry::data_hash() const {
         for (Eigen::Index i = 0; i < c.rows(); ++i) data.push_back(c(i, j));
     }
   }
-  return sha256_hex(data.data(), data.size() * sizeof(double));  // x86-64 and AArch64: little-endian
+  return sha256_hex_of_doubles(data);
 }
 
 }  // namespace wrc

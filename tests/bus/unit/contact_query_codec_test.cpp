@@ -203,6 +203,16 @@ TEST(QueryAdapter, EachInvalidFieldIsNamed) {
   }
 }
 
+// Whether the library (validate_contact_query) accepts configuration index of q.
+bool library_accepts(const wrc::contact_query_t& q, int index) {
+  try {
+    validate_contact_query(to_contact_query(q, index));
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
+}
+
 // The adapter and the library (validate_contact_query) accept and reject the same material,
 // speed and grid values: both take their bounds from core/model_interface/query_validation.hpp.
 TEST(QueryAdapter, AcceptsWhatTheLibraryAccepts) {
@@ -224,13 +234,7 @@ TEST(QueryAdapter, AcceptsWhatTheLibraryAccepts) {
       wrc::contact_query_t q = distinct_query();
       p.set(q, v);
       const bool adapter_accepts = validate_query(q).empty();
-      bool library_accepts = true;
-      try {
-        validate_contact_query(to_contact_query(q, 0));
-      } catch (const std::invalid_argument&) {
-        library_accepts = false;
-      }
-      EXPECT_EQ(adapter_accepts, library_accepts) << p.what << " = " << v << ": adapter '" << validate_query(q) << "'";
+      EXPECT_EQ(adapter_accepts, library_accepts(q, 0)) << p.what << " = " << v << ": adapter '" << validate_query(q) << "'";
     }
   }
 }
@@ -266,13 +270,7 @@ TEST(QueryAdapter, AcceptsTheConfigurationsTheLibraryAccepts) {
         q.formulation = formulation;
         q.configurations[1].*p.field = v;
         const bool adapter_accepts = validate_query(q).empty();
-        bool library_accepts = true;
-        try {
-          validate_contact_query(to_contact_query(q, 1));
-        } catch (const std::invalid_argument&) {
-          library_accepts = false;
-        }
-        EXPECT_EQ(adapter_accepts, library_accepts)
+        EXPECT_EQ(adapter_accepts, library_accepts(q, 1))
             << p.what << " = " << v << " (formulation " << int{formulation} << "): adapter '" << validate_query(q) << "'";
         if (!adapter_accepts) {
           EXPECT_NE(validate_query(q).find(std::string("configurations[1].") + p.what), std::string::npos)

@@ -6,8 +6,7 @@
 //
 // Recording is done here, not by lcm-logger: lcm-logger keeps LCM's default subscription queue of
 // 30 messages and discards what it has not yet written when it is stopped, so on a loaded machine
-// a run's burst of states was lost (measured: 7 to 17 of a 0.3 s run's 61 states, with three busy
-// loops on two cores). This recorder queues up to kQueueCapacity messages, writes them with LCM's
+// a run's burst of states was lost (how many: README, "Message flow"). This recorder queues up to kQueueCapacity messages, writes them with LCM's
 // own log writer (the file is an ordinary LCM log that lcm-logplayer, lcm-spy and lcm::LogFile
 // read), and on Ctrl-C writes every message already received before it closes the file.
 #include <unistd.h>

@@ -12,7 +12,8 @@ namespace wrc::contactd {
 
 /// SHA-256 (64 hex digits) of model's precomputed data; empty for a model without any.
 /// "interp": ContactPointTable::data() (the grid's counts and half ranges, the rigid roll at every
-/// node, every tabulated value and slope of both wheels) as little-endian doubles.
+/// node, every tabulated value and slope of both wheels) as little-endian doubles
+/// (sha256_hex_of_doubles).
 /// "spline": SplineContactGeometry::data_hash() (spline_model_t.model_hash).
 std::string model_hash(const ContactModel& model);
 

@@ -69,8 +69,6 @@ class GeometryService : public bus::LoadSource {
   const GeometryCounters& counters() const { return counters_; }
   /// Requests rejected (undecodable or invalid).
   std::int64_t rejected() const { return rejections_.count() + counters_.dropped; }
-  /// Jobs queued or running.
-  std::size_t pending_jobs() const { return jobs_.size(); }
   /// What the service is doing, one line for its heartbeat (heartbeat_t::activity): the fit
   /// running (its progress_t task), its stage and fraction done, and how many wait behind it; or
   /// idle with its counts.

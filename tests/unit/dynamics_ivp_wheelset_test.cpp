@@ -114,7 +114,8 @@ TEST(IvpWheelsetReference, ReproducesPublishedSolutionAtTenSeconds) {
     std::printf("[ measured ] %-13s % .12e  reference % .12e  error % .2e\n", name_of(i), run.final_state.y[i],
                 reference[i], error);
   }
-  // The headline values (physics.md 1.4a): lateral shift and yaw to 5 digits.
+  // The headline values (docs/ivp-wheelset.md, the reference at t = 10 s): lateral shift and yaw
+  // to 5 digits.
   EXPECT_NEAR(run.final_state.y[kIvpLateral], 8.6355e-3, 1e-7);
   EXPECT_NEAR(run.final_state.y[kIvpYaw], -1.3642e-2, 1e-6);
 

@@ -65,6 +65,15 @@ TEST(Sha256, BytesAndStringAgreeIncludingZeroBytes) {
   EXPECT_TRUE(is_sha256_hex(sha256_hex(bytes, sizeof bytes)));
 }
 
+// Model data hashes: each double as its 8 bits' bytes, least significant first, whatever the
+// host's byte order (1.0 = 0x3ff0000000000000, -2.5 = 0xc004000000000000).
+TEST(Sha256, DoublesAreHashedAsLittleEndianBytes) {
+  const unsigned char bytes[] = {0, 0, 0, 0, 0, 0, 0xf0, 0x3f, 0, 0, 0, 0, 0, 0, 0x04, 0xc0};
+  EXPECT_EQ(sha256_hex_of_doubles({1.0, -2.5}), sha256_hex(bytes, sizeof bytes));
+  EXPECT_EQ(sha256_hex_of_doubles({}), sha256_hex(""));
+  EXPECT_NE(sha256_hex_of_doubles({0.0}), sha256_hex_of_doubles({-0.0}));  // bits, not values
+}
+
 // ---- geometry key ----------------------------------------------------------------------------
 
 TEST(GeometryKey, IsTheSha256OfTheVersionedCanonicalText) {

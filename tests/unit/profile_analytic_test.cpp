@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/identity/geometry_key.hpp"
+#include "core/profile/builtin_profiles.hpp"
 #include "core/profile/circle_rail.hpp"
 #include "core/profile/conic.hpp"
 #include "core/profile/profile_error.hpp"
@@ -74,6 +76,25 @@ TEST(ProfileFactory, Errors) {
   expect_error("conic:0.05x", ProfileSide::kWheel, "not a finite number");
   expect_error("circle:nan", ProfileSide::kRail, "not a finite number");
   expect_error("circle:-0.3", ProfileSide::kRail, "positive");
+}
+
+// Every name of the one list of built-ins builds a profile of its side, refused on the other side,
+// and the geometry key names it instead of reading a file; the parameterised ones print their
+// prefix in their names.
+TEST(ProfileFactory, EveryBuiltinNameIsBuiltAndKeyedByName) {
+  for (const BuiltinProfile& b : kBuiltinProfiles) {
+    const ProfilePtr p = make_profile(b.name, b.side);
+    ASSERT_TRUE(p) << b.name;
+    EXPECT_EQ(p->side(), b.side) << b.name;
+    EXPECT_EQ(find_builtin_profile(b.name), &b);
+    const ProfileSide other = b.side == ProfileSide::kWheel ? ProfileSide::kRail : ProfileSide::kWheel;
+    EXPECT_THROW(make_profile(b.name, other), ProfileError) << b.name;
+    EXPECT_NO_THROW(profile_content_hash(b.name)) << b.name;  // a file of that name would not be there
+  }
+  EXPECT_EQ(find_builtin_profile("s1002"), nullptr);  // case-sensitive
+  EXPECT_EQ(find_builtin_profile("UIC60-mb"), nullptr);
+  EXPECT_EQ(make_profile(std::string(kConicPrefix) + "0.05", ProfileSide::kWheel)->name().rfind(kConicPrefix, 0), 0u);
+  EXPECT_EQ(make_profile(std::string(kCirclePrefix) + "0.3", ProfileSide::kRail)->name().rfind(kCirclePrefix, 0), 0u);
 }
 
 }  // namespace

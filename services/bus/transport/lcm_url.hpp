@@ -4,8 +4,7 @@
 /// multicast group (LCM filters channels after reading them), so a process that is descheduled
 /// for a few milliseconds while a run's contact traffic flows (thousands of queries and replies a
 /// second) overflows the kernel's default 208 KiB socket buffer and loses whatever arrives next,
-/// e.g. a run's states (seen: 1 of 61 states lost by `wrc run` with three busy loops on two
-/// cores). wrc therefore asks for a larger receive buffer whenever the user names no URL.
+/// e.g. a run's states (what was lost where: README, "Message flow"). wrc therefore asks for a larger receive buffer whenever the user names no URL.
 
 #include <string>
 

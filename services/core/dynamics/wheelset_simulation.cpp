@@ -1,5 +1,7 @@
 #include "core/dynamics/wheelset_simulation.hpp"
 
+#include "core/dynamics/consistent_initialisation.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -17,10 +19,11 @@ namespace wrc {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// [-] contact results kept for the states last asked (the residual, root and output functions
+// ask again for the states of the step just taken).
 constexpr size_t kCacheSize = 8;
 // switch L, switch R, normal force L, normal force R, second point's normal force L, R
 constexpr int kRootCount = 6;
-constexpr double kGapTolerance = 1e-13;  // [m] position projection onto gap = 0
 // [m] how far a followed point may lie above the lowest minimum at an accepted step (root finding
 // stops within ~1e-15 m of the crossing); more is a switch the root finding did not see.
 constexpr double kBranchTolerance = 1e-9;
@@ -55,10 +58,26 @@ std::string format_time(double t) {
   return s.str();
 }
 
+// [-] relative finite-difference increment of the Jacobian: about the square root of the contact
+// result's relative rounding, so that truncation and rounding errors are alike.
+constexpr double kRelativeIncrement = 1e-7;
+// The magnitudes below which an unknown's increment stops shrinking with it (an unknown at 0 still
+// moves): scaled normal forces and multipliers [-], spin rate [rad/s], the pose and its rates
+// [m, rad, m/s, rad/s].
+constexpr double kTypicalScaledForce = 1.0;
+constexpr double kTypicalSpinRate = 10.0;
+constexpr double kTypicalPose = 1e-2;
+// [-] IDA's absolute tolerance of the scaled normal forces and multipliers (they are left out of
+// the error test; it only scales the Newton test).
+constexpr double kScaledForceTolerance = 1e-6;
+// [-] the scaled normal forces the start's projection begins from (force_scale each).
+constexpr double kStartScaledNormalForce = 1.0;
+
 // Finite-difference increment of unknown k at value v.
 double increment(int k, double v) {
-  const double typical = k >= kUnknownNormalLeft ? 1.0 : (k == kUnknownSpinRate ? 10.0 : 1e-2);
-  return 1e-7 * std::max(std::abs(v), typical);
+  const double typical =
+      k >= kUnknownNormalLeft ? kTypicalScaledForce : (k == kUnknownSpinRate ? kTypicalSpinRate : kTypicalPose);
+  return kRelativeIncrement * std::max(std::abs(v), typical);
 }
 
 }  // namespace
@@ -86,30 +105,6 @@ void WheelsetSimulation::set_branches(const FollowedBranches& branches, std::vec
 
 std::array<double, 2> WheelsetSimulation::branch_excess(const ContactResult& c) const {
   return {-c.wheels[0].switch_function, -c.wheels[1].switch_function};
-}
-
-const WheelConstraint& WheelsetSimulation::ActiveConstraint::of(const ContactResult& c) const {
-  return second ? c.second_wheels[static_cast<size_t>(wheel)].value() : c.wheels[static_cast<size_t>(wheel)];
-}
-
-std::vector<WheelsetSimulation::ActiveConstraint> WheelsetSimulation::active_constraints() const {
-  std::vector<ActiveConstraint> active = {{0, false, kUnknownNormalLeft}, {1, false, kUnknownNormalRight}};
-  for (int i = 0; i < 2; ++i)
-    if (branches_.two_point(i)) active.push_back({i, true, kUnknownSecondNormalLeft + i});
-  return active;
-}
-
-Eigen::MatrixXd WheelsetSimulation::constraint_gradients(const ContactResult& c, Eigen::VectorXd* gaps) const {
-  const std::vector<ActiveConstraint> active = active_constraints();
-  const int count = static_cast<int>(active.size());
-  Eigen::MatrixXd g(count, kPoseUnknowns);
-  if (gaps) gaps->resize(count);
-  for (int r = 0; r < count; ++r) {
-    const WheelConstraint& w = active[static_cast<size_t>(r)].of(c);
-    g.row(r) = w.gap_gradient.transpose();
-    if (gaps) (*gaps)[r] = w.gap;
-  }
-  return g;
 }
 
 std::vector<ContactResult> WheelsetSimulation::evaluate(const std::vector<ContactQuery>& batch) {
@@ -208,151 +203,10 @@ int WheelsetSimulation::root_callback(const double* y, double* g) {
   }
 }
 
-void WheelsetSimulation::project_positions(std::vector<double>& y) {
-  for (int iteration = 0; iteration < 40 && branches_.any_two_point(); ++iteration) {
-    // Three or four constraints on the four coordinates: the smallest correction in the mass
-    // metric (Gauss-Newton), dq = -M^-1 G^T (G M^-1 G^T)^-1 gap.
-    Eigen::VectorXd gap;
-    const Eigen::MatrixXd g = constraint_gradients(contact_at(y.data()), &gap);
-    if (gap.cwiseAbs().maxCoeff() < kGapTolerance) return;
-    const Eigen::Vector4d inv_mass = equations_.mass_diagonal().cwiseInverse();
-    const Eigen::MatrixXd mg = inv_mass.asDiagonal() * g.transpose();
-    const Eigen::VectorXd dq = -mg * (g * mg).fullPivLu().solve(gap);
-    for (int k = 0; k < kPoseUnknowns; ++k) y[static_cast<size_t>(k)] += dq[k];
-    if (iteration == 39) throw std::runtime_error("no rigid two-point contact: the position projection did not converge");
-  }
-  for (int iteration = 0; iteration < 40; ++iteration) {
-    const ContactResult& c = contact_at(y.data());
-    const Eigen::Vector2d gap(c.wheels[0].gap, c.wheels[1].gap);
-    if (gap.cwiseAbs().maxCoeff() < kGapTolerance) return;
-    Eigen::Matrix2d j;
-    for (int i = 0; i < 2; ++i) {
-      j(i, 0) = c.wheels[static_cast<size_t>(i)].gap_gradient[kUnknownZ];
-      j(i, 1) = c.wheels[static_cast<size_t>(i)].gap_gradient[kUnknownRoll];
-    }
-    const Eigen::Vector2d delta = j.fullPivLu().solve(-gap);
-    y[kUnknownZ] += delta[0];
-    y[kUnknownRoll] += delta[1];
-  }
-  std::ostringstream msg;
-  msg << "no rigid contact of both wheels at y = " << y[kUnknownY] << " m, yaw = " << y[kUnknownYaw]
-      << " rad: the height and roll iteration did not converge";
-  throw std::runtime_error(msg.str());
-}
-
-void WheelsetSimulation::project_velocities(std::vector<double>& y) {
-  const Eigen::MatrixXd g = constraint_gradients(contact_at(y.data()), nullptr);
-  const Eigen::Vector4d inv_mass = equations_.mass_diagonal().cwiseInverse();
-  Eigen::Vector4d v(y[kUnknownYDot], y[kUnknownZDot], y[kUnknownRollDot], y[kUnknownYawDot]);
-  const Eigen::MatrixXd mg = inv_mass.asDiagonal() * g.transpose();
-  const Eigen::VectorXd impulse = (g * mg).fullPivLu().solve(g * v);
-  v -= mg * impulse;  // the velocity change of an inelastic impact along the constraint normals
-  for (int k = 0; k < 4; ++k) y[kPoseUnknowns + k] = v[k];
-}
-
-void WheelsetSimulation::settle_elastic(std::vector<double>& y, double z_acceleration, double roll_acceleration) {
-  // Height and roll at which the elastic contact gives the vertical and roll accelerations asked
-  // for (rest: 0), by Newton's method with a finite-difference Jacobian and step halving.
-  const Eigen::Vector4d m = equations_.mass_diagonal();
-  const double gyro = equations_.parameters().spin_inertia * y[kUnknownSpinRate] * y[kUnknownYawDot];
-  const Eigen::Vector2d target(m[1] * z_acceleration, m[2] * roll_acceleration - gyro);
-  const double scale = equations_.force_scale();
-  auto mismatch = [&](const ContactResult& c, const std::vector<double>& state) {
-    const Eigen::Vector4d q = equations_.applied_forces(formulation_, state.data(), c, nullptr);
-    return Eigen::Vector2d(q[1] - target[0], q[2] - target[1]);
-  };
-  // Start below the rigid contact by the static Hertz approach of a typical wheel load.
-  y[kUnknownZ] -= 1e-4;
-  const double h = 1e-9;
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    std::vector<double> dz = y, droll = y;
-    dz[kUnknownZ] += h;
-    droll[kUnknownRoll] += h;
-    std::vector<ContactResult> r = evaluate({equations_.query(formulation_, y.data(), branches_),
-                                             equations_.query(formulation_, dz.data(), branches_),
-                                             equations_.query(formulation_, droll.data(), branches_)});
-    const Eigen::Vector2d f = mismatch(r[0], y);
-    if (f.norm() < 1e-9 * scale) return;
-    Eigen::Matrix2d j;
-    j.col(0) = (mismatch(r[1], dz) - f) / h;
-    j.col(1) = (mismatch(r[2], droll) - f) / h;
-    const Eigen::Vector2d delta = j.fullPivLu().solve(-f);
-    double lambda = 1.0;
-    for (int halving = 0; halving < 30; ++halving, lambda *= 0.5) {
-      std::vector<double> trial = y;
-      trial[kUnknownZ] += lambda * delta[0];
-      trial[kUnknownRoll] += lambda * delta[1];
-      const ContactResult& c = contact_at(trial.data());
-      if (mismatch(c, trial).norm() < f.norm()) {
-        y = trial;
-        break;
-      }
-    }
-  }
-  std::ostringstream msg;
-  msg << "the elastic contact finds no height and roll that carry the wheelset at y = " << y[kUnknownY] << " m";
-  throw std::runtime_error(msg.str());
-}
-
-void WheelsetSimulation::consistent_derivatives(std::vector<double>& y, std::vector<double>& yp) {
-  const int n = unknowns();
-  yp.assign(static_cast<size_t>(n), 0.0);
-  std::vector<double> r(static_cast<size_t>(n));
-  if (formulation_ == ContactFormulation::kElastic) {
-    equations_.residual(formulation_, y.data(), yp.data(), contact_at(y.data()), branches_, r.data());
-    for (int k = 0; k <= kUnknownSpinRate; ++k) yp[k] = -r[k] / equations_.derivative_coefficient(formulation_, k);
-    return;
-  }
-  // Rigid: mu = 0, q' = v; v' and N from the equations of motion and the constraints on the
-  // acceleration level, G v' + (dG/dt) v = 0, with dG/dt v by a difference along v. The creep
-  // forces depend on N (Hertz), so iterate. Every constraint: both wheels' points, and the second
-  // point of a wheel in two-point contact.
-  const std::vector<ActiveConstraint> active = active_constraints();
-  y[kUnknownMuLeft] = y[kUnknownMuRight] = 0.0;
-  if (branches_.any_two_point()) y[kUnknownSecondMuLeft] = y[kUnknownSecondMuRight] = 0.0;
-  const double eps = 1e-7;
-  std::vector<double> ahead = y;
-  for (int k = 0; k < kPoseUnknowns; ++k) ahead[k] += eps * y[kPoseUnknowns + k];
-  const ContactResult c_ahead = contact_at(ahead.data());
-  const Eigen::Vector4d m = equations_.mass_diagonal();
-  const int count = static_cast<int>(active.size());
-  for (int iteration = 0; iteration < 8; ++iteration) {
-    const ContactResult c = contact_at(y.data());
-    std::fill(yp.begin(), yp.end(), 0.0);
-    equations_.residual(formulation_, y.data(), yp.data(), c, branches_, r.data());
-    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(4 + count, 4 + count);
-    Eigen::VectorXd b(4 + count);
-    for (int k = 0; k < 4; ++k) {
-      a(k, k) = m[k];
-      b[k] = -r[kPoseUnknowns + k];
-    }
-    const double scale = equations_.force_scale();
-    for (int i = 0; i < count; ++i) {
-      const WheelConstraint& w = active[static_cast<size_t>(i)].of(c);
-      const WheelConstraint& w_ahead = active[static_cast<size_t>(i)].of(c_ahead);
-      double g_dot_v = 0.0;
-      for (int k = 0; k < 4; ++k) {
-        // r holds the forces of the current N; the unknown is the change of N (scaled).
-        a(k, 4 + i) = -scale * w.normal_z * w.gap_gradient[k];
-        a(4 + i, k) = w.gap_gradient[k];
-        g_dot_v += (w_ahead.gap_gradient[k] - w.gap_gradient[k]) / eps * y[kPoseUnknowns + k];
-      }
-      b[4 + i] = -g_dot_v;
-    }
-    const Eigen::VectorXd x = a.fullPivLu().solve(b);
-    double change = 0.0;
-    for (int i = 0; i < count; ++i) {
-      change = std::max(change, std::abs(x[4 + i]));
-      y[static_cast<size_t>(active[static_cast<size_t>(i)].normal)] += x[4 + i];
-    }
-    for (int k = 0; k < 4; ++k) yp[kPoseUnknowns + k] = x[k];
-    if (change < 1e-10) break;
-  }
-  // The spin and the pose rows with the final N.
-  std::vector<double> zero(static_cast<size_t>(n), 0.0);
-  equations_.residual(formulation_, y.data(), zero.data(), contact_at(y.data()), branches_, r.data());
-  yp[kUnknownSpinRate] = -r[kUnknownSpinRate] / equations_.parameters().spin_inertia;
-  for (int k = 0; k < kPoseUnknowns; ++k) yp[k] = y[kPoseUnknowns + k];
+InitialisationContext WheelsetSimulation::initialisation() {
+  return {equations_, formulation_, branches_,
+          [this](const double* y) -> const ContactResult& { return contact_at(y); },
+          [this](const std::vector<ContactQuery>& batch) { return evaluate(batch); }};
 }
 
 RunCounters WheelsetSimulation::ida_counters() const {
@@ -401,7 +255,7 @@ std::vector<double> WheelsetSimulation::current_state() const {
 
 void WheelsetSimulation::begin_segment(std::vector<double> y, bool first) {
   std::vector<double> yp;
-  consistent_derivatives(y, yp);
+  consistent_derivatives(initialisation(), y, yp);
   const long n = static_cast<long>(y.size());
   const bool rigid = formulation_ == ContactFormulation::kRigid;
   if (!first) {
@@ -423,7 +277,7 @@ void WheelsetSimulation::begin_segment(std::vector<double> y, bool first) {
     id_->data()[k] = k <= kUnknownSpinRate ? 1.0 : 0.0;
     atol_->data()[k] = k < kPoseUnknowns ? s.position_tolerance
                        : k <= kUnknownSpinRate ? s.velocity_tolerance
-                                               : 1e-6;  // scaled forces and multipliers (Newton test only)
+                                               : kScaledForceTolerance;
   }
   if (same_size && ida_) {
     check_sundials(IDAReInit(ida_.mem(), t_, y_->get(), yp_->get()), "IDAReInit");
@@ -458,18 +312,18 @@ void WheelsetSimulation::start() {
   std::vector<double> y(static_cast<size_t>(kRigidUnknowns), 0.0);
   y[kUnknownZ] = r0;
   y[kUnknownSpinRate] = spec_.wheelset.speed / r0 + init.spin_rate_offset;
-  y[kUnknownNormalLeft] = y[kUnknownNormalRight] = 1.0;
+  y[kUnknownNormalLeft] = y[kUnknownNormalRight] = kStartScaledNormalForce;
   const ContactFormulation own = formulation_;
   formulation_ = ContactFormulation::kRigid;  // both formulations start from rigid contact
   try {
     // The suspension is relaxed for the centred wheelset in contact.
-    project_positions(y);
+    project_positions(initialisation(), y);
     equations_.set_z_reference(y[kUnknownZ]);
     y[kUnknownY] = init.y;
     y[kUnknownYaw] = init.yaw;
     y[kUnknownYDot] = init.y_dot;
     y[kUnknownYawDot] = init.yaw_dot;
-    project_positions(y);
+    project_positions(initialisation(), y);
     // z' and roll' follow from y' and yaw' on the constraints.
     const ContactResult& c = contact_at(y.data());
     Eigen::Matrix2d a;
@@ -487,7 +341,7 @@ void WheelsetSimulation::start() {
     if (own == ContactFormulation::kElastic) {
       y.resize(kElasticUnknowns);
       cache_.clear();
-      settle_elastic(y, 0.0, 0.0);
+      settle_elastic(initialisation(), y, 0.0, 0.0);
     }
   } catch (...) {
     formulation_ = own;
@@ -617,11 +471,11 @@ void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
         y[kUnknownNormalLeft] = normal_forces[0] / equations_.force_scale();
         y[kUnknownNormalRight] = normal_forces[1] / equations_.force_scale();
       }
-      project_positions(y);
-      project_velocities(y);
+      project_positions(initialisation(), y);
+      project_velocities(initialisation(), y);
     } else if (from == ContactFormulation::kRigid) {
       y.resize(kElasticUnknowns);
-      settle_elastic(y, z_acceleration, roll_acceleration);
+      settle_elastic(initialisation(), y, z_acceleration, roll_acceleration);
     }
     begin_segment(y, false);
     record_step_contact(true);
@@ -655,8 +509,8 @@ void WheelsetSimulation::switch_wheel(int wheel, double target_s, std::vector<do
   std::vector<double> y_single = y_before;
   set_branches(single, y_single);
   y_single[kUnknownNormalLeft + wheel] = load;
-  project_positions(y_single);
-  project_velocities(y_single);
+  project_positions(initialisation(), y_single);
+  project_velocities(initialisation(), y_single);
   if (std::isnan(from_s)) {
     y = std::move(y_single);
     return;
@@ -693,9 +547,9 @@ void WheelsetSimulation::switch_wheel(int wheel, double target_s, std::vector<do
   y_pair[kUnknownSecondNormalLeft + wheel] = 0.5 * load;
   std::vector<double> yp_pair;
   try {
-    project_positions(y_pair);
-    project_velocities(y_pair);
-    consistent_derivatives(y_pair, yp_pair);
+    project_positions(initialisation(), y_pair);
+    project_velocities(initialisation(), y_pair);
+    consistent_derivatives(initialisation(), y_pair, yp_pair);
   } catch (const std::exception&) {
     set_branches(single, y_single);
     y = std::move(y_single);
@@ -776,8 +630,8 @@ void WheelsetSimulation::restart_on_right_branches(std::vector<double>& y) {
   // another one below it): switch again until it does.
   for (int round = 0;; ++round) {
     cache_.clear();
-    project_positions(y);
-    project_velocities(y);
+    project_positions(initialisation(), y);
+    project_velocities(initialisation(), y);
     const ContactResult c = contact_at(y.data());
     const std::array<double, 2> excess = branch_excess(c);
     int wrong = -1;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/dynamics/consistent_initialisation.hpp"
 #include "core/dynamics/contact_evaluator.hpp"
 #include "core/dynamics/run_counters.hpp"
 #include "core/dynamics/sundials_support.hpp"
@@ -132,23 +133,9 @@ class WheelsetSimulation {
   /// per wheel [m] (<= 0 on the right branch): -switch_function.
   std::array<double, 2> branch_excess(const ContactResult& c) const;
 
-  /// A constraint the rigid formulation holds: each wheel's point, and the second point of a
-  /// wheel in two-point contact, with the index of its normal force in the state.
-  struct ActiveConstraint {
-    int wheel;
-    bool second;
-    int normal;
-    const WheelConstraint& of(const ContactResult& c) const;
-  };
-  std::vector<ActiveConstraint> active_constraints() const;
-  /// The active constraints' gap gradients at c, one row each [-, -, m/rad, m/rad]; their gaps
-  /// into gaps [m] when given.
-  Eigen::MatrixXd constraint_gradients(const ContactResult& c, Eigen::VectorXd* gaps) const;
-  void project_positions(std::vector<double>& y);
-  void project_velocities(std::vector<double>& y);
-  void settle_elastic(std::vector<double>& y, double target_vertical, double target_roll);
-  /// y' consistent with y (rigid: also the normal forces in y, the multipliers set to 0).
-  void consistent_derivatives(std::vector<double>& y, std::vector<double>& yp);
+  /// The run's equations, formulation, branches and contact for the consistent initialisation
+  /// (consistent_initialisation.hpp).
+  InitialisationContext initialisation();
   void begin_segment(std::vector<double> y, bool first);
   void perform_swap(std::shared_ptr<ContactEvaluator> next);
   void handle_roots();

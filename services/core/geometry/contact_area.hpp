@@ -65,10 +65,6 @@ struct ContactAreaSummary {
 
   /// Number of separate patches [-].
   int patch_count() const { return static_cast<int>(patches.size()); }
-  /// xi_max - xi_min [m].
-  double length_xi() const { return xi_max - xi_min; }
-  /// eta_max - eta_min [m].
-  double length_eta() const { return eta_max - eta_min; }
 };
 
 /// Distances on a rectangular grid of the plane E; NaN where a surface is missing (beyond the rail's

@@ -71,8 +71,6 @@ class ContactLocus {
   const Profile& wheel_profile() const { return wheel_; }
   const PlacedRail& rail() const { return rail_; }
   double nominal_radius() const { return r0_; }
-  /// Body-frame lateral coordinate of the taping line of this wheel [m] (signed).
-  double taping_y() const { return sigma_ * taping_; }
 
  private:
   // Track-frame lateral position and height of a locus point and their derivatives along s.

@@ -19,7 +19,7 @@ ProfilePtr WheelsetGeometry::checked_wheel(ProfilePtr wheel) {
 }
 
 WheelsetGeometry::WheelsetGeometry(ProfilePtr wheel, ProfilePtr rail, const TrackParameters& track)
-    : wheel_(checked_wheel(std::move(wheel))), rail_(rail), track_(track),
+    : wheel_(checked_wheel(std::move(wheel))), track_(track),
       left_rail_(rail, track, WheelSide::kLeft), right_rail_(rail, track, WheelSide::kRight),
       wheel_envelope_(wheel_->lower(), wheel_->upper(), 1e-3, 32, 1.25, [this](double s, double& d1, double& d2) {
         const ProfileSample f = wheel_->evaluate(s);

@@ -41,28 +41,23 @@ class WheelsetGeometry {
   std::optional<ContactPoint> common_point(WheelSide side, const WheelsetPose& pose,
                                            const PotentialPointSearch& search = {}) const;
 
-  /// Wheel profile coordinate of the flange apex (highest point of F on the flange side, s <= 0) [m].
-  double flange_apex() const { return flange_apex_; }
-
-  /// True when a contact point lies on or beyond the flange apex (towards the flange back): the
-  /// flange has climbed onto the rail, a derailed configuration no contact model represents.
+  /// True when a contact point lies on or beyond the flange apex (the highest point of F on the
+  /// flange side, s <= 0; towards the flange back): the flange has climbed onto the rail, a
+  /// derailed configuration no contact model represents.
   bool beyond_flange_apex(const ContactPoint& point) const { return point.s <= flange_apex_ + 1e-6; }
 
   const PlacedRail& rail(WheelSide side) const { return side == WheelSide::kLeft ? left_rail_ : right_rail_; }
   const Profile& wheel_profile() const { return *wheel_; }
-  const ProfilePtr& wheel_profile_ptr() const { return wheel_; }
-  const ProfilePtr& rail_profile_ptr() const { return rail_; }
   const TrackParameters& track() const { return track_; }
 
  private:
   static ProfilePtr checked_wheel(ProfilePtr wheel);
   ProfilePtr wheel_;
-  ProfilePtr rail_;
   TrackParameters track_;
   PlacedRail left_rail_;
   PlacedRail right_rail_;
   SlopeEnvelope wheel_envelope_;  // bounds of |F'|, |F''| for the scan's step control
-  double flange_apex_ = 0;
+  double flange_apex_ = 0;  // wheel profile coordinate of the flange apex [m]
 };
 
 }  // namespace wrc

@@ -5,6 +5,7 @@
 #include "core/geometry/track_table.hpp"
 #include "core/identity/sha256.hpp"
 #include "core/numerics/number_text.hpp"
+#include "core/profile/builtin_profiles.hpp"
 #include "core/profile/profile_file_bytes.hpp"
 
 namespace wrc {
@@ -28,9 +29,9 @@ std::string canonical_parameter(const std::string& spec, const std::string& pref
 // or the bytes of a file.
 std::string profile_content(const char* field, const std::string& spec) {
   const std::string head = std::string(field) + " ";
-  if (spec == "S1002" || spec == "UIC60" || spec == "UIC60-MB") return head + "builtin " + spec + "\n";
-  if (starts_with(spec, "conic:")) return head + "builtin " + canonical_parameter(spec, "conic:") + "\n";
-  if (starts_with(spec, "circle:")) return head + "builtin " + canonical_parameter(spec, "circle:") + "\n";
+  if (find_builtin_profile(spec)) return head + "builtin " + spec + "\n";
+  for (const char* prefix : {kConicPrefix, kCirclePrefix})
+    if (starts_with(spec, prefix)) return head + "builtin " + canonical_parameter(spec, prefix) + "\n";
   const std::string bytes = read_profile_file_bytes(spec);
   return head + "file " + std::to_string(bytes.size()) + "\n" + bytes + "\n";
 }

@@ -2,6 +2,8 @@
 
 #include <openssl/evp.h>
 
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 
 namespace wrc {
@@ -25,5 +27,16 @@ std::string sha256_hex(const void* data, std::size_t size) {
 }
 
 std::string sha256_hex(const std::string& text) { return sha256_hex(text.data(), text.size()); }
+
+std::string sha256_hex_of_doubles(const std::vector<double>& values) {
+  std::vector<unsigned char> bytes;
+  bytes.reserve(8 * values.size());
+  for (double value : values) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    for (int i = 0; i < 8; ++i) bytes.push_back(static_cast<unsigned char>(bits >> (8 * i)));
+  }
+  return sha256_hex(bytes.data(), bytes.size());
+}
 
 }  // namespace wrc

@@ -1,5 +1,6 @@
 #include "core/model_interface/query_validation.hpp"
 
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -10,66 +11,131 @@
 namespace wrc {
 namespace {
 
-[[noreturn]] void reject(const char* field, double value, const char* rule) {
-  std::ostringstream msg;
-  msg << "contact query: " << field << " = " << value << " " << rule;
-  throw std::invalid_argument(msg.str());
-}
-
 std::string text(double value) {
   std::ostringstream out;
   out << value;
   return out.str();
 }
 
-void require_finite(double value, const char* field) {
-  if (!std::isfinite(value)) reject(field, value, "must be finite");
+bool keeps(const QueryRule& rule, double v) {
+  switch (rule.kind) {
+    case QueryRuleKind::kFinite: return std::isfinite(v);
+    case QueryRuleKind::kClosed: return std::isfinite(v) && v >= rule.low && v <= rule.high;
+    case QueryRuleKind::kOpen: return std::isfinite(v) && v > rule.low && v < rule.high;
+    case QueryRuleKind::kPositive: return std::isfinite(v) && v > 0.0 && v <= rule.high;
+    case QueryRuleKind::kNanOrClosed: return std::isnan(v) || (v >= rule.low && v <= rule.high);
+    case QueryRuleKind::kCount: return v >= rule.low && v <= rule.high;
+  }
+  return false;
+}
+
+bool is_load(QueryField field) {
+  return field == QueryField::kNormalLoadLeft || field == QueryField::kNormalLoadRight ||
+         field == QueryField::kSecondNormalLoadLeft || field == QueryField::kSecondNormalLoadRight;
+}
+
+// The library's wording of a broken rule (after "<field> [unit] = <value> ").
+std::string library_rule_text(const QueryRule& rule, double v) {
+  switch (rule.kind) {
+    case QueryRuleKind::kFinite: return "must be finite";
+    case QueryRuleKind::kClosed:
+      if (rule.field == QueryField::kPoseYaw && std::isfinite(v))
+        return "is beyond the validated range +-" + text(rule.high) + " rad of the contact geometry";
+      if (is_load(rule.field) && !(v > rule.high)) return "must be non-negative and finite";
+      if (!std::isfinite(v)) return "must be finite";
+      return "must be in [" + text(rule.low) + ", " + text(rule.high) + "]";
+    case QueryRuleKind::kOpen: return "must be in (" + text(rule.low) + ", " + text(rule.high) + ")";
+    case QueryRuleKind::kPositive: return "must be in (0, " + text(rule.high) + "]";
+    case QueryRuleKind::kNanOrClosed:
+      return "must be NaN (none) or in [" + text(rule.low) + ", " + text(rule.high) + "]";
+    case QueryRuleKind::kCount:
+      if (rule.field == QueryField::kFormulation) return "is not kRigid or kElastic";
+      return "must be in " + text(rule.low) + ".." + text(rule.high);
+  }
+  return "is invalid";
 }
 
 }  // namespace
 
-void validate_contact_query(const ContactQuery& q) {
-  require_finite(q.pose.y, "pose.y [m]");
-  require_finite(q.pose.z, "pose.z [m]");
-  require_finite(q.pose.roll, "pose.roll [rad]");
-  require_finite(q.pose.yaw, "pose.yaw [rad]");
-  if (std::fabs(q.pose.yaw) > kMaxValidatedYaw)
-    reject("pose.yaw [rad]", q.pose.yaw, "is beyond the validated range +-0.06 rad of the contact geometry");
-  require_finite(q.pose.x, "pose.x [m]");
-  require_finite(q.y_dot, "y_dot [m/s]");
-  require_finite(q.z_dot, "z_dot [m/s]");
-  require_finite(q.roll_dot, "roll_dot [rad/s]");
-  require_finite(q.yaw_dot, "yaw_dot [rad/s]");
-  require_finite(q.spin_rate, "spin_rate [rad/s]");
-  if (!(q.speed > 0.0 && q.speed <= kMaxSpeed)) reject("speed [m/s]", q.speed, ("must be in (0, " + text(kMaxSpeed) + "]").c_str());
-  if (!(q.normal_load[0] >= 0.0) || !std::isfinite(q.normal_load[0]))
-    reject("normal_load[0] (left) [N]", q.normal_load[0], "must be non-negative and finite");
-  if (!(q.normal_load[1] >= 0.0) || !std::isfinite(q.normal_load[1]))
-    reject("normal_load[1] (right) [N]", q.normal_load[1], "must be non-negative and finite");
-  if (!(q.second_normal_load[0] >= 0.0) || !std::isfinite(q.second_normal_load[0]))
-    reject("second_normal_load[0] (left) [N]", q.second_normal_load[0], "must be non-negative and finite");
-  if (!(q.second_normal_load[1] >= 0.0) || !std::isfinite(q.second_normal_load[1]))
-    reject("second_normal_load[1] (right) [N]", q.second_normal_load[1], "must be non-negative and finite");
-  if (std::isinf(q.second_tracked_s_wheel[0]))
-    reject("second_tracked_s_wheel[0] (left) [m]", q.second_tracked_s_wheel[0], "must be finite or NaN (none)");
-  if (std::isinf(q.second_tracked_s_wheel[1]))
-    reject("second_tracked_s_wheel[1] (right) [m]", q.second_tracked_s_wheel[1], "must be finite or NaN (none)");
-  if (q.formulation != ContactFormulation::kRigid && q.formulation != ContactFormulation::kElastic)
-    reject("formulation", static_cast<double>(q.formulation), "is not kRigid or kElastic");
-  const ContactMaterial& m = q.material;
-  if (!(m.shear_modulus > 0.0 && m.shear_modulus <= kMaxShearModulus))
-    reject("material.shear_modulus [Pa]", m.shear_modulus, ("must be in (0, " + text(kMaxShearModulus) + "]").c_str());
-  if (!(m.poisson_ratio > kMinPoissonRatio && m.poisson_ratio < kMaxPoissonRatio))
-    reject("material.poisson_ratio [-]", m.poisson_ratio,
-           ("must be in (" + text(kMinPoissonRatio) + ", " + text(kMaxPoissonRatio) + ")").c_str());
-  if (!(m.friction >= 0.0 && m.friction <= kMaxFriction))
-    reject("material.friction [-]", m.friction, ("must be in [0, " + text(kMaxFriction) + "]").c_str());
-  auto check_grid = [](const char* field, int count) {
-    if (count >= kMinFastsimGrid && count <= kMaxFastsimGrid) return;
-    reject(field, count, ("must be in " + std::to_string(kMinFastsimGrid) + ".." + std::to_string(kMaxFastsimGrid)).c_str());
+std::optional<QueryViolation> find_query_violation(const ContactQuery& q) {
+  using F = QueryField;
+  using K = QueryRuleKind;
+  const double tracked = kMaxTrackedProfileCoordinate;
+  const struct {
+    QueryRule rule;
+    double value;
+  } fields[] = {
+      {{F::kPoseY, K::kClosed, -kMaxLateralShift, kMaxLateralShift, "m"}, q.pose.y},
+      {{F::kPoseZ, K::kClosed, -kMaxHeight, kMaxHeight, "m"}, q.pose.z},
+      {{F::kPoseRoll, K::kClosed, -kMaxRoll, kMaxRoll, "rad"}, q.pose.roll},
+      {{F::kPoseYaw, K::kClosed, -kMaxValidatedYaw, kMaxValidatedYaw, "rad"}, q.pose.yaw},
+      {{F::kPoseX, K::kFinite, -DBL_MAX, DBL_MAX, "m"}, q.pose.x},
+      {{F::kYDot, K::kClosed, -kMaxPoseRate, kMaxPoseRate, "m/s"}, q.y_dot},
+      {{F::kZDot, K::kClosed, -kMaxPoseRate, kMaxPoseRate, "m/s"}, q.z_dot},
+      {{F::kRollDot, K::kClosed, -kMaxPoseRate, kMaxPoseRate, "rad/s"}, q.roll_dot},
+      {{F::kYawDot, K::kClosed, -kMaxPoseRate, kMaxPoseRate, "rad/s"}, q.yaw_dot},
+      {{F::kSpinRate, K::kClosed, -kMaxSpinRate, kMaxSpinRate, "rad/s"}, q.spin_rate},
+      {{F::kSpeed, K::kPositive, 0.0, kMaxSpeed, "m/s"}, q.speed},
+      {{F::kNormalLoadLeft, K::kClosed, 0.0, kMaxNormalLoad, "N"}, q.normal_load[0]},
+      {{F::kNormalLoadRight, K::kClosed, 0.0, kMaxNormalLoad, "N"}, q.normal_load[1]},
+      {{F::kSecondNormalLoadLeft, K::kClosed, 0.0, kMaxNormalLoad, "N"}, q.second_normal_load[0]},
+      {{F::kSecondNormalLoadRight, K::kClosed, 0.0, kMaxNormalLoad, "N"}, q.second_normal_load[1]},
+      {{F::kTrackedSWheelLeft, K::kNanOrClosed, -tracked, tracked, "m"}, q.tracked_s_wheel[0]},
+      {{F::kTrackedSWheelRight, K::kNanOrClosed, -tracked, tracked, "m"}, q.tracked_s_wheel[1]},
+      {{F::kSecondTrackedSWheelLeft, K::kNanOrClosed, -tracked, tracked, "m"}, q.second_tracked_s_wheel[0]},
+      {{F::kSecondTrackedSWheelRight, K::kNanOrClosed, -tracked, tracked, "m"}, q.second_tracked_s_wheel[1]},
+      {{F::kFormulation, K::kCount, 0.0, 1.0, ""}, static_cast<double>(static_cast<int>(q.formulation))},
+      {{F::kShearModulus, K::kPositive, 0.0, kMaxShearModulus, "Pa"}, q.material.shear_modulus},
+      {{F::kPoissonRatio, K::kOpen, kMinPoissonRatio, kMaxPoissonRatio, "-"}, q.material.poisson_ratio},
+      {{F::kFriction, K::kClosed, 0.0, kMaxFriction, "-"}, q.material.friction},
+      {{F::kFastsimElements, K::kCount, kMinFastsimGrid, kMaxFastsimGrid, ""}, static_cast<double>(q.fastsim_elements)},
+      {{F::kFastsimStrips, K::kCount, kMinFastsimGrid, kMaxFastsimGrid, ""}, static_cast<double>(q.fastsim_strips)},
   };
-  check_grid("fastsim_elements", q.fastsim_elements);
-  check_grid("fastsim_strips", q.fastsim_strips);
+  for (const auto& f : fields)
+    if (!keeps(f.rule, f.value)) return QueryViolation{f.rule, f.value};
+  return std::nullopt;
+}
+
+const char* query_field_name(QueryField field) {
+  switch (field) {
+    case QueryField::kPoseY: return "pose.y";
+    case QueryField::kPoseZ: return "pose.z";
+    case QueryField::kPoseRoll: return "pose.roll";
+    case QueryField::kPoseYaw: return "pose.yaw";
+    case QueryField::kPoseX: return "pose.x";
+    case QueryField::kYDot: return "y_dot";
+    case QueryField::kZDot: return "z_dot";
+    case QueryField::kRollDot: return "roll_dot";
+    case QueryField::kYawDot: return "yaw_dot";
+    case QueryField::kSpinRate: return "spin_rate";
+    case QueryField::kSpeed: return "speed";
+    case QueryField::kNormalLoadLeft: return "normal_load[0] (left)";
+    case QueryField::kNormalLoadRight: return "normal_load[1] (right)";
+    case QueryField::kSecondNormalLoadLeft: return "second_normal_load[0] (left)";
+    case QueryField::kSecondNormalLoadRight: return "second_normal_load[1] (right)";
+    case QueryField::kTrackedSWheelLeft: return "tracked_s_wheel[0] (left)";
+    case QueryField::kTrackedSWheelRight: return "tracked_s_wheel[1] (right)";
+    case QueryField::kSecondTrackedSWheelLeft: return "second_tracked_s_wheel[0] (left)";
+    case QueryField::kSecondTrackedSWheelRight: return "second_tracked_s_wheel[1] (right)";
+    case QueryField::kFormulation: return "formulation";
+    case QueryField::kShearModulus: return "material.shear_modulus";
+    case QueryField::kPoissonRatio: return "material.poisson_ratio";
+    case QueryField::kFriction: return "material.friction";
+    case QueryField::kFastsimElements: return "fastsim_elements";
+    case QueryField::kFastsimStrips: return "fastsim_strips";
+  }
+  return "?";
+}
+
+void validate_contact_query(const ContactQuery& q) {
+  const std::optional<QueryViolation> violation = find_query_violation(q);
+  if (!violation) return;
+  const QueryRule& rule = violation->rule;
+  std::ostringstream msg;
+  msg << "contact query: " << query_field_name(rule.field);
+  if (*rule.unit) msg << " [" << rule.unit << "]";
+  msg << " = " << violation->value << " " << library_rule_text(rule, violation->value);
+  throw std::invalid_argument(msg.str());
 }
 
 }  // namespace wrc

@@ -1,14 +1,15 @@
 #pragma once
 /// @file
-/// Checks a ContactQuery at the model boundary, before any computation.
+/// The one rule a ContactQuery obeys at the model boundary, checked before any computation: which
+/// range each field must lie in. The models check it in-process (validate_contact_query); the bus
+/// adapter (protocol/contact/contact_query_codec.hpp) converts a message and checks the same rule
+/// (find_query_violation), so a query is accepted or rejected alike in-process and over the bus.
+
+#include <optional>
 
 #include "core/model_interface/contact_model.hpp"
 
 namespace wrc {
-
-// The limits below are the one source of these rules: the bus adapter (services/contactd) checks
-// its message fields against the same constants, so a query is accepted or rejected alike in-process
-// and over the bus.
 
 /// Smallest and largest FASTSIM element count accepted per direction (elements per strip and
 /// strips) [-], both included.
@@ -26,12 +27,71 @@ inline constexpr double kMaxFriction = 10.0;
 /// Rolling speed: positive, at most this [m/s].
 inline constexpr double kMaxSpeed = 1000.0;
 
-/// Throws std::invalid_argument whose message names the field and its value when:
-/// any pose value or rate is NaN or infinite; speed not in (0, kMaxSpeed]; a normal load is
-/// negative or not finite; G not in (0, kMaxShearModulus]; nu not in (kMinPoissonRatio,
-/// kMaxPoissonRatio); mu not in [0, kMaxFriction]; a FASTSIM count outside
-/// kMinFastsimGrid..kMaxFastsimGrid. Loads are checked in both formulations (kElastic ignores them,
-/// but a NaN is still an error).
+// The ranges of a wheelset that is on a track at all; whether a wheel touches its rail there is
+// for the model to say (ContactConfigurationError).
+/// |pose.y| and |pose.roll| at most this [m], [rad].
+inline constexpr double kMaxLateralShift = 0.5;
+inline constexpr double kMaxRoll = 0.5;
+/// |pose.z| at most this [m].
+inline constexpr double kMaxHeight = 10.0;
+/// |y_dot|, |z_dot| [m/s] and |roll_dot|, |yaw_dot| [rad/s] at most this.
+inline constexpr double kMaxPoseRate = 100.0;
+/// |spin_rate| at most this [rad/s] (1000 m/s on a 0.1 m wheel).
+inline constexpr double kMaxSpinRate = 1e4;
+/// A normal load (either point of either wheel): from 0 up to this [N] (600 times a wheel's static
+/// load; kElastic ignores the loads, but a bad one is still an error).
+inline constexpr double kMaxNormalLoad = 1e8;
+/// |tracked_s_wheel| and |second_tracked_s_wheel| at most this, or NaN (none) [m].
+inline constexpr double kMaxTrackedProfileCoordinate = 1.0;
+
+/// A field of a ContactQuery that has a rule.
+enum class QueryField {
+  kPoseY, kPoseZ, kPoseRoll, kPoseYaw, kPoseX,
+  kYDot, kZDot, kRollDot, kYawDot, kSpinRate, kSpeed,
+  kNormalLoadLeft, kNormalLoadRight, kSecondNormalLoadLeft, kSecondNormalLoadRight,
+  kTrackedSWheelLeft, kTrackedSWheelRight, kSecondTrackedSWheelLeft, kSecondTrackedSWheelRight,
+  kFormulation, kShearModulus, kPoissonRatio, kFriction, kFastsimElements, kFastsimStrips,
+};
+
+/// What a field's value must be.
+enum class QueryRuleKind {
+  kFinite,      ///< any finite value
+  kClosed,      ///< finite, in [low, high]
+  kOpen,        ///< finite, in (low, high)
+  kPositive,    ///< finite, in (0, high] (low is 0)
+  kNanOrClosed, ///< NaN (none) or in [low, high]
+  kCount,       ///< a whole number in low..high (FASTSIM grid; formulation: 0 kRigid, 1 kElastic)
+};
+
+/// The rule of one field.
+struct QueryRule {
+  QueryField field;
+  QueryRuleKind kind;
+  double low = 0;
+  double high = 0;
+  const char* unit = "";  ///< SI unit of the field ("-" for a ratio, "" for a count)
+};
+
+/// A field that breaks its rule, with its value.
+struct QueryViolation {
+  QueryRule rule;
+  double value = 0;
+};
+
+/// The first field of query (in QueryField order) that breaks its rule, nothing when every field
+/// keeps it.
+std::optional<QueryViolation> find_query_violation(const ContactQuery& query);
+
+/// The field's name in the library ("pose.y", "normal_load[0] (left)", "material.friction").
+const char* query_field_name(QueryField field);
+
+/// Throws std::invalid_argument "contact query: <field> [unit] = <value> <rule>" for the first
+/// violation (find_query_violation): any pose value or rate NaN, infinite or outside its range
+/// above; speed not in (0, kMaxSpeed]; a normal load negative, not finite or above
+/// kMaxNormalLoad; a tracked coordinate infinite or beyond kMaxTrackedProfileCoordinate; G not in
+/// (0, kMaxShearModulus]; nu not in (kMinPoissonRatio, kMaxPoissonRatio); mu not in
+/// [0, kMaxFriction]; a FASTSIM count outside kMinFastsimGrid..kMaxFastsimGrid; a formulation that
+/// is neither kRigid nor kElastic. Loads are checked in both formulations.
 void validate_contact_query(const ContactQuery& query);
 
 }  // namespace wrc

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/geometry/contact_point_fields.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
 #include "core/model_interface/contact_model.hpp"
 #include "core/models/flange_climb.hpp"
@@ -14,10 +15,9 @@
 namespace wrc {
 namespace {
 
+// The table's fields: the contact point's (ContactPointField order), then the distance's two.
 enum Field {
-  kS, kSRail, kTheta, kRx, kRy, kRz, kRailZ, kAngle, kRadius, kNx, kNy, kNz, kWheelLateral, kWheelRolling,
-  kRailLateral, kRailRolling, kDistanceCurvature,
-  kMonotoneFields,            // the fields above: monotone slopes in y, monotone Hermite in delta
+  kMonotoneFields = kContactPointFieldCount,  // the point's: monotone slopes in y, monotone Hermite in delta
   kDistance0 = kMonotoneFields,  // distance at z = 0: exact y slope, Hermite in delta with kDistanceRoll
   kDistanceRoll,              // d distance / droll (exact at the nodes): monotone slopes in y
   kFieldCount
@@ -119,7 +119,7 @@ WheelsetPose with_roll(double y, double z, double roll, double yaw) {
 
 }  // namespace
 
-static_assert(kFieldCount == 19, "ContactPointTable::kFields must match the field list");
+static_assert(kFieldCount == kContactPointFieldCount + 2, "ContactPointTable::kFields must match the field list");
 
 ContactPointTable::ContactPointTable(const WheelsetGeometry& geometry, const InterpolationGrid& grid,
                                      const PotentialPointSearch& search)
@@ -165,14 +165,11 @@ ContactPointTable::ContactPointTable(const WheelsetGeometry& geometry, const Int
                                             " (reduce the table's y_max, roll_band or yaw_max)");
           }
           const Eigen::Vector4d g = vertical_gap_gradient(p, pose);
-          const Eigen::Vector3d r = p.wheel_point - Eigen::Vector3d(pose.x, pose.y, pose.z);
-          const double fields[kFields] = {p.s, p.s_rail, p.theta, r.x(), r.y(), r.z(), p.rail_point.z(),
-                                          p.contact_angle, p.rolling_radius, p.normal.x(), p.normal.y(),
-                                          p.normal.z(), p.wheel_curvature_lateral, p.wheel_curvature_rolling,
-                                          p.rail_curvature_lateral, p.rail_curvature_rolling, p.distance_curvature,
-                                          p.distance - z_ref, g[2]};
+          const ContactPointFields fields = contact_point_fields(p, pose);
           double* node = &v[offset(k, j, i)];
-          std::copy(fields, fields + kFields, node);
+          std::copy(fields.begin(), fields.end(), node);
+          node[kDistance0] = p.distance - z_ref;
+          node[kDistanceRoll] = g[2];
           // The distance's exact slope along y at fixed delta (envelope gradient).
           node[kFields + kDistance0] = g[0] + g[2] * roll_slope;
         }
@@ -224,7 +221,7 @@ TableContact ContactPointTable::evaluate(WheelSide side, const WheelsetPose& pos
   const HermiteBasis br(tr, h_r);
 
   const std::vector<double>& v = values_[static_cast<int>(side)];
-  double out[kMonotoneFields] = {};
+  ContactPointFields out{};
   double dist = 0, dist_delta = 0, dist_y = 0, dist_yaw = 0;
   for (int k = 0; k < nk; ++k) {
     // The y interpolants at every roll node of yaw node k (value; for the distance fields also d/dy).
@@ -262,23 +259,7 @@ TableContact ContactPointTable::evaluate(WheelSide side, const WheelsetPose& pos
   }
 
   TableContact c;
-  ContactPoint& p = c.point;
-  p.side = side;
-  p.s = out[kS];
-  p.s_rail = out[kSRail];
-  p.theta = out[kTheta];
-  p.wheel_point = Eigen::Vector3d(pose.x + out[kRx], pose.y + out[kRy], pose.z + out[kRz]);
-  p.rail_point = Eigen::Vector3d(p.wheel_point.x(), p.wheel_point.y(), out[kRailZ]);
-  p.normal = Eigen::Vector3d(out[kNx], out[kNy], out[kNz]).normalized();
-  p.distance = dist + pose.z;
-  p.contact_angle = out[kAngle];
-  p.rolling_radius = out[kRadius];
-  p.wheel_curvature_lateral = out[kWheelLateral];
-  p.wheel_curvature_rolling = out[kWheelRolling];
-  p.rail_curvature_lateral = out[kRailLateral];
-  p.rail_curvature_rolling = out[kRailRolling];
-  p.distance_curvature = out[kDistanceCurvature];
-  p.is_minimum = true;
+  c.point = contact_point_from_fields(out, side, pose, dist + pose.z);
   // distance = z + D(y, roll - phi_r(y, yaw), yaw).
   c.gap_gradient = Eigen::Vector4d(dist_y - dist_delta * roll_r_y, 1.0, dist_delta, dist_yaw - dist_delta * roll_r_yaw);
   return c;

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "core/geometry/contact_point.hpp"
+#include "core/geometry/contact_point_fields.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
 #include "core/model_interface/contact_model_options.hpp"
 
@@ -43,9 +44,8 @@ struct TableContact {
 /// gap_R = 0 is solved exactly by roll = phi_r(y, yaw) and z = -D(y, 0, yaw): the rigid height is
 /// exact at the nodes and a C1 interpolant of it in between.
 ///
-/// The other parameters (s, s_rail, theta, the wheel point relative to the wheelset centre, rail
-/// height, contact angle, rolling radius, normal renormalised, the four principal curvatures,
-/// distance_curvature): cubic Hermite with monotone (Fritsch-Carlson) slopes in y and in delta
+/// The other parameters (the contact point's fields, core/geometry/contact_point_fields.hpp; the
+/// normal renormalised): cubic Hermite with monotone (Fritsch-Carlson) slopes in y and in delta
 /// (held beyond the band), Lagrange in yaw; exact at the nodes, without overshoot at the common
 /// point's jumps, which are thereby smoothed over one y cell (Arnold, section 3). The
 /// interpolated point is always marked a local minimum.
@@ -87,9 +87,9 @@ class ContactPointTable {
   std::vector<double> data() const;
 
  private:
-  /// Per-node fields: 17 interpolated with monotone slopes, then the distance at z = 0 and its
-  /// roll derivative.
-  static constexpr int kFields = 19;
+  /// Per-node fields: the contact point's (ContactPointField order) interpolated with monotone
+  /// slopes, then the distance at z = 0 and its roll derivative.
+  static constexpr int kFields = kContactPointFieldCount + 2;
   static double node(int i, int count, double half_range) {
     return -half_range + 2.0 * half_range * i / (count - 1);
   }

@@ -23,7 +23,7 @@ namespace wrc {
 class InterpolatedModel final : public HertzianContactModel {
  public:
   /// Builds the table (y_points yaw_points rigid solves and 2 y_points roll_points yaw_points
-  /// common points; ~40 ms for the default 121 x 3 x 3 grid).
+  /// common points; its time: BM_InterpPrecompute, tests/bench/models_bench.cpp).
   /// @throws std::invalid_argument for a null geometry or invalid options; ContactConfigurationError
   ///         when a node of the table has no contact.
   explicit InterpolatedModel(std::shared_ptr<const WheelsetGeometry> geometry, ContactModelOptions options = {});

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/profile/builtin_profiles.hpp"
+
 namespace wrc {
 
 CircleRailProfile::CircleRailProfile(double radius)
@@ -28,7 +30,7 @@ ProfileSide CircleRailProfile::side() const { return ProfileSide::kRail; }
 std::string CircleRailProfile::name() const {
   std::ostringstream out;
   out.precision(17);
-  out << "circle:" << radius_;
+  out << kCirclePrefix << radius_;
   return out.str();
 }
 

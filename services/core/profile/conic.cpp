@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/profile/builtin_profiles.hpp"
+
 namespace wrc {
 namespace {
 constexpr double kHalfWidth = 0.06;
@@ -24,7 +26,7 @@ ProfileSide ConicProfile::side() const { return ProfileSide::kWheel; }
 std::string ConicProfile::name() const {
   std::ostringstream out;
   out.precision(17);
-  out << "conic:" << slope_;
+  out << kConicPrefix << slope_;
   return out.str();
 }
 

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/numerics/tridiagonal.hpp"
+
 namespace wrc {
 namespace {
 
@@ -26,42 +28,27 @@ CubicSpline::CubicSpline(std::vector<double> x, const std::vector<double>& y) : 
       throw std::invalid_argument("cubic spline: knots must be strictly increasing");
     }
   }
-  // Second derivatives m_i: m_0 and m_{n-1} given, interior rows
-  // h_{i-1} m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_i m_{i+1} = 6 (d_i - d_{i-1}) (Thomas algorithm).
+  // Second derivatives m_i: m_0 and m_{n-1} given, interior rows i = 1..n-2
+  // h_{i-1} m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_i m_{i+1} = 6 (d_i - d_{i-1}), a tridiagonal system.
   std::vector<double> m(n, 0.0);
   m[0] = parabola_second_derivative(x_[0], y[0], x_[1], y[1], x_[2], y[2]);
   m[n - 1] = parabola_second_derivative(x_[n - 3], y[n - 3], x_[n - 2], y[n - 2], x_[n - 1],
                                         y[n - 1]);
-  if (n > 3) {
-    const std::size_t k = n - 2;  // unknowns m_1 .. m_{n-2}
-    std::vector<double> diag(k), upper(k), rhs(k);
-    for (std::size_t j = 0; j < k; ++j) {
-      const std::size_t i = j + 1;
-      const double h0 = x_[i] - x_[i - 1];
-      const double h1 = x_[i + 1] - x_[i];
-      diag[j] = 2.0 * (h0 + h1);
-      upper[j] = h1;
-      rhs[j] = 6.0 * ((y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0);
-      if (j == 0) rhs[j] -= h0 * m[0];
-      if (j == k - 1) rhs[j] -= h1 * m[n - 1];
-    }
-    for (std::size_t j = 1; j < k; ++j) {
-      const double lower = x_[j + 1] - x_[j];  // h_{i-1} for row i = j + 1
-      const double w = lower / diag[j - 1];
-      diag[j] -= w * upper[j - 1];
-      rhs[j] -= w * rhs[j - 1];
-    }
-    m[k] = rhs[k - 1] / diag[k - 1];
-    for (std::size_t j = k - 1; j-- > 0;) {
-      m[j + 1] = (rhs[j] - upper[j] * m[j + 2]) / diag[j];
-    }
-  } else {
-    // Three knots: the single interior equation.
-    const double h0 = x_[1] - x_[0];
-    const double h1 = x_[2] - x_[1];
-    m[1] = (6.0 * ((y[2] - y[1]) / h1 - (y[1] - y[0]) / h0) - h0 * m[0] - h1 * m[2]) /
-           (2.0 * (h0 + h1));
+  const std::size_t unknowns = n - 2;  // m_1 .. m_{n-2}
+  std::vector<double> lower(unknowns), diag(unknowns), upper(unknowns), rhs(unknowns);
+  for (std::size_t j = 0; j < unknowns; ++j) {
+    const std::size_t i = j + 1;
+    const double h0 = x_[i] - x_[i - 1];
+    const double h1 = x_[i + 1] - x_[i];
+    lower[j] = h0;
+    diag[j] = 2.0 * (h0 + h1);
+    upper[j] = h1;
+    rhs[j] = 6.0 * ((y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0);
+    if (j == 0) rhs[j] -= h0 * m[0];
+    if (j == unknowns - 1) rhs[j] -= h1 * m[n - 1];
   }
+  const std::vector<double> interior = solve_tridiagonal(lower, std::move(diag), upper, std::move(rhs));
+  std::copy(interior.begin(), interior.end(), m.begin() + 1);
   coefficients_.resize(4 * (n - 1));
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const double h = x_[i + 1] - x_[i];

@@ -1,17 +1,18 @@
 #include "core/profile/profile_factory.hpp"
 
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <optional>
 
 #include "core/numerics/number_text.hpp"
 
+#include "core/profile/builtin_profiles.hpp"
 #include "core/profile/circle_rail.hpp"
 #include "core/profile/conic.hpp"
 #include "core/profile/profile_error.hpp"
 #include "core/profile/profile_file.hpp"
-#include "core/profile/s1002.hpp"
-#include "core/profile/uic60.hpp"
 
 namespace wrc {
 namespace {
@@ -42,22 +43,17 @@ bool starts_with(const std::string& text, const std::string& prefix) {
 
 ProfilePtr make_profile(const std::string& spec, ProfileSide side,
                         const ProfileFileOptions& options) {
-  if (spec == "S1002") {
+  if (const BuiltinProfile* builtin = find_builtin_profile(spec)) {
+    require_side(spec, side, builtin->side);
+    return builtin->make();
+  }
+  if (starts_with(spec, kConicPrefix)) {
     require_side(spec, side, ProfileSide::kWheel);
-    return std::make_shared<S1002Profile>();
+    return std::make_shared<ConicProfile>(parse_parameter(spec, std::strlen(kConicPrefix)));
   }
-  if (spec == "UIC60" || spec == "UIC60-MB") {
+  if (starts_with(spec, kCirclePrefix)) {
     require_side(spec, side, ProfileSide::kRail);
-    return std::make_shared<Uic60Profile>(spec == "UIC60" ? Uic60Variant::kEn60E1
-                                                          : Uic60Variant::kManchester);
-  }
-  if (starts_with(spec, "conic:")) {
-    require_side(spec, side, ProfileSide::kWheel);
-    return std::make_shared<ConicProfile>(parse_parameter(spec, 6));
-  }
-  if (starts_with(spec, "circle:")) {
-    require_side(spec, side, ProfileSide::kRail);
-    const double radius = parse_parameter(spec, 7);
+    const double radius = parse_parameter(spec, std::strlen(kCirclePrefix));
     if (radius <= 0.0) {
       throw ProfileError(spec, 0, "the circle radius must be positive [m]");
     }

@@ -10,8 +10,7 @@
 namespace wrc {
 
 /// Builds the profile named by spec for the given side:
-/// - "S1002" (wheel): analytic S1002;
-/// - "UIC60" (rail): EN 60E1 construction; "UIC60-MB" (rail): Manchester variant (R80 at 7.7 mm);
+/// - a built-in name of core/profile/builtin_profiles.hpp ("S1002", "UIC60", "UIC60-MB");
 /// - "conic:<slope>" (wheel): cone F(s) = -slope*s, slope [-];
 /// - "circle:<radius>" (rail): circular head, radius [m] (> 0);
 /// - anything else: a profile file path (see profile_file.hpp for formats), read with options

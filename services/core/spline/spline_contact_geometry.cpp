@@ -190,26 +190,11 @@ void SplineContactGeometry::evaluate(WheelSide side, const WheelsetPose& pose, S
 
 ContactPoint SplineContactGeometry::contact_point(WheelSide side, const WheelsetPose& pose,
                                                   const SplineEvaluation& e) const {
-  const auto& v = e.value;
-  ContactPoint p;
-  p.side = side;
-  p.s = v[kFieldSWheel];
-  p.s_rail = v[kFieldSRail];
-  p.theta = v[kFieldTheta];
-  p.wheel_point = Eigen::Vector3d(pose.x + v[kFieldWheelX], pose.y + v[kFieldWheelY], pose.z + v[kFieldWheelZ]);
-  p.distance = pose.z - v[kFieldZ];
+  ContactPointFields fields;
+  for (int k = 0; k < kContactPointFieldCount; ++k)
+    fields[static_cast<size_t>(k)] = e.value[kSplineFieldOfPointField[static_cast<size_t>(k)]];
   // The rail point lies vertically below the wheel point; its fitted height is that at z_touch.
-  p.rail_point = Eigen::Vector3d(p.wheel_point.x(), p.wheel_point.y(), v[kFieldRailZ]);
-  p.normal = Eigen::Vector3d(v[kFieldNormalX], v[kFieldNormalY], v[kFieldNormalZ]).normalized();
-  p.contact_angle = v[kFieldContactAngle];
-  p.rolling_radius = v[kFieldRollingRadius];
-  p.wheel_curvature_lateral = v[kFieldWheelCurvatureLateral];
-  p.wheel_curvature_rolling = v[kFieldWheelCurvatureRolling];
-  p.rail_curvature_lateral = v[kFieldRailCurvatureLateral];
-  p.rail_curvature_rolling = v[kFieldRailCurvatureRolling];
-  p.distance_curvature = v[kFieldDistanceCurvature];
-  p.is_minimum = true;
-  return p;
+  return contact_point_from_fields(fields, side, pose, pose.z - e.value[kFieldZ]);
 }
 
 PatchShape SplineContactGeometry::patch_shape(const SplineEvaluation& e) const {
@@ -245,7 +230,7 @@ std::string SplineContactGeometry::data_hash() const {
         for (Eigen::Index i = 0; i < c.rows(); ++i) data.push_back(c(i, j));
     }
   }
-  return sha256_hex(data.data(), data.size() * sizeof(double));  // x86-64 and AArch64: little-endian
+  return sha256_hex_of_doubles(data);
 }
 
 }  // namespace wrc

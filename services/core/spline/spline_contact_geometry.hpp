@@ -107,7 +107,8 @@ class SplineContactGeometry {
 
   /// SHA-256 of the model data: the transition, then per wheel its jump surfaces' coefficients
   /// and per branch and variable the degree and breakpoints, then every coefficient
-  /// (function-major), as little-endian doubles (heartbeat_t.model_hash).
+  /// (function-major), as little-endian doubles on every host (sha256_hex_of_doubles;
+  /// heartbeat_t.model_hash).
   std::string data_hash() const;
 
   const SplineWheel& wheel(WheelSide side) const { return wheels_[static_cast<size_t>(side)]; }

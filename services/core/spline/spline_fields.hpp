@@ -5,6 +5,8 @@
 
 #include <array>
 
+#include "core/geometry/contact_point_fields.hpp"
+
 namespace wrc {
 
 /// Index of a fitted quantity. All are functions of the wheelset's lateral shift y [m], roll
@@ -50,6 +52,16 @@ enum SplineField : int {
 
 /// The fields a contact query evaluates (the others complete ContactPoint for reports).
 inline constexpr int kSplineQueryFieldCount = kFieldTheta;
+
+/// The fitted quantity of each contact point field (core/geometry/contact_point_fields.hpp), in
+/// ContactPointField order: the sample stores a point's fields there and the evaluation rebuilds
+/// the point from them.
+inline constexpr std::array<SplineField, kContactPointFieldCount> kSplineFieldOfPointField{{
+    kFieldSWheel, kFieldSRail, kFieldTheta, kFieldWheelX, kFieldWheelY, kFieldWheelZ, kFieldRailZ,
+    kFieldContactAngle, kFieldRollingRadius, kFieldNormalX, kFieldNormalY, kFieldNormalZ,
+    kFieldWheelCurvatureLateral, kFieldWheelCurvatureRolling, kFieldRailCurvatureLateral,
+    kFieldRailCurvatureRolling, kFieldDistanceCurvature,
+}};
 
 /// Name (as in the model file, the report and spline_model_t) and SI unit of a fitted quantity.
 struct SplineFieldInfo {

@@ -1,10 +1,11 @@
 #include "protocol/contact/contact_query_codec.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <exception>
+#include <optional>
 #include <stdexcept>
 
-#include "core/geometry/wheelset_geometry.hpp"
 #include "core/model_interface/query_validation.hpp"
 #include "core/numerics/number_text.hpp"
 #include "wrc/contact_reply_t.hpp"
@@ -13,80 +14,69 @@ namespace wrc::protocol {
 
 namespace {
 
-/// "" when value is finite and in [lo, hi], else "<name> = <value> is ...".
-std::string check_range(const std::string& name, double value, double lo, double hi, const char* unit) {
-  if (!std::isfinite(value)) return name + " = " + number_text(value) + " is not a finite number";
-  if (value < lo || value > hi) {
-    return name + " = " + number_text(value) + " is outside [" + number_text(lo) + ", " + number_text(hi) +
-           "] " + unit;
+// The message field of a library query field: its name, and whether it belongs to the whole
+// query (material, speed, grid) rather than to each configuration.
+struct MessageField {
+  const char* name;
+  bool per_configuration;
+};
+
+MessageField message_field(QueryField field) {
+  switch (field) {
+    case QueryField::kPoseY: return {"y", true};
+    case QueryField::kPoseZ: return {"z", true};
+    case QueryField::kPoseRoll: return {"roll", true};
+    case QueryField::kPoseYaw: return {"yaw", true};
+    case QueryField::kPoseX: return {"x", true};  // not on the bus (always 0)
+    case QueryField::kYDot: return {"y_dot", true};
+    case QueryField::kZDot: return {"z_dot", true};
+    case QueryField::kRollDot: return {"roll_dot", true};
+    case QueryField::kYawDot: return {"yaw_dot", true};
+    case QueryField::kSpinRate: return {"spin_rate", true};
+    case QueryField::kSpeed: return {"speed", false};
+    case QueryField::kNormalLoadLeft: return {"normal_load_left", true};
+    case QueryField::kNormalLoadRight: return {"normal_load_right", true};
+    case QueryField::kSecondNormalLoadLeft: return {"second_normal_load_left", true};
+    case QueryField::kSecondNormalLoadRight: return {"second_normal_load_right", true};
+    case QueryField::kTrackedSWheelLeft: return {"tracked_s_wheel_left", true};
+    case QueryField::kTrackedSWheelRight: return {"tracked_s_wheel_right", true};
+    case QueryField::kSecondTrackedSWheelLeft: return {"second_tracked_s_wheel_left", true};
+    case QueryField::kSecondTrackedSWheelRight: return {"second_tracked_s_wheel_right", true};
+    case QueryField::kFormulation: return {"formulation", false};
+    case QueryField::kShearModulus: return {"shear_modulus", false};
+    case QueryField::kPoissonRatio: return {"poisson_ratio", false};
+    case QueryField::kFriction: return {"friction", false};
+    case QueryField::kFastsimElements: return {"fastsim_elements", false};
+    case QueryField::kFastsimStrips: return {"fastsim_strips", false};
   }
-  return {};
+  return {"?", false};
 }
 
-std::string check_positive(const std::string& name, double value, double hi, const char* unit) {
-  if (std::string why = check_range(name, value, 0.0, hi, unit); !why.empty()) return why;
-  if (!(value > 0.0)) return name + " = " + number_text(value) + " is not positive";
-  return {};
-}
-
-/// "" when value is finite and in the open interval (lo, hi), else "<name> = <value> is ...".
-std::string check_open(const std::string& name, double value, double lo, double hi, const char* unit) {
-  if (!std::isfinite(value)) return name + " = " + number_text(value) + " is not a finite number";
-  if (!(value > lo && value < hi)) {
-    return name + " = " + number_text(value) + " is outside (" + number_text(lo) + ", " + number_text(hi) +
-           ") " + unit;
+// The adapter's wording of a broken rule: "<name> = <value> is ...", with the bounds in the
+// field's unit.
+std::string describe(const std::string& name, const QueryViolation& violation) {
+  const QueryRule& rule = violation.rule;
+  const double v = violation.value;
+  const std::string head = name + " = " + number_text(v);
+  const std::string unit = *rule.unit == '\0' ? "" : std::string(" ") + (std::strcmp(rule.unit, "-") == 0 ? "[-]" : rule.unit);
+  const std::string closed = "[" + number_text(rule.low) + ", " + number_text(rule.high) + "]" + unit;
+  switch (rule.kind) {
+    case QueryRuleKind::kFinite: return head + " is not a finite number";
+    case QueryRuleKind::kClosed:
+    case QueryRuleKind::kNanOrClosed:
+    case QueryRuleKind::kCount:
+      if (std::isinf(v) || (std::isnan(v) && rule.kind == QueryRuleKind::kClosed)) return head + " is not a finite number";
+      return head + " is outside " + closed;
+    case QueryRuleKind::kOpen:
+      if (!std::isfinite(v)) return head + " is not a finite number";
+      return head + " is outside (" + number_text(rule.low) + ", " + number_text(rule.high) + ")" + unit;
+    case QueryRuleKind::kPositive:
+      if (!std::isfinite(v)) return head + " is not a finite number";
+      if (v < 0.0 || v > rule.high) return head + " is outside [0, " + number_text(rule.high) + "]" + unit;
+      return head + " is not positive";
   }
-  return {};
+  return head + " is invalid";
 }
-
-/// "" when count is in [kMinFastsimGrid, kMaxFastsimGrid] (the library's limits).
-std::string check_grid(const char* name, std::int32_t count) {
-  if (count >= wrc::kMinFastsimGrid && count <= wrc::kMaxFastsimGrid) return {};
-  return std::string(name) + " = " + std::to_string(count) + " is outside [" + std::to_string(wrc::kMinFastsimGrid) +
-         ", " + std::to_string(wrc::kMaxFastsimGrid) + "]";
-}
-
-std::string validate_configuration(const wrc::wheelset_configuration_t& c, int i, bool rigid) {
-  struct Field {
-    const char* name;
-    double value;
-    double lo, hi;
-    const char* unit;
-  };
-  // Ranges of a wheelset that is on a track at all; whether a wheel touches its rail there is
-  // for the model to say (IMPOSSIBLE_CONFIGURATION).
-  const Field fields[] = {
-      {"y", c.y, -0.5, 0.5, "m"},
-      {"z", c.z, -10.0, 10.0, "m"},
-      {"roll", c.roll, -0.5, 0.5, "rad"},
-      {"yaw", c.yaw, -wrc::kMaxValidatedYaw, wrc::kMaxValidatedYaw, "rad"},  // validated geometry
-      {"y_dot", c.y_dot, -100.0, 100.0, "m/s"},
-      {"z_dot", c.z_dot, -100.0, 100.0, "m/s"},
-      {"roll_dot", c.roll_dot, -100.0, 100.0, "rad/s"},
-      {"yaw_dot", c.yaw_dot, -100.0, 100.0, "rad/s"},
-      {"spin_rate", c.spin_rate, -1e4, 1e4, "rad/s"},
-      {"normal_load_left", c.normal_load_left, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
-      {"normal_load_right", c.normal_load_right, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
-      {"second_normal_load_left", c.second_normal_load_left, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
-      {"second_normal_load_right", c.second_normal_load_right, rigid ? 0.0 : -1e300, rigid ? 1e8 : 1e300, "N"},
-  };
-  for (const Field& f : fields) {
-    // The field's full name is built only for the message of a bad value (hot path otherwise).
-    if (std::isfinite(f.value) && f.value >= f.lo && f.value <= f.hi) continue;
-    return check_range("configurations[" + std::to_string(i) + "]." + f.name, f.value, f.lo, f.hi, f.unit);
-  }
-  // A tracked branch is a wheel profile coordinate, or NaN for none.
-  const Field tracked[] = {{"tracked_s_wheel_left", c.tracked_s_wheel_left, -1.0, 1.0, "m"},
-                           {"tracked_s_wheel_right", c.tracked_s_wheel_right, -1.0, 1.0, "m"},
-                           {"second_tracked_s_wheel_left", c.second_tracked_s_wheel_left, -1.0, 1.0, "m"},
-                           {"second_tracked_s_wheel_right", c.second_tracked_s_wheel_right, -1.0, 1.0, "m"}};
-  for (const Field& f : tracked) {
-    if (std::isnan(f.value) || (f.value >= f.lo && f.value <= f.hi)) continue;
-    return check_range("configurations[" + std::to_string(i) + "]." + f.name, f.value, f.lo, f.hi, f.unit);
-  }
-  return {};
-}
-
 
 void copy3(const Eigen::Vector3d& from, double to[3]) {
   for (int k = 0; k < 3; ++k) to[k] = from[k];
@@ -117,21 +107,11 @@ WheelConstraint from_constraint_message(const wrc::wheel_constraint_t& w) {
 }  // namespace
 
 std::string validate_query(const wrc::contact_query_t& q) {
+  // What a message alone needs: a known formulation, a batch size in range and as many
+  // configurations as it says. Every value's range is the library's rule (find_query_violation).
   if (q.formulation != wrc::contact_query_t::RIGID && q.formulation != wrc::contact_query_t::ELASTIC) {
     return "formulation = " + std::to_string(q.formulation) + " is neither RIGID (0) nor ELASTIC (1)";
   }
-  // Material, speed and grid limits are the library's (core/model_interface/query_validation.hpp).
-  if (std::string why = check_positive("shear_modulus", q.shear_modulus, wrc::kMaxShearModulus, "Pa"); !why.empty()) {
-    return why;
-  }
-  if (std::string why = check_open("poisson_ratio", q.poisson_ratio, wrc::kMinPoissonRatio, wrc::kMaxPoissonRatio, "[-]");
-      !why.empty()) {
-    return why;
-  }
-  if (std::string why = check_range("friction", q.friction, 0.0, wrc::kMaxFriction, "[-]"); !why.empty()) return why;
-  if (std::string why = check_positive("speed", q.speed, wrc::kMaxSpeed, "m/s"); !why.empty()) return why;
-  if (std::string why = check_grid("fastsim_elements", q.fastsim_elements); !why.empty()) return why;
-  if (std::string why = check_grid("fastsim_strips", q.fastsim_strips); !why.empty()) return why;
   if (q.num_configurations < 1 || q.num_configurations > kMaxConfigurations) {
     return "num_configurations = " + std::to_string(q.num_configurations) + " is outside [1, " +
            std::to_string(kMaxConfigurations) + "]";
@@ -140,12 +120,14 @@ std::string validate_query(const wrc::contact_query_t& q) {
     return "num_configurations = " + std::to_string(q.num_configurations) + " but " +
            std::to_string(q.configurations.size()) + " configurations";
   }
-  const bool rigid = q.formulation == wrc::contact_query_t::RIGID;
   for (int i = 0; i < q.num_configurations; ++i) {
-    if (std::string why = validate_configuration(q.configurations[static_cast<std::size_t>(i)], i, rigid);
-        !why.empty()) {
-      return why;
-    }
+    const std::optional<QueryViolation> violation = find_query_violation(to_contact_query(q, i));
+    if (!violation) continue;
+    // The field's full name is built only for the message of a bad value (hot path otherwise).
+    const MessageField field = message_field(violation->rule.field);
+    const std::string name =
+        field.per_configuration ? "configurations[" + std::to_string(i) + "]." + field.name : field.name;
+    return describe(name, *violation);
   }
   return {};
 }

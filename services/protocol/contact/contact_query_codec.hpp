@@ -18,10 +18,11 @@ namespace wrc::protocol {
 /// Largest batch of one query (keeps the reply in one UDP datagram, contact_query_t.lcm).
 inline constexpr int kMaxConfigurations = 32;
 
-/// Checks the fields of a query before any computation: formulation, material, FASTSIM grid,
-/// speed, batch size and every configuration field (finite, in a physical range). Returns an empty
-/// string when valid, else one line naming the field and its value, e.g.
-/// "configurations[0].y = nan is not a finite number".
+/// Checks a query before any computation: what the message alone needs (a known formulation, the
+/// batch size, as many configurations as it says), then each configuration converted by
+/// to_contact_query against the library's rule (core/model_interface/query_validation.hpp), so
+/// that the bus accepts what the models accept. Returns an empty string when valid, else one line
+/// naming the message field and its value, e.g. "configurations[0].y = nan is not a finite number".
 std::string validate_query(const wrc::contact_query_t& query);
 
 /// The library query for configuration `index` of a (validated) bus query. z is the height of

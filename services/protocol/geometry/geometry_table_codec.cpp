@@ -14,9 +14,7 @@ namespace {
 constexpr const char* kTableFile = "geometry table file";
 
 // SHA-256 of a table's values as little-endian doubles.
-std::string values_hash(const std::vector<double>& values) {
-  return sha256_hex(values.data(), values.size() * sizeof(double));
-}
+std::string values_hash(const std::vector<double>& values) { return sha256_hex_of_doubles(values); }
 
 // The same for a table (full without its values).
 geometry_table_t table_reference_to(const geometry_table_t& full, const std::string& path,

@@ -2,7 +2,8 @@
 /// The contact service's message adapter in-process (services/protocol/contact/contact_query_codec.hpp):
 /// every message field lands in its own library field (all values distinct, so a swap shows),
 /// every result field lands in its own message field, each invalid field is named with its value
-/// and bounds, the adapter and the library accept and reject the same material and grid values,
+/// and bounds, the adapter and the library accept and reject the same values of every field (the
+/// library's rule, which the adapter applies),
 /// and evaluate_query gives each configuration its status (stub model for every exception kind,
 /// the real onepoint and interp models for IMPOSSIBLE_CONFIGURATION and OUTSIDE_MODEL), the
 /// overall status being the worst one with that configuration's message.
@@ -189,15 +190,27 @@ TEST(QueryAdapter, EachInvalidFieldIsNamed) {
     EXPECT_NE(validate_query(q).find(c.expected), std::string::npos)
         << "got '" << validate_query(q) << "', expected '" << c.expected << "'";
   }
-  // Negative loads are errors only in the rigid formulation (elastic ignores them).
-  wrc::contact_query_t q = distinct_query();
-  q.formulation = wrc::contact_query_t::RIGID;
-  q.configurations[1].normal_load_right = -5.0;
-  EXPECT_NE(validate_query(q).find("configurations[1].normal_load_right = -5 is outside [0, 100000000] N"),
-            std::string::npos)
-      << validate_query(q);
-  q.formulation = wrc::contact_query_t::ELASTIC;
-  EXPECT_EQ(validate_query(q), "");
+  // Negative loads are errors in both formulations: the library's rule (validate_contact_query),
+  // which the adapter applies; elastic models ignore the loads, but a bad one is still an error.
+  for (const std::int8_t formulation : {wrc::contact_query_t::RIGID, wrc::contact_query_t::ELASTIC}) {
+    wrc::contact_query_t q = distinct_query();
+    q.formulation = formulation;
+    q.configurations[1].normal_load_right = -5.0;
+    EXPECT_NE(validate_query(q).find("configurations[1].normal_load_right = -5 is outside [0, 100000000] N"),
+              std::string::npos)
+        << validate_query(q);
+    EXPECT_THROW(validate_contact_query(to_contact_query(q, 1)), std::invalid_argument);
+  }
+}
+
+// Whether the library (validate_contact_query) accepts configuration index of q.
+bool library_accepts(const wrc::contact_query_t& q, int index) {
+  try {
+    validate_contact_query(to_contact_query(q, index));
+    return true;
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
 }
 
 // The adapter and the library (validate_contact_query) accept and reject the same material,
@@ -221,13 +234,49 @@ TEST(QueryAdapter, AcceptsWhatTheLibraryAccepts) {
       wrc::contact_query_t q = distinct_query();
       p.set(q, v);
       const bool adapter_accepts = validate_query(q).empty();
-      bool library_accepts = true;
-      try {
-        validate_contact_query(to_contact_query(q, 0));
-      } catch (const std::invalid_argument&) {
-        library_accepts = false;
+      EXPECT_EQ(adapter_accepts, library_accepts(q, 0)) << p.what << " = " << v << ": adapter '" << validate_query(q) << "'";
+    }
+  }
+}
+
+// The same for every configuration field, in both formulations: the adapter applies the library's
+// rule to the converted configuration, so the two agree at and around every bound.
+TEST(QueryAdapter, AcceptsTheConfigurationsTheLibraryAccepts) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  using Config = wrc::wheelset_configuration_t;
+  struct Probe {
+    const char* what;
+    double Config::*field;
+    double values[7];
+  };
+  const Probe probes[] = {
+      {"y", &Config::y, {nan, -0.5000001, -0.5, 0.0, 0.5, 0.5000001, inf}},
+      {"z", &Config::z, {nan, -10.000001, -10.0, 0.46, 10.0, 10.000001, -inf}},
+      {"roll", &Config::roll, {nan, -0.5000001, -0.5, 0.0, 0.5, 0.5000001, inf}},
+      {"yaw", &Config::yaw, {nan, -0.0600001, -0.06, 0.0, 0.06, 0.0600001, inf}},
+      {"y_dot", &Config::y_dot, {nan, -100.0001, -100.0, 0.0, 100.0, 100.0001, inf}},
+      {"roll_dot", &Config::roll_dot, {nan, -100.0001, -100.0, 0.0, 100.0, 100.0001, inf}},
+      {"spin_rate", &Config::spin_rate, {nan, -10000.01, -1e4, 65.0, 1e4, 10000.01, inf}},
+      {"normal_load_left", &Config::normal_load_left, {nan, -1e-9, 0.0, 8e4, 1e8, 1.0000001e8, inf}},
+      {"second_normal_load_right", &Config::second_normal_load_right, {nan, -1e-9, 0.0, 8e4, 1e8, 1.0000001e8, inf}},
+      {"tracked_s_wheel_right", &Config::tracked_s_wheel_right, {nan, -1.0000001, -1.0, -0.02, 1.0, 1.0000001, -inf}},
+      {"second_tracked_s_wheel_left", &Config::second_tracked_s_wheel_left, {nan, -1.0000001, -1.0, 0.01, 1.0, 1.0000001, inf}},
+  };
+  for (const std::int8_t formulation : {wrc::contact_query_t::RIGID, wrc::contact_query_t::ELASTIC}) {
+    for (const Probe& p : probes) {
+      for (double v : p.values) {
+        wrc::contact_query_t q = distinct_query();
+        q.formulation = formulation;
+        q.configurations[1].*p.field = v;
+        const bool adapter_accepts = validate_query(q).empty();
+        EXPECT_EQ(adapter_accepts, library_accepts(q, 1))
+            << p.what << " = " << v << " (formulation " << int{formulation} << "): adapter '" << validate_query(q) << "'";
+        if (!adapter_accepts) {
+          EXPECT_NE(validate_query(q).find(std::string("configurations[1].") + p.what), std::string::npos)
+              << validate_query(q);
+        }
       }
-      EXPECT_EQ(adapter_accepts, library_accepts) << p.what << " = " << v << ": adapter '" << validate_query(q) << "'";
     }
   }
 }

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "core/numerics/simd_clones.hpp"
@@ -317,14 +318,18 @@ void TensorBasis::evaluate(const double* point, SplineDerivatives derivatives, T
   }
 }
 
-namespace {
-
 // The 1-D factors of a 3-D query: f[k][order][a] for variable k, derivative order 0..2 and the
 // degree + 1 non-zero basis functions, and the first basis index of each variable.
-struct QueryFactors {
+struct spline_kernels::QueryFactors {
   double f[3][3][kMaxSplineDegree + 1];
   int first[3];
 };
+
+namespace {
+
+using spline_kernels::KernelRow;
+using spline_kernels::QueryFactors;
+using spline_kernels::QueryKernel;
 
 // Four doubles (GCC vector extension): one AVX register in the x86-64-v3 clones, two SSE registers
 // in the baseline.
@@ -430,31 +435,41 @@ void query_kernel(const double* base, const std::ptrdiff_t* offsets, const doubl
   }
 }
 
-using QueryKernel = void (*)(const double*, const std::ptrdiff_t*, const double* const*, const std::ptrdiff_t*,
-                             const QueryFactors&, int, double*, int, double*);
+static_assert(std::is_same_v<QueryKernel, decltype(&query_kernel<4, 4, 4, 4>)>,
+              "the kernel table's type is the kernels' own");
 
-// The kernel for degrees (q0, q1, q2) - 1 and the values of the first 4 * vectors functions.
+// The kernels for degrees (Q0, Q1, Q2) - 1 by the number of 4-function blocks of values.
 template <int Q0, int Q1, int Q2>
-QueryKernel kernel_for_vectors(int vectors) {
-  switch (vectors) {
-    case 1: return query_kernel<Q0, Q1, Q2, 4>;
-    case 2: return query_kernel<Q0, Q1, Q2, 8>;
-    case 3: return query_kernel<Q0, Q1, Q2, 12>;
-    case 4: return query_kernel<Q0, Q1, Q2, 16>;
-    case 5: return query_kernel<Q0, Q1, Q2, 20>;
-    case 6: return query_kernel<Q0, Q1, Q2, 24>;
-    case 7: return query_kernel<Q0, Q1, Q2, 28>;
-    case 8: return query_kernel<Q0, Q1, Q2, 32>;
-    default: return nullptr;
-  }
+constexpr KernelRow kernel_row() {
+  static_assert(spline_kernels::kMaxBlocks == 8, "one entry per block count");
+  return {nullptr,
+          &query_kernel<Q0, Q1, Q2, 4>,
+          &query_kernel<Q0, Q1, Q2, 8>,
+          &query_kernel<Q0, Q1, Q2, 12>,
+          &query_kernel<Q0, Q1, Q2, 16>,
+          &query_kernel<Q0, Q1, Q2, 20>,
+          &query_kernel<Q0, Q1, Q2, 24>,
+          &query_kernel<Q0, Q1, Q2, 28>,
+          &query_kernel<Q0, Q1, Q2, 32>};
 }
 
-// The compiled kernel for the basis's degrees and 4 * vectors values, or null (general path).
-QueryKernel select_kernel(const TensorBasis& basis, int vectors) {
+// The one dispatch table of the compiled query kernels: the degrees (y, roll, yaw) each row is for.
+struct KernelTableEntry {
+  int degrees[3];
+  KernelRow kernels;
+};
+const KernelTableEntry kKernelTable[] = {
+    {{3, 3, 3}, kernel_row<4, 4, 4>()},
+    {{3, 3, 2}, kernel_row<4, 4, 3>()},
+};
+
+// The table's row for the basis's degrees, or null (the general path).
+const KernelRow* select_kernels(const TensorBasis& basis) {
   if (basis.dimension() != 3) return nullptr;
-  const int d0 = basis.basis(0).degree(), d1 = basis.basis(1).degree(), d2 = basis.basis(2).degree();
-  if (d0 == 3 && d1 == 3 && d2 == 3) return kernel_for_vectors<4, 4, 4>(vectors);
-  if (d0 == 3 && d1 == 3 && d2 == 2) return kernel_for_vectors<4, 4, 3>(vectors);
+  for (const KernelTableEntry& e : kKernelTable)
+    if (basis.basis(0).degree() == e.degrees[0] && basis.basis(1).degree() == e.degrees[1] &&
+        basis.basis(2).degree() == e.degrees[2])
+      return &e.kernels;
   return nullptr;
 }
 
@@ -472,9 +487,9 @@ TensorSplineSet::TensorSplineSet(TensorBasis basis, const Eigen::MatrixXd& coeff
   data_.assign(static_cast<size_t>(basis_.size()) * static_cast<size_t>(stride_), 0.0);
   for (int i = 0; i < basis_.size(); ++i)
     for (int j = 0; j < functions_; ++j) data_[static_cast<size_t>(i) * stride_ + j] = coefficients(i, j);
-  for (int v = 1; v <= stride_ / 4 && v < static_cast<int>(kernels_.size()); ++v)
-    kernels_[static_cast<size_t>(v)] = reinterpret_cast<void (*)()>(select_kernel(basis_, v));
-  if (kernels_[1]) {
+  kernels_ = select_kernels(basis_);
+  kernel_blocks_ = kernels_ ? std::min(stride_ / 4, spline_kernels::kMaxBlocks) : 0;
+  if (kernels_) {
     // Row offsets of the (q0 q1 q2) terms of a query from the first term's row.
     const int n0 = basis_.basis(0).size(), n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
     for (int a = 0; a <= basis_.basis(0).degree(); ++a)
@@ -538,17 +553,17 @@ void TensorSplineSet::query(const double* point, int value_count, double* values
   }
   // The kernel for the values asked (their count rounded up to a multiple of 4: the padding
   // columns of data_ are zero and go nowhere).
-  const size_t blocks = static_cast<size_t>(std::max(1, (value_count + 3) / 4));
-  void (*const kernel)() = blocks < kernels_.size() ? kernels_[blocks] : nullptr;
-  if (kernel) {
+  const int blocks = std::max(1, (value_count + 3) / 4);
+  if (blocks <= kernel_blocks_) {
+    const QueryKernel kernel = (*kernels_)[static_cast<size_t>(blocks)];
     const int n0 = basis_.basis(0).size(), n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
     const double* base = data_.data() + static_cast<size_t>((q.first[0] * n1 + q.first[1]) * n2 + q.first[2]) * stride_;
     const double* transposed[kMaxDerivativeFunctions];
     for (int n = 0; n < derivative_count; ++n)
       transposed[n] = transposed_.data() + static_cast<size_t>(n) * basis_.size() +
                       static_cast<size_t>((q.first[2] * n1 + q.first[1]) * n0 + q.first[0]);
-    reinterpret_cast<QueryKernel>(kernel)(base, offsets_.data(), transposed, transposed_offsets_.data(), q,
-                                          value_count, values, derivative_count, derivatives);
+    kernel(base, offsets_.data(), transposed, transposed_offsets_.data(), q, value_count, values, derivative_count,
+           derivatives);
     return;
   }
   // Other degree combinations: the general tensor-product path.
@@ -559,6 +574,10 @@ void TensorSplineSet::query(const double* point, int value_count, double* values
     double* out = derivatives + 10 * n;
     this->derivatives(p, n, out[0], out + 1, out + 4);
   }
+}
+
+bool TensorSplineSet::query_is_compiled(int value_count) const {
+  return std::max(1, (value_count + 3) / 4) <= kernel_blocks_;
 }
 
 void TensorSplineSet::derivatives(const TensorBasisPoint& point, int j, double& value, double* gradient,

@@ -331,18 +331,31 @@ using spline_kernels::KernelRow;
 using spline_kernels::QueryFactors;
 using spline_kernels::QueryKernel;
 
-// Four doubles (GCC vector extension): one AVX register in the x86-64-v3 clones, two SSE registers
-// in the baseline.
+// Four doubles (the GCC vector extension, which clang has too): one AVX register in the
+// x86-64-v3 clones, two SSE registers in the baseline.
 typedef double Vec4 __attribute__((vector_size(32)));
+
+// Lanes i0..i3 of the eight lanes of a and b (a's 0..3, b's 4..7): clang's and GCC 12's
+// __builtin_shufflevector, GCC's older __builtin_shuffle before that. A permutation, so the
+// results are the same bits either way.
+#if defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+#define WRC_SHUFFLE4(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#endif
+#endif
+#ifndef WRC_SHUFFLE4
+typedef long long Index4 __attribute__((vector_size(32)));
+#define WRC_SHUFFLE4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, Index4{i0, i1, i2, i3})
+#endif
 
 // The lane sums of four vectors p[0..3], {sum p[0], .., sum p[3]}, each (x0 + x1) + (x2 + x3), by
 // two rounds of shuffles and adds (a 4 x 4 transpose folded into the sums).
 __attribute__((always_inline)) inline void lane_sums(const Vec4* p, Vec4& sums) {
-  typedef long long Index4 __attribute__((vector_size(32)));
-  const Vec4 s01 = __builtin_shuffle(p[0], p[1], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[0], p[1], Index4{1, 5, 3, 7});
-  const Vec4 s23 = __builtin_shuffle(p[2], p[3], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[2], p[3], Index4{1, 5, 3, 7});
-  sums = __builtin_shuffle(s01, s23, Index4{0, 1, 4, 5}) + __builtin_shuffle(s01, s23, Index4{2, 3, 6, 7});
+  const Vec4 s01 = WRC_SHUFFLE4(p[0], p[1], 0, 4, 2, 6) + WRC_SHUFFLE4(p[0], p[1], 1, 5, 3, 7);
+  const Vec4 s23 = WRC_SHUFFLE4(p[2], p[3], 0, 4, 2, 6) + WRC_SHUFFLE4(p[2], p[3], 1, 5, 3, 7);
+  sums = WRC_SHUFFLE4(s01, s23, 0, 1, 4, 5) + WRC_SHUFFLE4(s01, s23, 2, 3, 6, 7);
 }
+#undef WRC_SHUFFLE4
 
 // TensorSplineSet::query for degrees Q0 - 1, Q1 - 1, Q2 - 1 and the values of the first S
 // functions of each row (S a multiple of 4, at most the stride; compile-time loop bounds, so that

@@ -199,8 +199,9 @@ TEST(WheelsetDynamics, SwapIsReproducedByScheduledSwap) {
   EXPECT_EQ(live.counters().steps, replay.counters().steps);
 }
 
-// Rigid to elastic and back: the elastic contact is settled to the rigid normal forces, so the
-// normal forces go on continuously (within 2 %), and the run finishes.
+// Rigid to elastic: the elastic contact is settled to the rigid normal forces, so the normal
+// forces go on continuously (within 2 %), and the run finishes (and back, and elastic to rigid:
+// dynamics_swap_test.cpp).
 TEST(WheelsetDynamics, SwapBetweenRigidAndElasticIsConsistent) {
   RunSpec spec;
   spec.integrator.t_end = 0.3;

@@ -8,7 +8,7 @@ namespace wrc {
 
 SlopeEnvelope::SlopeEnvelope(double lower, double upper, double bin, int per_bin, double safety,
                              const std::function<void(double, double&, double&)>& derivatives)
-    : lower_(lower), bin_(bin), inverse_bin_(1.0 / bin) {
+    : lower_(lower), inverse_bin_(1.0 / bin) {
   const int bins = std::max(1, static_cast<int>(std::ceil((upper - lower) / bin)));
   slope_.assign(bins, 0.0);
   second_.assign(bins, 0.0);

@@ -29,7 +29,7 @@ class SlopeEnvelope {
 
  private:
   int bin_of(double x) const;
-  double lower_ = 0, bin_ = 1, inverse_bin_ = 1;
+  double lower_ = 0, inverse_bin_ = 1;
   std::vector<double> slope_, second_;
   std::vector<double> second_low_, second_high_;
   // runs_[w][i]: the same over bins i .. i + w.

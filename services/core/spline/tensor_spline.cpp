@@ -16,6 +16,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "core/numerics/simd_clones.hpp"
@@ -317,27 +318,44 @@ void TensorBasis::evaluate(const double* point, SplineDerivatives derivatives, T
   }
 }
 
-namespace {
-
 // The 1-D factors of a 3-D query: f[k][order][a] for variable k, derivative order 0..2 and the
 // degree + 1 non-zero basis functions, and the first basis index of each variable.
-struct QueryFactors {
+struct spline_kernels::QueryFactors {
   double f[3][3][kMaxSplineDegree + 1];
   int first[3];
 };
 
-// Four doubles (GCC vector extension): one AVX register in the x86-64-v3 clones, two SSE registers
-// in the baseline.
+namespace {
+
+using spline_kernels::KernelRow;
+using spline_kernels::QueryFactors;
+using spline_kernels::QueryKernel;
+
+// Four doubles (the GCC vector extension, which clang has too): one AVX register in the
+// x86-64-v3 clones, two SSE registers in the baseline.
 typedef double Vec4 __attribute__((vector_size(32)));
+
+// Lanes i0..i3 of the eight lanes of a and b (a's 0..3, b's 4..7): clang's and GCC 12's
+// __builtin_shufflevector, GCC's older __builtin_shuffle before that. A permutation, so the
+// results are the same bits either way.
+#if defined(__has_builtin)
+#if __has_builtin(__builtin_shufflevector)
+#define WRC_SHUFFLE4(a, b, i0, i1, i2, i3) __builtin_shufflevector(a, b, i0, i1, i2, i3)
+#endif
+#endif
+#ifndef WRC_SHUFFLE4
+typedef long long Index4 __attribute__((vector_size(32)));
+#define WRC_SHUFFLE4(a, b, i0, i1, i2, i3) __builtin_shuffle(a, b, Index4{i0, i1, i2, i3})
+#endif
 
 // The lane sums of four vectors p[0..3], {sum p[0], .., sum p[3]}, each (x0 + x1) + (x2 + x3), by
 // two rounds of shuffles and adds (a 4 x 4 transpose folded into the sums).
 __attribute__((always_inline)) inline void lane_sums(const Vec4* p, Vec4& sums) {
-  typedef long long Index4 __attribute__((vector_size(32)));
-  const Vec4 s01 = __builtin_shuffle(p[0], p[1], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[0], p[1], Index4{1, 5, 3, 7});
-  const Vec4 s23 = __builtin_shuffle(p[2], p[3], Index4{0, 4, 2, 6}) + __builtin_shuffle(p[2], p[3], Index4{1, 5, 3, 7});
-  sums = __builtin_shuffle(s01, s23, Index4{0, 1, 4, 5}) + __builtin_shuffle(s01, s23, Index4{2, 3, 6, 7});
+  const Vec4 s01 = WRC_SHUFFLE4(p[0], p[1], 0, 4, 2, 6) + WRC_SHUFFLE4(p[0], p[1], 1, 5, 3, 7);
+  const Vec4 s23 = WRC_SHUFFLE4(p[2], p[3], 0, 4, 2, 6) + WRC_SHUFFLE4(p[2], p[3], 1, 5, 3, 7);
+  sums = WRC_SHUFFLE4(s01, s23, 0, 1, 4, 5) + WRC_SHUFFLE4(s01, s23, 2, 3, 6, 7);
 }
+#undef WRC_SHUFFLE4
 
 // TensorSplineSet::query for degrees Q0 - 1, Q1 - 1, Q2 - 1 and the values of the first S
 // functions of each row (S a multiple of 4, at most the stride; compile-time loop bounds, so that
@@ -430,31 +448,41 @@ void query_kernel(const double* base, const std::ptrdiff_t* offsets, const doubl
   }
 }
 
-using QueryKernel = void (*)(const double*, const std::ptrdiff_t*, const double* const*, const std::ptrdiff_t*,
-                             const QueryFactors&, int, double*, int, double*);
+static_assert(std::is_same_v<QueryKernel, decltype(&query_kernel<4, 4, 4, 4>)>,
+              "the kernel table's type is the kernels' own");
 
-// The kernel for degrees (q0, q1, q2) - 1 and the values of the first 4 * vectors functions.
+// The kernels for degrees (Q0, Q1, Q2) - 1 by the number of 4-function blocks of values.
 template <int Q0, int Q1, int Q2>
-QueryKernel kernel_for_vectors(int vectors) {
-  switch (vectors) {
-    case 1: return query_kernel<Q0, Q1, Q2, 4>;
-    case 2: return query_kernel<Q0, Q1, Q2, 8>;
-    case 3: return query_kernel<Q0, Q1, Q2, 12>;
-    case 4: return query_kernel<Q0, Q1, Q2, 16>;
-    case 5: return query_kernel<Q0, Q1, Q2, 20>;
-    case 6: return query_kernel<Q0, Q1, Q2, 24>;
-    case 7: return query_kernel<Q0, Q1, Q2, 28>;
-    case 8: return query_kernel<Q0, Q1, Q2, 32>;
-    default: return nullptr;
-  }
+constexpr KernelRow kernel_row() {
+  static_assert(spline_kernels::kMaxBlocks == 8, "one entry per block count");
+  return {nullptr,
+          &query_kernel<Q0, Q1, Q2, 4>,
+          &query_kernel<Q0, Q1, Q2, 8>,
+          &query_kernel<Q0, Q1, Q2, 12>,
+          &query_kernel<Q0, Q1, Q2, 16>,
+          &query_kernel<Q0, Q1, Q2, 20>,
+          &query_kernel<Q0, Q1, Q2, 24>,
+          &query_kernel<Q0, Q1, Q2, 28>,
+          &query_kernel<Q0, Q1, Q2, 32>};
 }
 
-// The compiled kernel for the basis's degrees and 4 * vectors values, or null (general path).
-QueryKernel select_kernel(const TensorBasis& basis, int vectors) {
+// The one dispatch table of the compiled query kernels: the degrees (y, roll, yaw) each row is for.
+struct KernelTableEntry {
+  int degrees[3];
+  KernelRow kernels;
+};
+const KernelTableEntry kKernelTable[] = {
+    {{3, 3, 3}, kernel_row<4, 4, 4>()},
+    {{3, 3, 2}, kernel_row<4, 4, 3>()},
+};
+
+// The table's row for the basis's degrees, or null (the general path).
+const KernelRow* select_kernels(const TensorBasis& basis) {
   if (basis.dimension() != 3) return nullptr;
-  const int d0 = basis.basis(0).degree(), d1 = basis.basis(1).degree(), d2 = basis.basis(2).degree();
-  if (d0 == 3 && d1 == 3 && d2 == 3) return kernel_for_vectors<4, 4, 4>(vectors);
-  if (d0 == 3 && d1 == 3 && d2 == 2) return kernel_for_vectors<4, 4, 3>(vectors);
+  for (const KernelTableEntry& e : kKernelTable)
+    if (basis.basis(0).degree() == e.degrees[0] && basis.basis(1).degree() == e.degrees[1] &&
+        basis.basis(2).degree() == e.degrees[2])
+      return &e.kernels;
   return nullptr;
 }
 
@@ -472,9 +500,9 @@ TensorSplineSet::TensorSplineSet(TensorBasis basis, const Eigen::MatrixXd& coeff
   data_.assign(static_cast<size_t>(basis_.size()) * static_cast<size_t>(stride_), 0.0);
   for (int i = 0; i < basis_.size(); ++i)
     for (int j = 0; j < functions_; ++j) data_[static_cast<size_t>(i) * stride_ + j] = coefficients(i, j);
-  for (int v = 1; v <= stride_ / 4 && v < static_cast<int>(kernels_.size()); ++v)
-    kernels_[static_cast<size_t>(v)] = reinterpret_cast<void (*)()>(select_kernel(basis_, v));
-  if (kernels_[1]) {
+  kernels_ = select_kernels(basis_);
+  kernel_blocks_ = kernels_ ? std::min(stride_ / 4, spline_kernels::kMaxBlocks) : 0;
+  if (kernels_) {
     // Row offsets of the (q0 q1 q2) terms of a query from the first term's row.
     const int n0 = basis_.basis(0).size(), n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
     for (int a = 0; a <= basis_.basis(0).degree(); ++a)
@@ -538,17 +566,17 @@ void TensorSplineSet::query(const double* point, int value_count, double* values
   }
   // The kernel for the values asked (their count rounded up to a multiple of 4: the padding
   // columns of data_ are zero and go nowhere).
-  const size_t blocks = static_cast<size_t>(std::max(1, (value_count + 3) / 4));
-  void (*const kernel)() = blocks < kernels_.size() ? kernels_[blocks] : nullptr;
-  if (kernel) {
+  const int blocks = std::max(1, (value_count + 3) / 4);
+  if (blocks <= kernel_blocks_) {
+    const QueryKernel kernel = (*kernels_)[static_cast<size_t>(blocks)];
     const int n0 = basis_.basis(0).size(), n1 = basis_.basis(1).size(), n2 = basis_.basis(2).size();
     const double* base = data_.data() + static_cast<size_t>((q.first[0] * n1 + q.first[1]) * n2 + q.first[2]) * stride_;
     const double* transposed[kMaxDerivativeFunctions];
     for (int n = 0; n < derivative_count; ++n)
       transposed[n] = transposed_.data() + static_cast<size_t>(n) * basis_.size() +
                       static_cast<size_t>((q.first[2] * n1 + q.first[1]) * n0 + q.first[0]);
-    reinterpret_cast<QueryKernel>(kernel)(base, offsets_.data(), transposed, transposed_offsets_.data(), q,
-                                          value_count, values, derivative_count, derivatives);
+    kernel(base, offsets_.data(), transposed, transposed_offsets_.data(), q, value_count, values, derivative_count,
+           derivatives);
     return;
   }
   // Other degree combinations: the general tensor-product path.
@@ -559,6 +587,10 @@ void TensorSplineSet::query(const double* point, int value_count, double* values
     double* out = derivatives + 10 * n;
     this->derivatives(p, n, out[0], out + 1, out + 4);
   }
+}
+
+bool TensorSplineSet::query_is_compiled(int value_count) const {
+  return std::max(1, (value_count + 3) / 4) <= kernel_blocks_;
 }
 
 void TensorSplineSet::derivatives(const TensorBasisPoint& point, int j, double& value, double* gradient,

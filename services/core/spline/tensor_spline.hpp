@@ -22,6 +22,22 @@ constexpr int kMaxTensorTerms = 256;
 /// Largest number of functions whose derivatives one TensorSplineSet::query computes.
 constexpr int kMaxDerivativeFunctions = 4;
 
+/// The compiled kernels of TensorSplineSet::query (defined in tensor_spline.cpp).
+namespace spline_kernels {
+/// The 1-D basis factors of one query (tensor_spline.cpp).
+struct QueryFactors;
+/// The type of every compiled query kernel: the coefficient row of the query's first term, the
+/// terms' row offsets from it, the derivative functions' transposed coefficients at the first term
+/// and their offsets, the factors, and the outputs of TensorSplineSet::query.
+using QueryKernel = void (*)(const double* base, const std::ptrdiff_t* offsets, const double* const* transposed,
+                             const std::ptrdiff_t* transposed_offsets, const QueryFactors& factors, int value_count,
+                             double* values, int derivative_count, double* derivatives);
+/// Largest number of 4-function blocks of values a compiled kernel computes.
+constexpr int kMaxBlocks = 8;
+/// One degree combination's kernels by the number of 4-function blocks of values (index 0 unused).
+using KernelRow = std::array<QueryKernel, kMaxBlocks + 1>;
+}  // namespace spline_kernels
+
 /// How many derivatives TensorBasis::evaluate computes.
 enum class SplineDerivatives { kValue = 0, kGradient = 1, kHessian = 2 };
 
@@ -103,15 +119,19 @@ class TensorSplineSet {
   /// grows with value_count and derivative_count: ask only for what is needed.
   /// @throws std::invalid_argument for a basis that is not 3-D or a count out of range.
   void query(const double* point, int value_count, double* values, int derivative_count, double* derivatives) const;
+  /// True when query() with value_count values (0..functions()) runs a compiled kernel, false when
+  /// it takes the general path (what the tests check of the spline model's query shape).
+  bool query_is_compiled(int value_count) const;
 
  private:
   TensorBasis basis_;
   int functions_ = 0;
   int stride_ = 0;             // functions_ rounded up for aligned contraction
   std::vector<double> data_;   // [basis index][function]
-  // query(): compiled kernels for these degrees by the number of 4-function blocks of values
-  // asked (1..stride_ / 4, at most 8), null where there is none (general path).
-  std::array<void (*)(), 9> kernels_{};
+  // query(): the kernel table's row for these degrees (null: the general path) and the largest
+  // number of 4-function blocks of values it is used for (stride_ / 4, at most kMaxBlocks).
+  const spline_kernels::KernelRow* kernels_ = nullptr;
+  int kernel_blocks_ = 0;
   std::vector<std::ptrdiff_t> offsets_;  // query(): row offsets of the terms from the first term's row
   // query(): functions 0..transposed_count_-1 again, transposed (y index fastest), for their
   // derivatives, and the offsets of the query's (roll, yaw) terms in them.

@@ -22,7 +22,7 @@ bool keeps(const QueryRule& rule, double v) {
     case QueryRuleKind::kFinite: return std::isfinite(v);
     case QueryRuleKind::kClosed: return std::isfinite(v) && v >= rule.low && v <= rule.high;
     case QueryRuleKind::kOpen: return std::isfinite(v) && v > rule.low && v < rule.high;
-    case QueryRuleKind::kPositive: return std::isfinite(v) && v > 0.0 && v <= rule.high;
+    case QueryRuleKind::kPositiveAtMost: return std::isfinite(v) && v > 0.0 && v <= rule.high;
     case QueryRuleKind::kNanOrClosed: return std::isnan(v) || (v >= rule.low && v <= rule.high);
     case QueryRuleKind::kCount: return v >= rule.low && v <= rule.high;
   }
@@ -45,7 +45,7 @@ std::string library_rule_text(const QueryRule& rule, double v) {
       if (!std::isfinite(v)) return "must be finite";
       return "must be in [" + text(rule.low) + ", " + text(rule.high) + "]";
     case QueryRuleKind::kOpen: return "must be in (" + text(rule.low) + ", " + text(rule.high) + ")";
-    case QueryRuleKind::kPositive: return "must be in (0, " + text(rule.high) + "]";
+    case QueryRuleKind::kPositiveAtMost: return "must be in (0, " + text(rule.high) + "]";
     case QueryRuleKind::kNanOrClosed:
       return "must be NaN (none) or in [" + text(rule.low) + ", " + text(rule.high) + "]";
     case QueryRuleKind::kCount:
@@ -75,7 +75,7 @@ std::optional<QueryViolation> find_query_violation(const ContactQuery& q) {
       {{F::kRollDot, K::kClosed, -kMaxPoseRate, kMaxPoseRate, "rad/s"}, q.roll_dot},
       {{F::kYawDot, K::kClosed, -kMaxPoseRate, kMaxPoseRate, "rad/s"}, q.yaw_dot},
       {{F::kSpinRate, K::kClosed, -kMaxSpinRate, kMaxSpinRate, "rad/s"}, q.spin_rate},
-      {{F::kSpeed, K::kPositive, 0.0, kMaxSpeed, "m/s"}, q.speed},
+      {{F::kSpeed, K::kPositiveAtMost, 0.0, kMaxSpeed, "m/s"}, q.speed},
       {{F::kNormalLoadLeft, K::kClosed, 0.0, kMaxNormalLoad, "N"}, q.normal_load[0]},
       {{F::kNormalLoadRight, K::kClosed, 0.0, kMaxNormalLoad, "N"}, q.normal_load[1]},
       {{F::kSecondNormalLoadLeft, K::kClosed, 0.0, kMaxNormalLoad, "N"}, q.second_normal_load[0]},
@@ -85,7 +85,7 @@ std::optional<QueryViolation> find_query_violation(const ContactQuery& q) {
       {{F::kSecondTrackedSWheelLeft, K::kNanOrClosed, -tracked, tracked, "m"}, q.second_tracked_s_wheel[0]},
       {{F::kSecondTrackedSWheelRight, K::kNanOrClosed, -tracked, tracked, "m"}, q.second_tracked_s_wheel[1]},
       {{F::kFormulation, K::kCount, 0.0, 1.0, ""}, static_cast<double>(static_cast<int>(q.formulation))},
-      {{F::kShearModulus, K::kPositive, 0.0, kMaxShearModulus, "Pa"}, q.material.shear_modulus},
+      {{F::kShearModulus, K::kPositiveAtMost, 0.0, kMaxShearModulus, "Pa"}, q.material.shear_modulus},
       {{F::kPoissonRatio, K::kOpen, kMinPoissonRatio, kMaxPoissonRatio, "-"}, q.material.poisson_ratio},
       {{F::kFriction, K::kClosed, 0.0, kMaxFriction, "-"}, q.material.friction},
       {{F::kFastsimElements, K::kCount, kMinFastsimGrid, kMaxFastsimGrid, ""}, static_cast<double>(q.fastsim_elements)},

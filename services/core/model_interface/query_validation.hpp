@@ -58,7 +58,7 @@ enum class QueryRuleKind {
   kFinite,      ///< any finite value
   kClosed,      ///< finite, in [low, high]
   kOpen,        ///< finite, in (low, high)
-  kPositive,    ///< finite, in (0, high] (low is 0)
+  kPositiveAtMost,  ///< finite, in (0, high] (low is 0)
   kNanOrClosed, ///< NaN (none) or in [low, high]
   kCount,       ///< a whole number in low..high (FASTSIM grid; formulation: 0 kRigid, 1 kElastic)
 };

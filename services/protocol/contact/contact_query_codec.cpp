@@ -70,7 +70,7 @@ std::string describe(const std::string& name, const QueryViolation& violation) {
     case QueryRuleKind::kOpen:
       if (!std::isfinite(v)) return head + " is not a finite number";
       return head + " is outside (" + number_text(rule.low) + ", " + number_text(rule.high) + ")" + unit;
-    case QueryRuleKind::kPositive:
+    case QueryRuleKind::kPositiveAtMost:
       if (!std::isfinite(v)) return head + " is not a finite number";
       if (v < 0.0 || v > rule.high) return head + " is outside [0, " + number_text(rule.high) + "]" + unit;
       return head + " is not positive";

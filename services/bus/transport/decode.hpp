@@ -82,7 +82,8 @@ std::optional<DecodeFailure> decode_bytes(const void* data, std::size_t size, Me
   // string, but its encoder stops at the first NUL (strlen), so such a message could be read but
   // not answered, echoed in a status or logged to an LCM log. Refused here, every field of every
   // type is one that re-encodes.
-  std::vector<unsigned char> again(size);
+  thread_local std::vector<unsigned char> again;  // reused: no allocation per received message
+  again.resize(size);
   if (msg.encode(again.data(), 0, length) != length || std::memcmp(again.data(), bytes, size) != 0) {
     msg = Message();
     return DecodeFailure{DropKind::kUndecodable, type + " (" + std::to_string(size) +

@@ -93,13 +93,15 @@ int run_launch(const std::vector<std::string>& args) {
 
   bus::ShutdownSignal::install();
   bus::ProcessSupervisor supervisor(std::move(children), policy, std::cerr);
+  // Each heartbeat as it arrives (the supervisor matches it to a child by pid and identity), not
+  // the whole table every turn: a flood can fill the table with 512 entries.
+  heartbeats.set_observer([&supervisor](const bus::ServiceStatus& s) {
+    supervisor.heartbeat_seen(s.last.pid, s.nonce, s.last.period, s.last_seen);
+  });
   supervisor.start_all();
   while (!bus::ShutdownSignal::requested()) {
     lcm->handleTimeout(20);  // heartbeats of the children (and of everyone else)
     while (lcm->handleTimeout(0) > 0) {
-    }
-    for (const bus::ServiceStatus& s : heartbeats.services(bus::monotonic_seconds())) {
-      supervisor.heartbeat_seen(s.last.pid, s.nonce, s.last.period, s.last_seen);
     }
     supervisor.poll();
   }

@@ -2,7 +2,8 @@
 // patches, one row per patch. The service is found by its heartbeat: a READY instance of model M
 // that computes with the asked geometry (its heartbeat's geometry_key equals the key of the
 // profile and track options, core/identity/geometry_key.hpp); with several, the smallest instance name
-// is addressed. When none is heard within kServiceDiscoveryTime (cli/service_starter.hpp), the
+// is addressed, and when it does not answer, every other READY one at once (the first answer
+// taken). When none is heard within kServiceDiscoveryTime (cli/service_starter.hpp), the
 // query starts one (wrc-contactd from the build tree) in the background, waits for READY, asks it
 // and stops it afterwards.
 
@@ -269,6 +270,23 @@ int run_query(const std::vector<std::string>& args) {
       session.names.name(bus::channel::kContactReply, client_id),
       bus::sender_name("wrc-query", client_id));
   auto result = client.call(query, policy);
+  if (!result && wanted.empty()) {
+    // Fail-over: the chosen instance did not answer (hung, gone, or a forged heartbeat named it);
+    // the query goes to every other READY instance of the model at once, the first answer taken.
+    std::vector<wrc::contact_query_t> copies;
+    for (const std::string& name : session.monitor.ready_instances(model, key, bus::monotonic_seconds())) {
+      if (name == query.instance) continue;
+      copies.push_back(query);
+      copies.back().instance = name;
+    }
+    if (!copies.empty()) {
+      std::cerr << "query: no reply from " << model << " instance " << query.instance << "; asking the "
+                << copies.size() << " other READY instance" << (copies.size() > 1 ? "s" : "") << "\n";
+      const int first_attempts = result.attempts;
+      result = client.call_any(copies.data(), copies.size(), policy);
+      result.attempts += first_attempts;
+    }
+  }
   const bool answered = static_cast<bool>(result);  // an error status is in the reply, not in the log
   if (started_geometry) {
     started_geometry->stop();
@@ -279,7 +297,8 @@ int run_query(const std::vector<std::string>& args) {
     if (answered) std::filesystem::remove(started->log());
   }
   if (!result) {
-    throw std::runtime_error("no reply from " + model + " instance " + query.instance + " after " +
+    throw std::runtime_error("no reply from " + model + " instance " + query.instance +
+                             (wanted.empty() ? " (nor from any other READY instance)" : "") + " after " +
                              std::to_string(result.attempts) + " attempts of " + number(policy.timeout) + " s");
   }
   const wrc::contact_reply_t& reply = *result.reply;

@@ -5,10 +5,7 @@
 namespace wrc::contactd {
 
 bool InstanceFilter::is_leader() const {
-  for (const auto& s : monitor_.services(bus::monotonic_seconds())) {
-    if (s.last.model == model_ && s.available() && s.last.instance < instance_) return false;
-  }
-  return true;
+  return !monitor_.available_before(model_, instance_, bus::monotonic_seconds());
 }
 
 bool InstanceFilter::answers(const wrc::contact_query_t& query) const {

@@ -25,8 +25,26 @@ std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>&
   client_.set_request_channel(request_channel_);
   const double give_up = bus::monotonic_seconds() + settings_.wait;
   for (;;) {
-    const bus::CallResult<contact_reply_t> result = client_.call(query, settings_.policy);
+    if (settings_.instance.empty()) query.instance = addressed_;
+    bus::CallResult<contact_reply_t> result = client_.call(query, settings_.policy);
     retries_ += result.attempts - 1;
+    if (!result && settings_.instance.empty()) {
+      // Fail-over: the same query to every READY instance by name, the first answer taken.
+      ++timeouts_;
+      addressed_.clear();
+      std::vector<contact_query_t> copies;
+      for (const std::string& name :
+           monitor_.ready_instances(settings_.model, settings_.geometry_key, bus::monotonic_seconds())) {
+        copies.push_back(query);
+        copies.back().instance = name;
+      }
+      if (!copies.empty()) {
+        ++failovers_;
+        result = client_.call_any(copies.data(), copies.size(), settings_.policy);
+        retries_ += result.attempts - 1;
+        if (result) addressed_ = result.reply->instance;
+      }
+    }
     if (result) {
       const contact_reply_t& reply = *result.reply;
       const std::string who = "contact model " + settings_.model + " (" + reply.instance + ")";

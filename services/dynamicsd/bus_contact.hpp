@@ -5,6 +5,13 @@
 /// reply is re-sent (same request id) and, when a whole round of attempts fails (the service died
 /// and the launcher restarts it), asked again until the wait limit: a deterministic service gives
 /// the same answer, so a run with a restarted service ends as an undisturbed one.
+///
+/// Fail-over: an unaddressed query (the service side's leader rule picks who answers) that gets no
+/// reply in a whole round is sent at once to every READY instance of the model with the run's
+/// geometry key, each addressed by name, and the first answer is taken; the instance that gave it
+/// is then addressed by name until it fails a round in turn. So an instance that claims to be the
+/// leader and never answers (hung, or a key holder's forged heartbeat) costs one round, not the
+/// run. Every instance with the same geometry key computes the same answer, so the run is the same.
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -46,6 +53,9 @@ class BusContact final : public ContactEvaluator {
   std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch) override;
   long retries() const override { return retries_; }
   long timeouts() const override { return timeouts_; }
+  long failovers() const override { return failovers_; }
+  /// The instance queries are addressed to after a fail-over (empty: unaddressed, or the named one).
+  const std::string& addressed_instance() const { return addressed_; }
 
  private:
   bus::RequestClient<contact_query_t, contact_reply_t>& client_;
@@ -54,7 +64,10 @@ class BusContact final : public ContactEvaluator {
   BusContactSettings settings_;
   long retries_ = 0;
   long timeouts_ = 0;
+  long failovers_ = 0;
+  std::string addressed_;  ///< instance that answered a fail-over, asked by name since
 };
+
 
 /// Whether a service of model (and instance) with geometry_key is alive and READY now; the
 /// reason when not ("no READY onepoint service with geometry key ab12.. on the bus").

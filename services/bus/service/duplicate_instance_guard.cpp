@@ -17,9 +17,10 @@ std::optional<ServiceStatus> DuplicateInstanceGuard::older_holder(double now) co
   const std::uint64_t own_nonce = bus_auth().nonce();
   const auto own = std::make_tuple(self_.started_utime(), static_cast<std::int64_t>(::getpid()), own_nonce);
   std::optional<ServiceStatus> oldest;
-  for (const ServiceStatus& s : monitor_.services(now)) {
+  // Only the entries of this name: the table may hold 512 processes (a flood of heartbeats), and
+  // this runs four times a period.
+  for (const ServiceStatus& s : monitor_.processes(self_.identity().model, self_.identity().instance, now)) {
     if (!s.alive || s.nonce == own_nonce || s.last.state == wrc::heartbeat_t::DRAINING) continue;
-    if (s.last.model != self_.identity().model || s.last.instance != self_.identity().instance) continue;
     const auto other = std::make_tuple(s.last.started_utime, static_cast<std::int64_t>(s.last.pid), s.nonce);
     if (other < own && (!oldest || s.last.started_utime < oldest->last.started_utime)) oldest = s;
   }

@@ -48,6 +48,7 @@ void HeartbeatMonitor::on_heartbeat(const wrc::heartbeat_t& hb, const ReceivedMe
   entry.last = hb;
   entry.last_seen = now;
   ++entry.heartbeats;
+  if (observer_) observer_(entry);
 }
 
 void HeartbeatMonitor::forget_silent(double now) {
@@ -58,8 +59,12 @@ void HeartbeatMonitor::forget_silent(double now) {
   }
 }
 
+bool HeartbeatMonitor::alive(const ServiceStatus& status, double now) const {
+  return now - status.last_seen <= missed_periods_ * status.last.period;
+}
+
 ServiceStatus HeartbeatMonitor::evaluate(ServiceStatus status, double now) const {
-  status.alive = now - status.last_seen <= missed_periods_ * status.last.period;
+  status.alive = alive(status, now);
   return status;
 }
 
@@ -73,17 +78,45 @@ std::vector<ServiceStatus> HeartbeatMonitor::services(double now) const {
   return out;
 }
 
+std::vector<ServiceStatus> HeartbeatMonitor::processes(const std::string& model, const std::string& instance,
+                                                       double now) const {
+  std::vector<ServiceStatus> out;
+  for (auto it = table_.lower_bound(Key{model, instance, 0});
+       it != table_.end() && std::get<0>(it->first) == model && std::get<1>(it->first) == instance; ++it)
+    out.push_back(evaluate(it->second, now));
+  return out;
+}
+
 std::optional<ServiceStatus> HeartbeatMonitor::find(const std::string& model, const std::string& instance,
                                                     double now) const {
   std::optional<ServiceStatus> best;
-  for (auto it = table_.lower_bound(Key{model, instance, 0});
-       it != table_.end() && std::get<0>(it->first) == model && std::get<1>(it->first) == instance; ++it) {
-    ServiceStatus s = evaluate(it->second, now);
+  for (ServiceStatus& s : processes(model, instance, now)) {
     if (!best || std::make_pair(s.available(), s.last_seen) > std::make_pair(best->available(), best->last_seen)) {
       best = std::move(s);
     }
   }
   return best;
+}
+
+std::vector<std::string> HeartbeatMonitor::ready_instances(const std::string& model, const std::string& geometry_key,
+                                                           double now) const {
+  std::vector<std::string> names;
+  for (auto it = table_.lower_bound(Key{model, std::string(), 0}); it != table_.end() && std::get<0>(it->first) == model;
+       ++it) {
+    const ServiceStatus s = evaluate(it->second, now);
+    if (s.available() && (geometry_key.empty() || s.last.geometry_key == geometry_key)) names.push_back(s.last.instance);
+  }
+  names.erase(std::unique(names.begin(), names.end()), names.end());  // the table is sorted by instance
+  return names;
+}
+
+bool HeartbeatMonitor::available_before(const std::string& model, const std::string& instance, double now) const {
+  for (auto it = table_.lower_bound(Key{model, std::string(), 0});
+       it != table_.end() && std::get<0>(it->first) == model && std::get<1>(it->first) < instance; ++it) {
+    const ServiceStatus& s = it->second;
+    if (ServiceStatus::says_available(s.last) && alive(s, now)) return true;
+  }
+  return false;
 }
 
 }  // namespace wrc::bus

@@ -10,6 +10,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -32,9 +33,10 @@ struct ServiceStatus {
   std::int64_t heartbeats = 0;   ///< heartbeats received
   bool alive = false;            ///< heartbeats still arriving (not yet missed_periods late)
   /// Alive, READY and built with this interface version: may be sent requests.
-  bool available() const {
-    return alive && last.state == wrc::heartbeat_t::READY &&
-           last.interface_version == wrc::heartbeat_t::INTERFACE_VERSION;
+  bool available() const { return alive && says_available(last); }
+  /// The heartbeat says READY, of this interface version.
+  static bool says_available(const wrc::heartbeat_t& hb) {
+    return hb.state == wrc::heartbeat_t::READY && hb.interface_version == wrc::heartbeat_t::INTERFACE_VERSION;
   }
 };
 
@@ -53,9 +55,23 @@ class HeartbeatMonitor {
   /// Every process in the table, alive flags evaluated at monotonic time now [s], sorted by
   /// model, instance, then first heard of.
   std::vector<ServiceStatus> services(double now) const;
+  /// Every process heard of as model/instance (usually one; two while a duplicate or a restart
+  /// overlaps), alive flags evaluated at monotonic time now [s]. Copies only those entries.
+  std::vector<ServiceStatus> processes(const std::string& model, const std::string& instance, double now) const;
   /// The process of model/instance to use, if heard of: an available one before others, then
   /// the one heard from last.
   std::optional<ServiceStatus> find(const std::string& model, const std::string& instance, double now) const;
+  /// The names of the available (alive, READY, this interface version) instances of model that
+  /// compute with geometry_key (any key when empty) at monotonic time now [s]: sorted, each once.
+  std::vector<std::string> ready_instances(const std::string& model, const std::string& geometry_key,
+                                           double now) const;
+  /// Whether an available instance of model with a name that sorts before instance is heard at
+  /// monotonic time now [s]. Walks only those entries and copies nothing: a contact service asks
+  /// it for every unaddressed query, with up to kMaxEntries entries in the table.
+  bool available_before(const std::string& model, const std::string& instance, double now) const;
+  /// Called with the entry of every heartbeat accepted, as it is entered (a supervisor follows its
+  /// children this way without copying the table).
+  void set_observer(std::function<void(const ServiceStatus&)> observer) { observer_ = std::move(observer); }
   /// Heartbeats dropped by the guarded path or out of range.
   std::int64_t rejected() const { return rejected_; }
   /// Entries in the table now.
@@ -65,6 +81,7 @@ class HeartbeatMonitor {
   using Key = std::tuple<std::string, std::string, std::uint64_t>;  // model, instance, nonce
   void on_heartbeat(const wrc::heartbeat_t& hb, const ReceivedMessage& info);
   ServiceStatus evaluate(ServiceStatus status, double now) const;
+  bool alive(const ServiceStatus& status, double now) const;
   void forget_silent(double now);
 
   std::string channel_;
@@ -73,6 +90,7 @@ class HeartbeatMonitor {
   std::int64_t rejected_ = 0;
   double last_sweep_ = -1e300;  // [s] monotonic time forget_silent() last ran
   std::map<Key, ServiceStatus> table_;
+  std::function<void(const ServiceStatus&)> observer_;
   std::unique_ptr<GuardedSubscription<wrc::heartbeat_t>> subscription_;
 };
 

@@ -12,6 +12,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -49,7 +50,7 @@ struct ClientCounters {
 template <class Reply>
 struct CallResult {
   std::optional<Reply> reply;  ///< the reply; empty when every attempt timed out
-  int attempts = 0;            ///< [-] requests sent for this call (1 = no retry)
+  int attempts = 0;            ///< [-] attempts made for this call (1 = no retry; call_any sends all its requests in each)
   double round_trip = 0.0;     ///< [s] from the first send to the accepted reply
   explicit operator bool() const { return reply.has_value(); }
 };
@@ -83,7 +84,13 @@ class RequestClient {
   /// reply, re-sending after each timeout up to policy.retries times. Throws
   /// std::invalid_argument for a non-positive timeout or negative retries, std::runtime_error
   /// when LCM fails.
-  CallResult<Reply> call(Request& request, const CallPolicy& policy) {
+  CallResult<Reply> call(Request& request, const CallPolicy& policy) { return call_any(&request, 1, policy); }
+
+  /// One call sent as count requests at once (each attempt publishes all of them, with one
+  /// request id): they differ only in who is to answer (e.g. the instance each addresses), and
+  /// the first reply is the call's. count >= 1. Otherwise as call().
+  CallResult<Reply> call_any(Request* requests, std::size_t count, const CallPolicy& policy) {
+    if (count == 0) throw std::invalid_argument("a call needs at least one request");
     if (!(policy.timeout > 0.0) || !std::isfinite(policy.timeout)) {
       throw std::invalid_argument("call timeout " + std::to_string(policy.timeout) +
                                   " s is not a positive number");
@@ -93,24 +100,28 @@ class RequestClient {
     }
     ++counters_.calls;
     pending_id_ = ++last_id_;
-    request.request_id = pending_id_;
-    request.reply_channel = reply_channel_;
+    for (std::size_t k = 0; k < count; ++k) {
+      requests[k].request_id = pending_id_;
+      requests[k].reply_channel = reply_channel_;
+    }
     answer_.reset();
     CallResult<Reply> result;
     const double start = monotonic_seconds();
     for (int attempt = 0; attempt <= policy.retries && !answer_; ++attempt) {
       if (attempt > 0) ++counters_.retries;
-      stamper_.stamp(request.header);
-      if (publish_signed(lcm_, request_channel_, request) != 0) {
-        throw std::runtime_error("publish on '" + request_channel_ + "' failed");
+      for (std::size_t k = 0; k < count; ++k) {
+        stamper_.stamp(requests[k].header);
+        if (publish_signed(lcm_, request_channel_, requests[k]) != 0) {
+          throw std::runtime_error("publish on '" + request_channel_ + "' failed");
+        }
+        ++counters_.sent;
       }
-      ++counters_.sent;
       ++result.attempts;
       wait_for_answer(monotonic_seconds() + policy.timeout);
     }
     pending_id_ = 0;
     if (answer_) {
-      completed_id_ = request.request_id;
+      completed_id_ = requests[0].request_id;
       ++counters_.replies;
       result.round_trip = monotonic_seconds() - start;
       result.reply = std::move(answer_);

@@ -27,6 +27,8 @@ class ContactEvaluator {
   virtual long retries() const { return 0; }
   /// Attempt rounds that got no reply so far [-] (0 in-process).
   virtual long timeouts() const { return 0; }
+  /// Queries that went to another instance of the model after one got no reply [-] (0 in-process).
+  virtual long failovers() const { return 0; }
 };
 
 /// A ContactModel called directly.

@@ -50,6 +50,9 @@ const std::vector<RunCounter>& run_counter_table() {
       counter("contact_retries", "-", "contact queries re-sent after a timeout (over the bus)", &C::contact_retries),
       counter("contact_timeouts", "-", "attempt rounds without a reply (the run waited for a service)",
               &C::contact_timeouts),
+      counter("contact_failovers", "-",
+              "queries sent to every other READY instance of the model after a round without a reply",
+              &C::contact_failovers),
       counter("last_order", "-", "method order of the last step", &C::last_order, CounterSum::kKept),
       counter("last_step", "s", "size of the last step", &C::last_step, CounterSum::kKept),
   };

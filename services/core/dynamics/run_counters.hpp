@@ -28,6 +28,7 @@ struct RunCounters {
   long contact_configurations = 0;  ///< configurations in them [-]
   long contact_retries = 0;    ///< contact queries re-sent after a timeout (over the bus) [-]
   long contact_timeouts = 0;   ///< attempt rounds without a reply (the run waited for a service) [-]
+  long contact_failovers = 0;  ///< queries sent to every other READY instance after a round without a reply [-]
   int last_order = 0;          ///< method order of the last step [-]
   double last_step = 0;        ///< size of the last step [s]
 

@@ -244,6 +244,7 @@ RunCounters WheelsetSimulation::counters() const {
   c += own_;
   c.contact_retries += contact_->retries();
   c.contact_timeouts += contact_->timeouts();
+  c.contact_failovers += contact_->failovers();
   c.last_order = now.last_order;
   c.last_step = now.last_step;
   return c;
@@ -482,6 +483,7 @@ void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
     swaps_.push_back({t_, previous->model(), next->model()});
     own_.contact_retries += previous->retries();
     own_.contact_timeouts += previous->timeouts();
+    own_.contact_failovers += previous->failovers();
   } catch (const std::exception& e) {
     contact_ = previous;
     formulation_ = from;

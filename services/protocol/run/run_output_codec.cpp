@@ -53,6 +53,7 @@ const std::vector<MessageField<integrator_stats_t>>& stats_fields() {
       WRC_MESSAGE_FIELD(M, contact_configurations),
       WRC_MESSAGE_FIELD(M, contact_retries),
       WRC_MESSAGE_FIELD(M, contact_timeouts),
+      WRC_MESSAGE_FIELD(M, contact_failovers),
       WRC_MESSAGE_FIELD(M, last_order),
       WRC_MESSAGE_FIELD(M, last_step),
   };

@@ -1,0 +1,209 @@
+/// @file
+/// Contact queries fail over (services/dynamicsd/bus_contact.hpp), over memq://: an instance that
+/// claims to be the leader of its model (READY, the smallest name) and never answers, as a hung
+/// process or a key holder's forged heartbeat does, costs the dynamics one round of attempts, not
+/// the run. The responder here is instance "b" of onepoint behind the contact service's own
+/// leader rule (contactd/instance_filter.hpp), so it answers an unaddressed query only while no
+/// READY instance with a smaller name is heard, and every query addressed to it. Also the
+/// heartbeat table's two look-ups the fail-over and the leader rule use.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bus/auth/message_auth.hpp"
+#include "bus/auth/signed_publish.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
+#include "bus/transport/channels.hpp"
+#include "bus/transport/guarded_subscription.hpp"
+#include "bus/transport/request_client.hpp"
+#include "contactd/instance_filter.hpp"
+#include "dynamicsd/bus_contact.hpp"
+#include "memq_bus.hpp"
+#include "protocol/contact/contact_query_codec.hpp"
+#include "test_bus_key.hpp"
+#include "wrc/contact_query_t.hpp"
+#include "wrc/contact_reply_t.hpp"
+
+namespace wrc::dynamics {
+namespace {
+
+constexpr const char* kKey = "geometry-key-of-the-run";
+
+// A heartbeat of model/instance in state, signed by a process of its own (nonce).
+void publish_heartbeat(lcm::LCM& lcm, const std::string& model, const std::string& instance, std::int8_t state,
+                       std::uint64_t nonce, const std::string& geometry_key = kKey) {
+  heartbeat_t hb{};
+  hb.model = model;
+  hb.instance = instance;
+  hb.state = state;
+  hb.period = 10.0;  // alive for the whole test
+  hb.interface_version = heartbeat_t::INTERFACE_VERSION;
+  hb.geometry_key = geometry_key;
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(hb.getEncodedSize()));
+  hb.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  bus::MessageAuth(bus::test::test_bus_key(), nonce).sign("HEARTBEAT", bytes);
+  lcm.publish("HEARTBEAT", bytes.data(), static_cast<unsigned>(bytes.size()));
+}
+
+// Instance "b" of onepoint: answers what the leader rule gives it, with one result per
+// configuration whose normal force is the configuration's lateral shift (so an answer shows
+// which query it belongs to).
+class Responder {
+ public:
+  explicit Responder(lcm::LCM& lcm)
+      : lcm_(lcm),
+        filter_(lcm, "HEARTBEAT", "onepoint", "b"),
+        queries_(lcm, "CONTACT_QUERY.onepoint", "test responder",
+                 [this](const contact_query_t& q, const bus::ReceivedMessage&) { on_query(q); }) {}
+  int unaddressed_seen = 0;
+  int answered = 0;
+
+ private:
+  void on_query(const contact_query_t& q) {
+    if (q.instance.empty()) ++unaddressed_seen;
+    if (!filter_.answers(q)) return;
+    contact_reply_t r{};
+    r.request_id = q.request_id;
+    r.status = contact_reply_t::OK;
+    r.model = "onepoint";
+    r.instance = "b";
+    r.geometry_key = q.geometry_key;
+    r.num_configurations = q.num_configurations;
+    r.results.resize(static_cast<std::size_t>(q.num_configurations));
+    for (std::size_t k = 0; k < r.results.size(); ++k) {
+      r.results[k].num_patches = 1;
+      r.results[k].patches.resize(1);
+      r.results[k].patches[0].normal_force = q.configurations[k].y;
+    }
+    ++answered;
+    bus::publish_signed(lcm_, q.reply_channel, r);
+  }
+  lcm::LCM& lcm_;
+  contactd::InstanceFilter filter_;
+  bus::GuardedSubscription<contact_query_t> queries_;
+};
+
+struct FailoverBus {
+  lcm::LCM lcm{"memq://"};
+  bus::ChannelNames names{""};
+  bus::HeartbeatMonitor monitor{lcm, "HEARTBEAT"};
+  bus::RequestClient<contact_query_t, contact_reply_t> client{lcm, "CONTACT_QUERY.onepoint", "CONTACT_REPLY.test",
+                                                              "test-dynamics"};
+  BusContactSettings settings() const {
+    BusContactSettings s;
+    s.model = "onepoint";
+    s.geometry_key = kKey;
+    s.policy = {0.02, 1};  // [s], re-sends: a round is 2 attempts of 20 ms
+    s.wait = 1.0;
+    return s;
+  }
+};
+
+std::vector<ContactQuery> one_query(double y) {
+  std::vector<ContactQuery> batch(1);
+  batch[0].pose.y = y;
+  return batch;
+}
+
+// A READY "a" that never answers (the leader by name), and "b" that does: the first query costs
+// one round, goes to every READY instance by name and is answered by b; later queries are
+// addressed to b and answered at once. Without the fail-over no unaddressed query is answered.
+TEST(ContactFailover, ASilentLeaderCostsOneRoundNotTheRun) {
+  FailoverBus bus;
+  Responder b(bus.lcm);
+  publish_heartbeat(bus.lcm, "onepoint", "a", heartbeat_t::READY, 101);
+  publish_heartbeat(bus.lcm, "onepoint", "b", heartbeat_t::READY, 102);
+  bus::test::drain(bus.lcm);
+  ASSERT_EQ(bus.monitor.ready_instances("onepoint", kKey, bus::monotonic_seconds()),
+            (std::vector<std::string>{"a", "b"}));
+
+  // The leader rule alone: an unaddressed query gets no answer while a is READY.
+  contact_query_t bare{};
+  std::vector<ContactQuery> batch = one_query(0.001);
+  protocol::to_query_message(batch, bare);
+  bare.model = "onepoint";
+  bare.geometry_key = kKey;
+  EXPECT_FALSE(bus.client.call(bare, {0.02, 1}));
+  EXPECT_EQ(b.answered, 0);
+
+  BusContact contact(bus.client, bus.monitor, bus.names, bus.settings());
+  const std::vector<ContactResult> first = contact.evaluate(one_query(0.002));
+  ASSERT_EQ(first.size(), 1u);
+  ASSERT_EQ(first[0].patches.size(), 1u);
+  EXPECT_EQ(first[0].patches[0].normal_force, 0.002);
+  EXPECT_EQ(contact.failovers(), 1);
+  EXPECT_EQ(contact.timeouts(), 1);  // the unaddressed round
+  EXPECT_EQ(contact.addressed_instance(), "b");
+
+  for (int k = 1; k <= 20; ++k) {
+    const double y = 0.002 + 1e-4 * k;
+    const std::vector<ContactResult> r = contact.evaluate(one_query(y));
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_EQ(r[0].patches[0].normal_force, y);
+  }
+  EXPECT_EQ(contact.failovers(), 1);
+  EXPECT_EQ(contact.timeouts(), 1);
+  EXPECT_EQ(contact.retries(), 1);  // the unaddressed round's re-send only
+  EXPECT_EQ(b.answered, 21);
+}
+
+// Nobody answers: every round fails over to the READY instances and the wait ends in an error
+// naming the model; a named instance (settings.instance) is never failed over from.
+TEST(ContactFailover, NoAnswerAnywhereEndsTheWaitWithTheReason) {
+  FailoverBus bus;
+  publish_heartbeat(bus.lcm, "onepoint", "a", heartbeat_t::READY, 201);
+  bus::test::drain(bus.lcm);
+  BusContactSettings s = bus.settings();
+  s.wait = 0.2;
+  BusContact contact(bus.client, bus.monitor, bus.names, s);
+  try {
+    contact.evaluate(one_query(0.001));
+    FAIL() << "no service answered, yet evaluate returned";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no contact service onepoint answered"), std::string::npos) << e.what();
+  }
+  EXPECT_GE(contact.failovers(), 1);
+  EXPECT_EQ(contact.timeouts(), 2 * contact.failovers());  // each round and its fail-over round
+  EXPECT_TRUE(contact.addressed_instance().empty());
+
+  Responder b(bus.lcm);
+  publish_heartbeat(bus.lcm, "onepoint", "b", heartbeat_t::READY, 202);
+  bus::test::drain(bus.lcm);
+  s.instance = "a";  // asked by name: a's silence is the answer, b is not asked
+  BusContact named(bus.client, bus.monitor, bus.names, s);
+  EXPECT_THROW(named.evaluate(one_query(0.001)), std::runtime_error);
+  EXPECT_EQ(named.failovers(), 0);
+  EXPECT_EQ(b.answered, 0);
+}
+
+// The table's look-ups: ready_instances lists the READY instances of a model with the key, sorted
+// and once each (two processes of one name count once), not the other states, models or keys;
+// available_before says whether a READY instance with a smaller name is heard.
+TEST(ContactFailover, HeartbeatTableLookups) {
+  lcm::LCM lcm("memq://");
+  bus::HeartbeatMonitor monitor(lcm, "HEARTBEAT");
+  publish_heartbeat(lcm, "onepoint", "c", heartbeat_t::READY, 1);
+  publish_heartbeat(lcm, "onepoint", "c", heartbeat_t::READY, 2);
+  publish_heartbeat(lcm, "onepoint", "b", heartbeat_t::STARTING, 3);
+  publish_heartbeat(lcm, "onepoint", "d", heartbeat_t::READY, 4, "another-key");
+  publish_heartbeat(lcm, "interp", "a", heartbeat_t::READY, 5);
+  publish_heartbeat(lcm, "onepoint", "e", heartbeat_t::READY, 6);
+  bus::test::drain(lcm);
+  const double now = bus::monotonic_seconds();
+  EXPECT_EQ(monitor.ready_instances("onepoint", kKey, now), (std::vector<std::string>{"c", "e"}));
+  EXPECT_EQ(monitor.ready_instances("onepoint", "", now), (std::vector<std::string>{"c", "d", "e"}));
+  EXPECT_TRUE(monitor.ready_instances("multipoint", "", now).empty());
+  EXPECT_FALSE(monitor.available_before("onepoint", "c", now));  // b is only STARTING
+  EXPECT_TRUE(monitor.available_before("onepoint", "c0", now));
+  EXPECT_FALSE(monitor.available_before("interp", "a", now));
+  EXPECT_TRUE(monitor.available_before("interp", "b", now));
+  // Past three periods (30 s) nobody is alive any more.
+  EXPECT_TRUE(monitor.ready_instances("onepoint", "", now + 31.0).empty());
+  EXPECT_FALSE(monitor.available_before("onepoint", "z", now + 31.0));
+}
+
+}  // namespace
+}  // namespace wrc::dynamics

@@ -25,6 +25,19 @@ namespace {
 
 constexpr double kCommandRepeat = 0.5;  // [s] re-send the START until the dynamics acknowledges it
 constexpr double kSilenceLimit = 30.0;  // [s] without any status of the run: the dynamics is gone
+// [s] Without a status from the process running the run while its heartbeats have stopped too
+// (3 missed periods, bus::HeartbeatMonitor): that process is gone, the run is sent again. Statuses
+// come every 0.5 s (wrc-dynamicsd's kStatusPeriod), heartbeats every period, so a lossy bus alone
+// loses both for this long with a chance of about 0.05^7 at 5 % loss; a false alarm costs nothing
+// but a count (a live process ignores a START whose request id it has seen).
+constexpr double kRunnerSilence = 2.0;
+
+// Whether the process with the sender nonce runner beats as a live wrc-dynamicsd (monitor's view at now [s]).
+bool dynamics_alive(const bus::HeartbeatMonitor& monitor, std::uint64_t runner, double now) {
+  for (const bus::ServiceStatus& s : monitor.services(now))
+    if (s.nonce == runner && s.last.model == "dynamicsd" && s.alive) return true;
+  return false;
+}
 
 }  // namespace
 
@@ -42,6 +55,7 @@ void RunSession::start_services() {
     if (s) started_.push_back(std::move(s));
   };
   keep(ensure_service(*session_.lcm, session_.monitor, context, "dynamicsd", "", "wrc-dynamicsd", {}));
+  if (!started_.empty()) own_dynamics_ = started_.back().get();
   if (request_.in_process) return;
   std::vector<std::string> models{request_.model};
   for (const auto& s : request_.swaps) models.push_back(s.model);
@@ -65,6 +79,7 @@ const run_summary_t& RunSession::run() {
   command.request_id = static_cast<std::int64_t>(bus::wall_utime());
   command.geometry_key = key_;
   bool acknowledged = false;
+  std::uint64_t runner = 0;  // sender nonce of the process running the run (its acknowledgement)
   double last_heard = bus::monotonic_seconds();
   ProgressBar bar("run " + request_.model);
   std::optional<integrator_stats_t> stats;
@@ -77,10 +92,11 @@ const run_summary_t& RunSession::run() {
       }, 10000);
   bus::GuardedSubscription<run_status_t> status(
       lcm, session_.names.name(bus::channel::kRunStatus), "run status",
-      [&](const run_status_t& m, const bus::ReceivedMessage&) {
+      [&](const run_status_t& m, const bus::ReceivedMessage& info) {
         if (m.request_id != command.request_id) return;
+        if (!acknowledged) runner = info.origin.nonce;
         acknowledged = true;
-        last_heard = bus::monotonic_seconds();
+        if (info.origin.nonce == runner) last_heard = bus::monotonic_seconds();
         status_line = m.model;
       });
   bus::GuardedSubscription<integrator_stats_t> counters(
@@ -116,6 +132,18 @@ const run_summary_t& RunSession::run() {
       std::cerr << "\nrun: stopping " << run_id << "\n";
     }
     lcm.handleTimeout(50);
+    if (acknowledged && !stop_sent && bus::monotonic_seconds() - last_heard > kRunnerSilence &&
+        !dynamics_alive(session_.monitor, runner, bus::monotonic_seconds())) {
+      // The process running the run is gone (killed, crashed, its machine lost): the run is sent
+      // again, to the instance that takes over (restarted by the launcher, or by this command when
+      // it started the service). The run is deterministic, so it ends as the lost one would have.
+      restart_own_dynamics();
+      acknowledged = false;
+      next_send = 0.0;
+      ++resends_;
+      std::cerr << "\nrun: the wrc-dynamicsd running " << run_id << " is gone; sending the run again (#" << resends_
+                << ")\n";
+    }
     if (bus::monotonic_seconds() - last_heard > kSilenceLimit) {
       throw std::runtime_error("no status of run " + run_id + " for " + std::to_string(kSilenceLimit) +
                                " s: the dynamics service is gone" +
@@ -132,14 +160,29 @@ const run_summary_t& RunSession::run() {
   return *summary_;
 }
 
+void RunSession::restart_own_dynamics() {
+  if (!own_dynamics_ || own_dynamics_->alive()) return;
+  std::cerr << "\nrun: the wrc-dynamicsd it started has ended (log: " << own_dynamics_->log() << "); starting another\n";
+  const StartContext context = start_context_from(options_, "run", "r" + std::to_string(::getpid()));
+  std::unique_ptr<StartedService> again =
+      ensure_service(*session_.lcm, session_.monitor, context, "dynamicsd", "", "wrc-dynamicsd", {});
+  own_dynamics_ = again.get();
+  if (again) started_.push_back(std::move(again));
+}
+
 int RunSession::finish() {
   const run_summary_t& s = *summary_;
-  write_summary(options_.required_text("--summary"), summary_json(s, request_, key_));
+  nlohmann::json summary = summary_json(s, request_, key_);
+  summary["run_resends"] = resends_;
+  write_summary(options_.required_text("--summary"), summary);
   if (options_.has("--history")) write_history(options_.text("--history"), history_);
   std::cerr << "run: " << request_.run_id << " " << protocol::run_state_name(s.state) << " at t = " << s.t_end
             << " s with " << s.model << ": y = " << s.y << " m, yaw = " << s.yaw << " rad; " << s.wall_time
             << " s wall, " << s.stats.steps << " steps, " << s.stats.restarts << " restarts"
             << (s.message.empty() ? "" : " (" + s.message + ")") << "\n";
+  if (resends_ > 0)
+    std::cerr << "run: sent again " << resends_ << (resends_ == 1 ? " time" : " times")
+              << " after losing the dynamics service running it, from the start each time\n";
   if (s.stats.two_point_entries > 0)
     std::cerr << "run: rigid two-point contact (sliding between two equally low minima) entered "
               << s.stats.two_point_entries << " times, " << s.stats.two_point_time << " s in all\n";

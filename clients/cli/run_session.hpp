@@ -2,7 +2,8 @@
 /// @file
 /// One `wrc run` as a session: the services the run needs started (wrc-dynamicsd, the contact
 /// services of its models, wrc-geometryd for those that need data) when none runs, the START
-/// sent until acknowledged, the progress shown, the history and the summary collected, written
+/// sent until acknowledged (and again, from the start, when the process running it is lost: its
+/// statuses and heartbeats stop), the progress shown, the history and the summary collected, written
 /// and reported, and the services started for it stopped.
 
 #include <map>
@@ -27,7 +28,10 @@ class RunSession {
 
   /// Starts every service the run needs that is not running.
   void start_services();
-  /// Sends the run and follows it to its summary (a stop is sent on SIGINT / SIGTERM).
+  /// Sends the run and follows it to its summary (a stop is sent on SIGINT / SIGTERM). When the
+  /// wrc-dynamicsd running it goes silent (no status for 2 s and its heartbeats missed), the run is
+  /// sent again to the instance that takes over (one this command started is started again); the
+  /// summary counts it (run_resends).
   /// @throws std::runtime_error when the dynamics goes silent for kSilenceLimit [s].
   const run_summary_t& run();
   /// Writes the summary (--summary) and the history (--history), reports the run on stderr and
@@ -39,7 +43,12 @@ class RunSession {
   protocol::RunRequest request_;
   std::string key_;  ///< geometry key of the request
   CommandBus session_;
+  /// Starts the wrc-dynamicsd again when this command started it and it has ended.
+  void restart_own_dynamics();
+
   std::vector<std::unique_ptr<StartedService>> started_;
+  StartedService* own_dynamics_ = nullptr;  ///< the wrc-dynamicsd this command started, if any
+  long resends_ = 0;                        ///< times the run was sent again to a new dynamics process
   std::map<double, wheelset_state_t> history_;
   std::optional<run_summary_t> summary_;
 };

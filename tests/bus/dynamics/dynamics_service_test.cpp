@@ -2,8 +2,9 @@
 // (every test in a private network namespace): every model runs and writes its summary; a live
 // swap made from another process is listed and reproduced bit for bit by --swap-at; a swap to a
 // missing service is refused with the reason; 5 % packet
-// loss and a contact service killed with SIGKILL (restarted by the launcher) end in the same final
-// state as an undisturbed run, bit for bit.
+// loss, a contact service killed with SIGKILL (restarted by the launcher) and wrc-dynamicsd
+// killed mid-run (the run sent again to the one that takes over) end in the same final state as
+// an undisturbed run, bit for bit.
 #include <signal.h>
 #include <sys/wait.h>
 
@@ -420,6 +421,80 @@ TEST_F(DynamicsServiceTest, KilledContactServiceIsWaitedForAndTheRunEndsTheSame)
   expect_same_final_state(clean, killed);
   launcher->signal(SIGINT);
   launcher->wait(20.0);
+}
+
+// Every counter of two summaries equal but the bus's own (re-sends and rounds without a reply,
+// which a loaded machine may cause): the same run from its start.
+void expect_same_counters(const nlohmann::json& a, const nlohmann::json& b) {
+  for (const auto& [name, value] : a["counters"].items()) {
+    if (name != "contact_retries" && name != "contact_timeouts" && name != "contact_failovers") {
+      EXPECT_EQ(value, b["counters"][name]) << name;
+    }
+  }
+}
+
+// The pid of the READY wrc-dynamicsd heard last (0: none).
+int ready_dynamics_pid(const HeartbeatMonitor& monitor) {
+  int pid = 0;
+  for (const ServiceStatus& s : monitor.services(monotonic_seconds()))
+    if (s.last.model == "dynamicsd" && s.available()) pid = s.last.pid;
+  return pid;
+}
+
+class KilledDynamicsTest : public DynamicsServiceTest {
+ protected:
+  // A multipoint run to 10 s (about 5 s of wall time) undisturbed, then the same run with its
+  // wrc-dynamicsd killed (SIGKILL) once it is 1 s into the run: the second run re-sent once
+  // (`wrc run` says why, and what it did in its log line `recovery`), ending where the first
+  // does in every state and counter.
+  void expect_same_run_after_the_kill(const std::string& recovery) {
+    const nlohmann::json clean = run(run_args("multipoint", 10.0, temp_path("clean.json")), "clean");
+    ASSERT_EQ(clean["state"], "finished") << clean.dump();
+    EXPECT_EQ(clean["run_resends"], 0);
+    const std::vector<std::string> args = run_args("multipoint", 10.0, temp_path("killed.json"));
+    const std::string log = temp_path("killed.log");
+    ChildProcess cli(WRC_CLI_PATH, args, log);
+    ASSERT_TRUE(wait_running_past(run_id(temp_path("killed.json")), 1.0, kRunDeadline)) << read_text(log);
+    const int killed_pid = ready_dynamics_pid(*monitor_);
+    ASSERT_GT(killed_pid, 0);
+    ASSERT_EQ(::kill(killed_pid, SIGKILL), 0);
+    int restarted_pid = 0;  // the process that takes over, heard while the run goes on
+    ASSERT_TRUE(handle_until(
+        [&] {
+          if (const int pid = ready_dynamics_pid(*monitor_); pid != killed_pid && pid > 0) restarted_pid = pid;
+          return cli.wait(0.0);
+        },
+        kRunDeadline))
+        << read_text(log);
+    const nlohmann::json killed = summary(args);
+    ASSERT_EQ(killed["state"], "finished") << killed.dump() << "\n" << read_text(log);
+    EXPECT_EQ(killed["run_resends"], 1) << read_text(log);
+    EXPECT_NE(read_text(log).find("is gone; sending the run again"), std::string::npos) << read_text(log);
+    EXPECT_NE(read_text(log).find(recovery), std::string::npos) << read_text(log);
+    EXPECT_GT(restarted_pid, 0);
+    EXPECT_NE(restarted_pid, killed_pid);
+    expect_same_final_state(clean, killed);
+    expect_same_counters(clean, killed);
+  }
+};
+
+// wrc-dynamicsd killed in the middle of a run under `wrc launch`: `wrc run` hears neither its
+// statuses nor its heartbeats, sends the run again to the instance the launcher restarts, and
+// the run (deterministic, from the start again) ends bit for bit where an undisturbed one does.
+TEST_F(KilledDynamicsTest, TheRunIsSentAgainToTheRestartedServiceAndEndsTheSame) {
+  const std::string log = temp_path("launch.log");
+  auto launcher = launch({"contact-multipoint", "dynamics"}, log);
+  for (const char* model : {"multipoint", "dynamicsd"})
+    ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
+  expect_same_run_after_the_kill("run: sent again 1 time after losing");
+  EXPECT_NE(read_text(log).find("restart #"), std::string::npos) << read_text(log);
+  launcher->signal(SIGINT);
+  launcher->wait(20.0);
+}
+
+// The same without a launcher: `wrc run` started wrc-dynamicsd itself, so it starts another.
+TEST_F(KilledDynamicsTest, AServiceTheRunStartedIsStartedAgain) {
+  expect_same_run_after_the_kill("has ended (log: ");
 }
 
 }  // namespace

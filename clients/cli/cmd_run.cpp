@@ -7,6 +7,7 @@
 
 #include "cli/command.hpp"
 #include "cli/options.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/run_options.hpp"
 #include "cli/run_session.hpp"
 
@@ -25,7 +26,10 @@ int run_run(const std::vector<std::string>& args) {
     return 0;
   }
   protocol::RunRequest request = run_request_from(o);
-  o.required_text("--summary");  // before any service starts
+  // Before any service starts: the outputs can be written, so that a mistyped folder is one line,
+  // not a run that fails at its end.
+  check_output_path(o.required_text("--summary"), "--summary");
+  if (o.has("--history")) check_output_path(o.text("--history"), "--history");
   RunSession session(o, std::move(request));
   session.start_services();
   session.run();

@@ -703,5 +703,14 @@ TEST_F(EarlyErrors, FitAndPlotCheckTheirOutputFirst) {
                                 {"wrc plot: --out /nonexistent-wrc/p.png: " + no_folder});
 }
 
+// `wrc run --wheel tests/data/bad_nan.txt` printed the services' logs (5-6 lines); like `wrc query`
+// it now builds the geometry first and fails with the profile reader's one line.
+TEST_F(EarlyErrors, RunRefusesABadProfileInOneLine) {
+  const std::string bad = std::string(WRC_SOURCE_DIR) + "/tests/data/bad_nan.txt";
+  expect_one_line_error_at_once(run_ + " --summary " + temp_path("s.json") + " --wheel " + bad,
+                                {"wrc run: " + bad + ":4: NaN or infinite value"});
+  EXPECT_FALSE(std::filesystem::exists(temp_path("s.json")));
+}
+
 }  // namespace
 }  // namespace wrc::bus::test

@@ -712,5 +712,23 @@ TEST_F(EarlyErrors, RunRefusesABadProfileInOneLine) {
   EXPECT_FALSE(std::filesystem::exists(temp_path("s.json")));
 }
 
+// Parameter file errors name the file and the key: a number beyond a double (1e999: the JSON
+// library's message named neither), a count too large (max_steps 1e30: was "not a whole number"),
+// a key given twice (was taken silently); the too large count on the command line too.
+TEST_F(EarlyErrors, RunParameterFileErrorsNameTheFileAndTheKey) {
+  const std::string summary = " --summary " + temp_path("s.json");
+  const std::string huge = write_file("huge.json", "{\"speed\": 1e999}");
+  expect_one_line_error_at_once(run_ + summary + " --params " + huge,
+                                {"wrc run: " + huge + ": speed = 1e999 is not a finite number (valid: (0, "});
+  const std::string steps = write_file("steps.json", "{\"max_steps\": 1e30}");
+  expect_one_line_error_at_once(run_ + summary + " --params " + steps,
+                                {"wrc run: " + steps + ": max_steps = 1e+30 is outside [1, 1e+12] [-]"});
+  const std::string twice = write_file("twice.json", "{\"speed\": 10,\n \"mass\": 1500,\n \"speed\": 10}");
+  expect_one_line_error_at_once(run_ + summary + " --params " + twice,
+                                {"wrc run: " + twice + ": speed: duplicate key"});
+  expect_one_line_error_at_once(run_ + summary + " --max-steps 1e30",
+                                {"wrc run: --max-steps: 1e30 is outside [1, 1e+12] [-]"});
+}
+
 }  // namespace
 }  // namespace wrc::bus::test

@@ -730,5 +730,23 @@ TEST_F(EarlyErrors, RunParameterFileErrorsNameTheFileAndTheKey) {
                                 {"wrc run: --max-steps: 1e30 is outside [1, 1e+12] [-]"});
 }
 
+// 10 000 scheduled swaps were refused by the dynamics service as "does not match the swap lists";
+// `wrc run --swap-at` now refuses more than the limit itself, naming it; the limit itself passes
+// (the error is then the next one, the summary path).
+TEST_F(EarlyErrors, RunRefusesMoreSwapsThanTheLimitNamingIt) {
+  auto swaps = [](int count) {
+    std::string text;
+    for (int k = 1; k <= count; ++k) text += (k > 1 ? "," : "") + std::to_string(k) + ":interp";
+    return text;
+  };
+  const std::string run = "run --model onepoint --t-end 20000 --channel-prefix early";
+  expect_one_line_error_at_once(run + " --summary " + temp_path("s.json") + " --swap-at " + swaps(10000),
+                                {"wrc run: --swap-at: 10000 swaps, more than the limit of 1000"});
+  expect_one_line_error_at_once(run + " --summary " + temp_path("s.json") + " --swap-at " + swaps(1001),
+                                {"wrc run: --swap-at: 1001 swaps, more than the limit of 1000"});
+  expect_one_line_error_at_once(run + " --summary /nonexistent-wrc/x.json --swap-at " + swaps(1000),
+                                {"--summary /nonexistent-wrc/x.json"});
+}
+
 }  // namespace
 }  // namespace wrc::bus::test

@@ -14,6 +14,7 @@
 #include "cli/fit_on_service.hpp"
 #include "cli/fit_options.hpp"
 #include "cli/options.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/progress_bar.hpp"
 #include "cli/service_starter.hpp"
@@ -164,6 +165,7 @@ int run_fit(const std::vector<std::string>& args) {
   for (const char* only_service : {"--recompute", "--wait"})
     if (opt.has(only_service)) throw UsageError(std::string(only_service) + " needs --service");
   const std::string report_path = opt.required_text("--report");
+  check_output_path(report_path, "--report");  // before the fit, not after it
   const WheelsetGeometry geometry = make_geometry(spec);
 
   ProgressBar fit_bar("fit");

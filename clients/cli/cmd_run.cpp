@@ -7,8 +7,10 @@
 
 #include "cli/command.hpp"
 #include "cli/options.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/run_options.hpp"
 #include "cli/run_session.hpp"
+#include "core/geometry/geometry_spec.hpp"
 
 namespace wrc::cli {
 namespace {
@@ -25,7 +27,12 @@ int run_run(const std::vector<std::string>& args) {
     return 0;
   }
   protocol::RunRequest request = run_request_from(o);
-  o.required_text("--summary");  // before any service starts
+  // Before any service starts: the outputs can be written and the profiles and track make a
+  // geometry (built here as `wrc query` builds it), so that a mistake is one line naming the file,
+  // not a log of services or a run that fails at its end.
+  check_output_path(o.required_text("--summary"), "--summary");
+  if (o.has("--history")) check_output_path(o.text("--history"), "--history");
+  make_geometry(request.geometry);
   RunSession session(o, std::move(request));
   session.start_services();
   session.run();

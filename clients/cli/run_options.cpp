@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "cli/profile_options.hpp"
@@ -14,6 +15,11 @@
 namespace wrc::cli {
 
 std::vector<protocol::ScheduledSwap> parse_swaps(const std::string& text, double t_end) {
+  // The run command's limit (protocol/run/run_command_codec.hpp), here rather than at the service.
+  const std::size_t count = static_cast<std::size_t>(std::count(text.begin(), text.end(), ',')) + 1;
+  if (count > protocol::kMaxScheduledSwaps)
+    throw UsageError("--swap-at: " + std::to_string(count) + " swaps, more than the limit of " +
+                     std::to_string(protocol::kMaxScheduledSwaps));
   std::vector<protocol::ScheduledSwap> swaps;
   std::stringstream list(text);
   std::string item;
@@ -37,7 +43,10 @@ std::vector<OptionSpec> run_option_specs() {
       {"--summary", true, "write the run summary here (JSON)", ""},
       {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
       {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
-      {"--swap-at", true, "swap the model at the first step at or after simulated times: T:M[,T2:M2...]", "none"},
+      {"--swap-at", true,
+       "swap the model at the first step at or after simulated times: T:M[,T2:M2...], at most " +
+           std::to_string(protocol::kMaxScheduledSwaps),
+       "none"},
       {"--history", true, "write the state at every output period here (CSV)", "none"},
       {"--in-process", false, "the dynamics evaluates the contact model itself (comparison only)", ""},
       {"--run-id", true, "name of the run", "run-<pid>"},

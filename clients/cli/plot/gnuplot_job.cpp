@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/options.hpp"
+#include "cli/output_paths.hpp"
 
 namespace wrc::cli::plot {
 namespace fs = std::filesystem;
@@ -71,6 +72,7 @@ ImageRequest image_request(const std::string& path, int width, int height) {
   if (ext == ".png") image.terminal = "pngcairo noenhanced font 'Sans,11' linewidth 1.5";
   else if (ext == ".svg") image.terminal = "svg noenhanced font 'Sans,11' linewidth 1.5 background '#ffffff'";
   else throw UsageError("--out: '" + path + "' must end in .png or .svg");
+  check_output_path(path, "--out");  // before the computation and gnuplot, not after them
   return image;
 }
 

@@ -18,7 +18,8 @@ struct ImageRequest {
 };
 
 /// The image request for path; throws UsageError naming the file for an extension other than
-/// .png or .svg, or a size outside [100, 10000] px.
+/// .png or .svg, a path that cannot be written (cli/output_paths.hpp), or a size outside
+/// [100, 10000] px.
 ImageRequest image_request(const std::string& path, int width, int height);
 
 /// A gnuplot string literal (double-quoted, backslashes and quotes escaped, newlines as \n).

@@ -105,8 +105,8 @@ const std::vector<Parameter<IntegratorSettings>>& integrator_settings_table() {
       member_parameter<G>({"velocity_tolerance", nullptr, "m/s, rad/s", "absolute tolerance of the rates",
                            ParameterKind::kNumber, kPositive}, &G::velocity_tolerance),
       member_parameter<G>({"max_step", nullptr, "s", "largest step", ParameterKind::kNumber, kPositive}, &G::max_step),
-      member_parameter<G>({"max_steps", nullptr, "-", "steps before the run fails", ParameterKind::kInteger, kPositive},
-                          &G::max_steps),
+      member_parameter<G>({"max_steps", nullptr, "-", "steps before the run fails", ParameterKind::kInteger,
+                           closed(1, kMaxRunSteps)}, &G::max_steps),
       member_parameter<G>({"output_period", nullptr, "s", "simulated time between output samples",
                            ParameterKind::kNumber, kPositive}, &G::output_period),
   };

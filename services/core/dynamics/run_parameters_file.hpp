@@ -2,8 +2,9 @@
 /// @file
 /// The run parameter file (`wrc run --params FILE`): a JSON object whose keys are those of
 /// run_parameter_table() (core/dynamics/run_parameter_table.hpp; the same names as run_command_t's
-/// fields), comments allowed. Keys not given keep their value; an unknown key, a wrong type or an
-/// invalid value (the table's rule) is an error naming the file and the key.
+/// fields), comments allowed. Keys not given keep their value; an unknown key, a key given twice
+/// (in any object), a wrong type, a number beyond the range of a double (1e999) or an invalid
+/// value (the table's rule: kind and range) is an error naming the file and the key.
 
 #include <string>
 

@@ -65,6 +65,10 @@ struct InitialState {
   void validate() const;
 };
 
+/// Largest max_steps [-] (run_parameter_table()'s range [1, kMaxRunSteps]): 5e5 times the default,
+/// and a whole number that a double and the message's int64 hold exactly.
+inline constexpr double kMaxRunSteps = 1e12;
+
 /// Time integration (SUNDIALS IDA, BDF of variable order and step).
 struct IntegratorSettings {
   double t_end = 2.0;                 ///< simulated end time [s], > 0

@@ -77,7 +77,8 @@ double ParameterInfo::parse(const std::string& text, const std::string& what) co
     throw std::invalid_argument(what + ": '" + text + "' is not true or false");
   }
   const double value = parse_finite_number(text, what);
-  if (kind == ParameterKind::kInteger && (value != std::floor(value) || std::abs(value) >= 1e12))
+  // A whole number too large for its parameter is outside the range (violation()), not "not whole".
+  if (kind == ParameterKind::kInteger && value != std::floor(value))
     throw std::invalid_argument(what + ": '" + text + "' is not a whole number");
   return value;
 }

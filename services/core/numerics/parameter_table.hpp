@@ -58,6 +58,9 @@ struct ParameterInfo {
   const char* unit;         ///< e.g. "rad"; "-" for none
   const char* description;  ///< one line, no unit
   ParameterKind kind = ParameterKind::kNumber;
+  /// A kInteger entry's range is finite and within +-2^53 (every whole number in it exact in a
+  /// double and within its member's type): a too large count is outside it, not "not a whole
+  /// number" (tests/bus/unit/parameter_tables_test.cpp holds every table to it).
   ParameterRange range = kAnyFinite;
   /// The default as --help shows it when the number would not say it (the inclination's "1:40");
   /// nullptr: the value of T{}.

@@ -75,11 +75,16 @@ RunRequest from_message(const run_command_t& m) {
   from_message_fields(run_request_table(), m, run_command_fields(), r);
   r.spec.validate();  // the rules between parameters
   const IntegratorSettings& g = r.spec.integrator;
-  if (m.num_scheduled_swaps < 0 || m.num_scheduled_swaps > 1000 ||
-      static_cast<std::size_t>(m.num_scheduled_swaps) != m.scheduled_swap_times.size() ||
+  const std::string swaps = "num_scheduled_swaps = " + std::to_string(m.num_scheduled_swaps);
+  if (m.num_scheduled_swaps < 0) throw std::invalid_argument(swaps + " is negative");
+  if (static_cast<std::size_t>(m.num_scheduled_swaps) > kMaxScheduledSwaps)
+    throw std::invalid_argument(swaps + " is more than the limit of " + std::to_string(kMaxScheduledSwaps) +
+                                " scheduled swaps");
+  if (static_cast<std::size_t>(m.num_scheduled_swaps) != m.scheduled_swap_times.size() ||
       m.scheduled_swap_models.size() != m.scheduled_swap_times.size())
-    throw std::invalid_argument("num_scheduled_swaps = " + std::to_string(m.num_scheduled_swaps) +
-                                " does not match the swap lists");
+    throw std::invalid_argument(swaps + " does not match the swap lists (" +
+                                std::to_string(m.scheduled_swap_times.size()) + " times, " +
+                                std::to_string(m.scheduled_swap_models.size()) + " models)");
   double last = 0.0;
   for (std::size_t k = 0; k < m.scheduled_swap_times.size(); ++k) {
     const double t = m.scheduled_swap_times[k];

@@ -4,6 +4,7 @@
 /// RunSpec, the contact client's timeouts, the scheduled swaps) <-> run_command_t, and the names of
 /// the run states. No transport here.
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,6 +14,9 @@
 #include "wrc/run_command_t.hpp"
 
 namespace wrc::protocol {
+
+/// Most swaps a run may schedule (run_command_t.num_scheduled_swaps; `wrc run --swap-at`).
+inline constexpr std::size_t kMaxScheduledSwaps = 1000;
 
 /// A swap at a given simulated time.
 struct ScheduledSwap {
@@ -40,7 +44,8 @@ const char* run_state_name(std::int8_t state);
 
 /// The START command of request (header, request_id are the caller's).
 run_command_t to_message(const RunRequest& request);
-/// @throws std::invalid_argument naming the first invalid field (unknown model, NaN, range).
+/// @throws std::invalid_argument naming the first invalid field (unknown model, NaN, range, more
+/// than kMaxScheduledSwaps swaps).
 RunRequest from_message(const run_command_t& command);
 
 }  // namespace wrc::protocol

@@ -7,8 +7,11 @@
 // FASTSIM discretisation error documented in README. Bad input fails with one line naming the value.
 // None of these tests needs the bus; they run in the process-test binary because they run processes.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -631,6 +634,118 @@ TEST(CommandErrors, YawRangeAndSingleDashWords) {
   expect_one_line_error("points --y 0.001 --yaw 0.1", {"--yaw", "0.1"});
   expect_one_line_error("swap onepoint -yaw", {"unexpected argument '-yaw'", "options start with --"});
   expect_one_line_error("launch -yaw 0.05", {"unexpected argument '-yaw'", "options start with --"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// Mistakes found before any work starts (issue 21 item 8): `wrc run`, `wrc fit` and `wrc plot`
+// check what they will write, read and send before they start a service, a run, a fit or gnuplot.
+
+// Fails within this time or it started something: RunSession alone listens to the bus for
+// kServiceDiscoveryTime = 1.5 s (clients/cli/service_starter.hpp) before it starts any service.
+constexpr double kBeforeAnyService = 1.5;  // [s]
+
+class EarlyErrors : public BusTest {
+ protected:
+  // Runs `wrc-cli args`, which must fail before any work: a non-zero status, exactly one line
+  // (stdout and stderr together) holding every one of names, within kBeforeAnyService, and no
+  // heartbeat of any service on the test's private bus.
+  void expect_one_line_error_at_once(const std::string& args, const std::vector<std::string>& names) {
+    SCOPED_TRACE(args.substr(0, 300));
+    int status = 0;
+    const auto start = std::chrono::steady_clock::now();
+    const std::string out = run_command(kCli + " " + args + " 2>&1", &status);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_NE(status, 0);
+    EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out.substr(0, 2000);
+    for (const auto& name : names) EXPECT_NE(out.find(name), std::string::npos) << out.substr(0, 2000);
+    EXPECT_LT(seconds, kBeforeAnyService) << out.substr(0, 2000);
+    handle_until([] { return false; }, 0.2);  // what arrived while the command ran
+    EXPECT_EQ(monitor_->size(), 0u) << "a service sent heartbeats";
+  }
+
+  std::string write_file(const std::string& name, const std::string& text) {
+    const std::string path = temp_path(name);
+    std::ofstream(path) << text;
+    return path;
+  }
+
+  // A short run on the test's own bus (t_end keeps the run short if one did start).
+  const std::string run_ = "run --model onepoint --t-end 0.01 --channel-prefix early";
+};
+
+// `wrc run --summary /nonexistent/x.json` started the services and integrated the whole run before
+// it failed. Now every output path is checked first: one line naming the option, the path and why;
+// a file that did not exist is not left behind, an existing one is not changed.
+TEST_F(EarlyErrors, RunChecksItsOutputPathsBeforeAnyServiceStarts) {
+  const std::string no_folder = "the folder /nonexistent-wrc does not exist";
+  expect_one_line_error_at_once(run_ + " --summary /nonexistent-wrc/x.json",
+                                {"wrc run: --summary /nonexistent-wrc/x.json: " + no_folder});
+  const std::string summary = temp_path("s.json");
+  expect_one_line_error_at_once(run_ + " --summary " + summary + " --history /nonexistent-wrc/h.csv",
+                                {"--history /nonexistent-wrc/h.csv: " + no_folder});
+  EXPECT_FALSE(std::filesystem::exists(summary)) << "the check left the summary file behind";
+  write_file("s.json", "kept");
+  expect_one_line_error_at_once(run_ + " --summary " + summary + " --history " + temp_dir_,
+                                {"--history " + temp_dir_ + ": is a directory"});
+  std::ifstream kept(summary);
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "kept");
+  const std::string not_a_folder = write_file("plain", "");
+  expect_one_line_error_at_once(run_ + " --summary " + not_a_folder + "/x.json",
+                                {"--summary " + not_a_folder + "/x.json: " + not_a_folder + " is not a folder"});
+}
+
+// `wrc fit --report` and `wrc plot --out` check their output before the fit and before gnuplot.
+TEST_F(EarlyErrors, FitAndPlotCheckTheirOutputFirst) {
+  const std::string no_folder = "the folder /nonexistent-wrc does not exist";
+  expect_one_line_error_at_once("fit --no-validation --report /nonexistent-wrc/r.json",
+                                {"wrc fit: --report /nonexistent-wrc/r.json: " + no_folder});
+  expect_one_line_error_at_once("plot profiles --out /nonexistent-wrc/p.png",
+                                {"wrc plot: --out /nonexistent-wrc/p.png: " + no_folder});
+}
+
+// `wrc run --wheel tests/data/bad_nan.txt` printed the services' logs (5-6 lines); like `wrc query`
+// it now builds the geometry first and fails with the profile reader's one line.
+TEST_F(EarlyErrors, RunRefusesABadProfileInOneLine) {
+  const std::string bad = std::string(WRC_SOURCE_DIR) + "/tests/data/bad_nan.txt";
+  expect_one_line_error_at_once(run_ + " --summary " + temp_path("s.json") + " --wheel " + bad,
+                                {"wrc run: " + bad + ":4: NaN or infinite value"});
+  EXPECT_FALSE(std::filesystem::exists(temp_path("s.json")));
+}
+
+// Parameter file errors name the file and the key: a number beyond a double (1e999: the JSON
+// library's message named neither), a count too large (max_steps 1e30: was "not a whole number"),
+// a key given twice (was taken silently); the too large count on the command line too.
+TEST_F(EarlyErrors, RunParameterFileErrorsNameTheFileAndTheKey) {
+  const std::string summary = " --summary " + temp_path("s.json");
+  const std::string huge = write_file("huge.json", "{\"speed\": 1e999}");
+  expect_one_line_error_at_once(run_ + summary + " --params " + huge,
+                                {"wrc run: " + huge + ": speed = 1e999 is not a finite number (valid: (0, "});
+  const std::string steps = write_file("steps.json", "{\"max_steps\": 1e30}");
+  expect_one_line_error_at_once(run_ + summary + " --params " + steps,
+                                {"wrc run: " + steps + ": max_steps = 1e+30 is outside [1, 1e+12] [-]"});
+  const std::string twice = write_file("twice.json", "{\"speed\": 10,\n \"mass\": 1500,\n \"speed\": 10}");
+  expect_one_line_error_at_once(run_ + summary + " --params " + twice,
+                                {"wrc run: " + twice + ": speed: duplicate key"});
+  expect_one_line_error_at_once(run_ + summary + " --max-steps 1e30",
+                                {"wrc run: --max-steps: 1e30 is outside [1, 1e+12] [-]"});
+}
+
+// 10 000 scheduled swaps were refused by the dynamics service as "does not match the swap lists";
+// `wrc run --swap-at` now refuses more than the limit itself, naming it; the limit itself passes
+// (the error is then the next one, the summary path).
+TEST_F(EarlyErrors, RunRefusesMoreSwapsThanTheLimitNamingIt) {
+  auto swaps = [](int count) {
+    std::string text;
+    for (int k = 1; k <= count; ++k) text += (k > 1 ? "," : "") + std::to_string(k) + ":interp";
+    return text;
+  };
+  const std::string run = "run --model onepoint --t-end 20000 --channel-prefix early";
+  expect_one_line_error_at_once(run + " --summary " + temp_path("s.json") + " --swap-at " + swaps(10000),
+                                {"wrc run: --swap-at: 10000 swaps, more than the limit of 1000"});
+  expect_one_line_error_at_once(run + " --summary " + temp_path("s.json") + " --swap-at " + swaps(1001),
+                                {"wrc run: --swap-at: 1001 swaps, more than the limit of 1000"});
+  expect_one_line_error_at_once(run + " --summary /nonexistent-wrc/x.json --swap-at " + swaps(1000),
+                                {"--summary /nonexistent-wrc/x.json"});
 }
 
 }  // namespace

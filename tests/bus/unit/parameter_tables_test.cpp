@@ -291,3 +291,97 @@ TEST(ParameterTables, EveryFitKeyRoundTripsAndEveryRangeIsOneRule) {
 
 }  // namespace
 }  // namespace wrc
+
+namespace wrc {
+namespace {
+
+// The error apply_run_parameters gives for text as "p.json", or "no error".
+std::string parameter_file_error(const std::string& text) {
+  RunSpec spec;
+  try {
+    apply_run_parameters(text, "p.json", spec);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// Issue 21 item 8: a number beyond the range of a double (1e999) in a parameter file was reported
+// by the JSON library without the file or the key. Now, for every key, the error names the file,
+// the key and, for a number, the value as written and the table's range (when it has an end).
+TEST(ParameterTables, NumberBeyondDoubleRangeInAFileNamesTheFileKeyAndRange) {
+  for (const RunParameter& p : run_parameter_table()) {
+    SCOPED_TRACE(p.key);
+    for (const std::string token : {"1e999", "-1e999"}) {
+      const std::string error = parameter_file_error("{\"" + std::string(p.key) + "\": " + token + "}");
+      EXPECT_EQ(error.rfind("p.json: " + std::string(p.key), 0), 0u) << error;
+      if (p.kind == ParameterKind::kBoolean) {
+        EXPECT_NE(error.find("must be true or false"), std::string::npos) << error;
+      } else {
+        EXPECT_NE(error.find(std::string(p.key) + " = " + token + " is not a finite number"), std::string::npos)
+            << error;
+        if (std::isfinite(p.range.min) || std::isfinite(p.range.max)) {
+          EXPECT_NE(error.find("(valid: " + p.range.text() + " [" + p.unit + "])"), std::string::npos) << error;
+        }
+      }
+    }
+  }
+  // Inside an array, and a syntax error after a key: the file and the key it is under.
+  EXPECT_EQ(parameter_file_error(R"({"speed": [1e999]})"), "p.json: speed: 1e999 is not a finite number");
+  const std::string syntax = parameter_file_error(R"({"mass": 1500 "speed": 3})");
+  EXPECT_EQ(syntax.rfind("p.json: not valid JSON after the key mass: ", 0), 0u) << syntax;
+}
+
+// Issue 21 item 8: `max_steps: 1e30` was called "not a whole number". A whole number too large for
+// a count is outside its range, in the file and on the command line, and every count of every
+// table has a finite range of whole numbers a double holds exactly (so none can overflow its
+// member).
+TEST(ParameterTables, TooLargeCountIsOutsideItsRangeNotFractional) {
+  const RunParameter* max_steps = find_parameter(run_parameter_table(), "max_steps");
+  ASSERT_NE(max_steps, nullptr);
+  const std::string rule = max_steps->range.text();
+  EXPECT_EQ(rule, "[1, 1e+12]");
+  EXPECT_EQ(parameter_file_error(R"({"max_steps": 1e30})"), "p.json: max_steps = 1e+30 is outside " + rule + " [-]");
+  EXPECT_NE(parameter_file_error(R"({"max_steps": 2.5})").find("max_steps = 2.5 is not a whole number"),
+            std::string::npos);
+  const auto& table = protocol::run_request_table();
+  try {
+    protocol::RunRequest request;
+    apply_parameter_options(table, Options("run", "", parameter_option_specs(table, protocol::RunRequest{}),
+                                           {"--max-steps", "1e30"}),
+                            request);
+    ADD_FAILURE() << "--max-steps 1e30 taken";
+  } catch (const UsageError& e) {
+    EXPECT_EQ(std::string(e.what()), "--max-steps: 1e30 is outside " + rule + " [-]");
+  }
+  constexpr double kExact = 9007199254740992.0;  // 2^53
+  auto check_counts = [&](const auto& entries) {
+    for (const auto& p : entries) {
+      if (p.kind != ParameterKind::kInteger) continue;
+      SCOPED_TRACE(p.key);
+      EXPECT_TRUE(std::isfinite(p.range.min) && std::isfinite(p.range.max)) << p.range.text();
+      EXPECT_LE(std::abs(p.range.min), kExact);
+      EXPECT_LE(std::abs(p.range.max), kExact);
+    }
+  };
+  check_counts(protocol::run_request_table());
+  check_counts(track_parameter_table());
+  check_counts(spline_fit_table());
+}
+
+// Issue 21 item 8: a key given twice was taken silently (the last one won). Refused, naming the
+// file and the key, in the top-level object and in any nested one, with equal or different values.
+TEST(ParameterTables, DuplicateKeyInAFileIsRefusedNamingTheFileAndTheKey) {
+  EXPECT_EQ(parameter_file_error(R"({"speed": 10, "mass": 1500, "speed": 20})"),
+            "p.json: speed: duplicate key (each key may appear once)");
+  EXPECT_EQ(parameter_file_error("{\"mass\": 1500, // comment\n \"mass\": 1500}"),
+            "p.json: mass: duplicate key (each key may appear once)");
+  EXPECT_EQ(parameter_file_error(R"({"speed": {"a": 1, "a": 2}})"),
+            "p.json: speed.a: duplicate key (each key may appear once)");
+  // Equal keys in different objects are not duplicates (and a nested object is no parameter value).
+  EXPECT_EQ(parameter_file_error(R"({"speed": {"a": 1}, "mass": {"a": 1}})"), "p.json: speed: must be a number");
+  EXPECT_EQ(parameter_file_error(R"({"speed": 10, "mass": 1500})"), "no error");
+}
+
+}  // namespace
+}  // namespace wrc

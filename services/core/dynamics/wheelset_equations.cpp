@@ -24,10 +24,14 @@ ContactQuery WheelsetEquations::query(ContactFormulation f, const double* y, con
   q.pose.yaw = y[kUnknownYaw];
   q.y_dot = y[kUnknownYDot];
   q.z_dot = y[kUnknownZDot];
-  q.roll_dot = y[kUnknownRollDot];
-  q.yaw_dot = y[kUnknownYawDot];
+  // The contact sees the motion relative to the rails: the track frame turns at V kappa and rolls
+  // at V d(cant)/ds, and a point at lateral offset y of the turning frame moves forward at
+  // V (1 - kappa y) (the inner rail is the shorter one). On straight track these add exact zeros.
+  const double v = parameters_.speed;
+  q.roll_dot = y[kUnknownRollDot] + v * track_.cant_angle_rate;
+  q.yaw_dot = y[kUnknownYawDot] + v * track_.curvature;
   q.spin_rate = y[kUnknownSpinRate];
-  q.speed = parameters_.speed;
+  q.speed = v * (1.0 - track_.curvature * y[kUnknownY]);
   q.formulation = f;
   if (f == ContactFormulation::kRigid) {
     // A negative trial value inside a Newton iteration loads the wheel with nothing.
@@ -72,9 +76,18 @@ Eigen::Vector4d WheelsetEquations::applied_forces(ContactFormulation f, const do
   const Eigen::Vector3d& force = rigid ? contact.creep_force : contact.force;
   const Eigen::Vector3d& moment = rigid ? contact.creep_moment : contact.moment;
   const double b2 = s.half_spacing * s.half_spacing;
+  // The load (the carried vertical_force and the wheelset's weight) is a weight: in the track
+  // frame, rolled by the cant angle phi and turning at V kappa, it acts along the apparent gravity,
+  // (0, -(V^2 kappa cos phi / g + sin phi), -(cos phi - V^2 kappa sin phi / g)) times the load
+  // (docs/track.md): the centrifugal part outwards, the cant's share of gravity inwards. Exactly
+  // (0, -0, -1) times the load on straight, level track.
+  const double phi = track_.cant_angle;
+  const double centripetal = p.speed * p.speed * track_.curvature / p.gravity;  // V^2 kappa / g [-]
+  const double load = p.total_vertical_load();
   Eigen::Vector4d q;
-  q[0] = p.lateral_force + force.y() - 2.0 * (s.lateral_stiffness * pose.y + s.lateral_damping * y[kUnknownYDot]);
-  q[1] = -p.total_vertical_load() + force.z() -
+  q[0] = p.lateral_force - load * (centripetal * std::cos(phi) + std::sin(phi)) + force.y() -
+         2.0 * (s.lateral_stiffness * pose.y + s.lateral_damping * y[kUnknownYDot]);
+  q[1] = -load * (std::cos(phi) - centripetal * std::sin(phi)) + force.z() -
          2.0 * (s.vertical_stiffness * (pose.z - z_reference_) + s.vertical_damping * y[kUnknownZDot]);
   q[2] = moment.dot(axes.roll) -
          2.0 * b2 * (s.vertical_stiffness * pose.roll + s.vertical_damping * y[kUnknownRollDot]);
@@ -142,8 +155,14 @@ void WheelsetEquations::residual(ContactFormulation f, const double* y, const do
   const double gyro = p.spin_inertia * omega;
   r[kUnknownYDot] = m[0] * yp[kUnknownYDot] - applied[0];
   r[kUnknownZDot] = m[1] * yp[kUnknownZDot] - applied[1];
-  r[kUnknownRollDot] = m[2] * yp[kUnknownRollDot] - gyro * y[kUnknownYawDot] - applied[2];
-  r[kUnknownYawDot] = m[3] * yp[kUnknownYawDot] + gyro * y[kUnknownRollDot] - applied[3];
+  // The gyroscopic moments take the absolute roll and yaw rates (the track frame's V d(cant)/ds
+  // and V kappa added); the yaw acceleration the frame's V^2 d(kappa)/ds (a transition). The
+  // frame's roll acceleration V^2 d^2(cant)/ds^2 is 0 on a linear ramp (an impulse at its ends,
+  // where real ramps are rounded: left out, docs/track.md).
+  const double v = p.speed;
+  r[kUnknownRollDot] = m[2] * yp[kUnknownRollDot] - gyro * (y[kUnknownYawDot] + v * track_.curvature) - applied[2];
+  r[kUnknownYawDot] = m[3] * (yp[kUnknownYawDot] + v * v * track_.curvature_rate) +
+                      gyro * (y[kUnknownRollDot] + v * track_.cant_angle_rate) - applied[3];
   r[kUnknownSpinRate] = p.spin_inertia * yp[kUnknownSpinRate] - axle_moment;
   if (!rigid) return;
   for (int i = 0; i < 2; ++i) {

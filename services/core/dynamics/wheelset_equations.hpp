@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// The equations of motion of a rigid wheelset on straight track at constant speed (docs/dynamics.md)
+/// The equations of motion of a rigid wheelset at constant speed along the track (docs/dynamics.md;
+/// in curves, transitions and cant: docs/track.md), in coordinates relative to the track frame,
 /// in the implicit form F(y, y') = 0 that IDA integrates, for both contact formulations:
 ///  - rigid contact (a DAE, index 2 with Gear-Gupta-Leimkuhler stabilisation): unknowns
 ///    q = (y, z, roll, yaw), their rates v, the spin rate Omega, the normal forces N_L, N_R
@@ -17,6 +18,7 @@
 #include "core/dynamics/followed_branches.hpp"
 #include "core/dynamics/wheelset_parameters.hpp"
 #include "core/model_interface/contact_model.hpp"
+#include "core/track/track_layout.hpp"
 
 namespace wrc {
 
@@ -73,6 +75,12 @@ class WheelsetEquations {
   double nominal_radius() const { return nominal_radius_; }
   double z_reference() const { return z_reference_; }
   void set_z_reference(double z) { z_reference_ = z; }  ///< [m]
+  /// The track where the wheelset is now (curvature, cant and their rates along s): every query,
+  /// force and residual below is taken there. The simulation sets it from the time before each
+  /// evaluation; default: straight, level track, where the equations are those of straight track
+  /// bit for bit.
+  void set_track(const TrackPoint& track) { track_ = track; }
+  const TrackPoint& track() const { return track_; }
 
   /// The contact query at state y (formulation f): pose and rates, rigid loads N_i, the followed
   /// branches (and in two-point contact the second points and their loads), material and grid.
@@ -107,6 +115,7 @@ class WheelsetEquations {
   double z_reference_;
   double nominal_radius_;
   double force_scale_;
+  TrackPoint track_;
 };
 
 }  // namespace wrc

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/model_interface/contact_model.hpp"
+#include "core/track/track_layout.hpp"
 
 namespace wrc {
 
@@ -86,6 +87,9 @@ struct RunSpec {
   WheelsetParameters wheelset;
   InitialState initial;
   IntegratorSettings integrator;
+  /// The track the wheelset runs on (default: straight and level); the wheelset starts at its
+  /// s = 0 and travels s = speed * t.
+  TrackLayout track;
   void validate() const;
 };
 

@@ -34,16 +34,20 @@ constexpr int kMaxNewtonIterations = 8;
 
 WheelsetSimulation* self(void* user) { return static_cast<WheelsetSimulation*>(user); }
 
-int ida_residual(sunrealtype, N_Vector y, N_Vector yp, N_Vector r, void* user) {
+// Each callback first places the equations on the track where the wheelset is at its time.
+int ida_residual(sunrealtype t, N_Vector y, N_Vector yp, N_Vector r, void* user) {
+  self(user)->place_on_track(t);
   return self(user)->residual_callback(N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r));
 }
 
-int ida_jacobian(sunrealtype, sunrealtype cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix jac, void* user, N_Vector,
-                 N_Vector, N_Vector) {
+int ida_jacobian(sunrealtype t, sunrealtype cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix jac, void* user,
+                 N_Vector, N_Vector, N_Vector) {
+  self(user)->place_on_track(t);
   return self(user)->jacobian_callback(cj, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r), jac);
 }
 
-int ida_roots(sunrealtype, N_Vector y, N_Vector, sunrealtype* g, void* user) {
+int ida_roots(sunrealtype t, N_Vector y, N_Vector, sunrealtype* g, void* user) {
+  self(user)->place_on_track(t);
   return self(user)->root_callback(N_VGetArrayPointer(y), g);
 }
 
@@ -117,6 +121,11 @@ std::vector<ContactResult> WheelsetSimulation::evaluate(const std::vector<Contac
   return results;
 }
 
+void WheelsetSimulation::place_on_track(double t) {
+  if (spec_.track.straight()) return;  // straight, level track: nothing moves
+  equations_.set_track(spec_.track.at(spec_.wheelset.speed * t));
+}
+
 const ContactResult& WheelsetSimulation::contact_at(const double* y) {
   const bool two_point = branches_.any_two_point();
   std::vector<double> key;
@@ -125,6 +134,9 @@ const ContactResult& WheelsetSimulation::contact_at(const double* y) {
     if (enters_contact_query(formulation_, two_point, k)) key.push_back(y[k]);
   key.insert(key.end(), branches_.tracked_s.begin(), branches_.tracked_s.end());
   key.insert(key.end(), branches_.second_s.begin(), branches_.second_s.end());
+  // The track's turning and rolling rates enter the query's rates (WheelsetEquations::query).
+  key.push_back(equations_.track().curvature);
+  key.push_back(equations_.track().cant_angle_rate);
   for (const CachedContact& c : cache_)
     if (c.key.size() == key.size() && std::memcmp(c.key.data(), key.data(), key.size() * sizeof(double)) == 0)
       return c.result;
@@ -308,6 +320,7 @@ void WheelsetSimulation::begin_segment(std::vector<double> y, bool first) {
 }
 
 void WheelsetSimulation::start() {
+  place_on_track(0.0);
   const InitialState& init = spec_.initial;
   const double r0 = equations_.nominal_radius();
   std::vector<double> y(static_cast<size_t>(kRigidUnknowns), 0.0);
@@ -351,6 +364,7 @@ void WheelsetSimulation::start() {
   }
   cache_.clear();
   t_ = 0.0;
+  place_on_track(t_);
   begin_segment(y, true);
   next_output_ = 0.0;
   output_index_ = 0;
@@ -685,6 +699,7 @@ bool WheelsetSimulation::advance() {
       if (branches_.two_point(i)) own_.two_point_time += t_reached - t_;
     const double step = t_reached - t_;
     t_ = t_reached;
+    place_on_track(t_);
     record_step_contact(false);
     // Conformal patches (Hertz's floor on the lateral curvature) at the accepted step.
     long floored = 0;

@@ -106,6 +106,8 @@ class WheelsetSimulation {
   const WheelsetEquations& equations() const { return equations_; }
 
   /// IDA's residual, Jacobian and event callbacks (public for the C trampolines only).
+  /// Places the equations on the track where the wheelset is at time t [s] (s = speed t).
+  void place_on_track(double t);
   int residual_callback(const double* y, const double* yp, double* r);
   int jacobian_callback(double cj, const double* y, const double* yp, const double* r, SUNMatrix jac);
   int root_callback(const double* y, double* g);

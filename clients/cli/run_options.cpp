@@ -9,6 +9,7 @@
 #include "cli/service_starter.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "core/track/track_layout_file.hpp"
 #include "options/parameter_options.hpp"
 #include "protocol/run/run_request_table.hpp"
 
@@ -49,6 +50,8 @@ std::vector<OptionSpec> run_option_specs() {
        "none"},
       {"--history", true, "write the state at every output period here (CSV)", "none"},
       {"--in-process", false, "the dynamics evaluates the contact model itself (comparison only)", ""},
+      {"--track", true, "track layout file (JSON: straights, transitions, curves with cant; docs/track.md)",
+       "straight, level track"},
       {"--run-id", true, "name of the run", "run-<pid>"},
   };
   for (auto& spec : parameter_option_specs(protocol::run_request_table(), protocol::RunRequest{})) specs.push_back(spec);
@@ -70,6 +73,7 @@ protocol::RunRequest run_request_from(const Options& o) {
   }
   apply_parameter_options(protocol::run_request_table(), o, request);
   spec.validate();  // the rules between parameters (the total vertical load)
+  if (o.has("--track")) spec.track = read_track_layout_file(o.text("--track"));
   if (o.has("--swap-at")) request.swaps = parse_swaps(o.text("--swap-at"), spec.integrator.t_end);
   request.in_process = o.has("--in-process");
   request.run_id = o.text("--run-id", "run-" + std::to_string(::getpid()));

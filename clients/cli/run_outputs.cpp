@@ -6,6 +6,7 @@
 
 #include "core/dynamics/run_counter_table.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
+#include "core/track/track_layout.hpp"
 #include "protocol/run/run_output_codec.hpp"
 
 namespace wrc::cli {
@@ -25,6 +26,31 @@ nlohmann::json table_json(const std::vector<Entry>& table, const T& value) {
     else
       j[p.key] = v;
   }
+  return j;
+}
+
+// The layout the run went along: its length, the distance travelled and, per curve, where it
+// starts, its radius, direction and cant, its balanced speed and the cant deficiency at the run's
+// speed (docs/track.md).
+nlohmann::json layout_json(const TrackLayout& layout, double speed, double g, double t_end) {
+  nlohmann::json j;
+  j["length"] = layout.length();
+  j["cant_base"] = layout.cant_base();
+  j["distance_travelled"] = speed * t_end;
+  nlohmann::json curves = nlohmann::json::array();
+  double s = 0.0;
+  for (const TrackSegment& segment : layout.segments()) {
+    if (segment.kind == TrackSegmentKind::kCurve)
+      curves.push_back({{"s_start", s},
+                        {"length", segment.length},
+                        {"radius", segment.radius},
+                        {"direction", segment.left ? "left" : "right"},
+                        {"cant", segment.cant},
+                        {"balanced_speed", TrackLayout::balanced_speed(segment, layout.cant_base(), g)},
+                        {"cant_deficiency", TrackLayout::cant_deficiency(segment, layout.cant_base(), speed, g)}});
+    s += segment.length;
+  }
+  j["curves"] = curves;
   return j;
 }
 
@@ -61,6 +87,8 @@ nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& 
     swaps.push_back({{"t", s.swap_times[k]}, {"model", s.swap_models[k]}});
   j["swaps"] = swaps;
   j["parameters"] = table_json(run_parameter_table(), request.spec);
+  j["track_layout"] = layout_json(request.spec.track, request.spec.wheelset.speed, request.spec.wheelset.gravity,
+                                  s.t_end);
   return j;
 }
 

@@ -8,6 +8,7 @@
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -124,6 +125,31 @@ TEST_F(DynamicsServiceTest, EveryModelRunsAndWritesItsSummary) {
       EXPECT_EQ(s["counters"]["restarts"].get<long>(), 0);
     }
   }
+}
+
+// `wrc run --track FILE`: the spline model through the shipped layout (100 m straight, 90 m
+// transition, a left-hand curve of 600 m with 0.13 m cant) to 240 m at 30 m/s, over the bus: the
+// layout crosses run_command_t, the run finishes in the curve pushed outwards (towards -y, the
+// cant deficiency of 0.099 m is carried by the outer wheel's flange root), and the summary lists
+// the curve with its balanced speed sqrt(g R tan(phi)) and cant deficiency b V^2 / (g R) - h.
+TEST_F(DynamicsServiceTest, ARunFollowsATrackLayout) {
+  std::vector<std::string> args = run_args("spline", 8.0, temp_path("curve.json"));
+  args.insert(args.end(), {"--track", std::string(WRC_SOURCE_DIR) + "/parameters/track-curve-R600.json",
+                           "--lateral-force", "0"});
+  const nlohmann::json s = run(args, "curve");
+  ASSERT_EQ(s["state"], "finished") << s.dump();
+  EXPECT_LT(s["final_state"]["y"].get<double>(), -3e-3);
+  EXPECT_EQ(s["counters"]["restarts"].get<long>(), 0);
+  const nlohmann::json& layout = s["track_layout"];
+  EXPECT_DOUBLE_EQ(layout["length"].get<double>(), 780.0);
+  EXPECT_DOUBLE_EQ(layout["distance_travelled"].get<double>(), 240.0);
+  ASSERT_EQ(layout["curves"].size(), 1u);
+  const nlohmann::json& curve = layout["curves"][0];
+  EXPECT_DOUBLE_EQ(curve["s_start"].get<double>(), 190.0);
+  EXPECT_EQ(curve["direction"], "left");
+  EXPECT_NEAR(curve["balanced_speed"].get<double>(), std::sqrt(9.81 * 600 * 0.13 / std::sqrt(1.5 * 1.5 - 0.13 * 0.13)),
+              1e-9);
+  EXPECT_NEAR(curve["cant_deficiency"].get<double>(), 1.5 * 30.0 * 30.0 / (9.81 * 600) - 0.13, 1e-12);
 }
 
 // A swap from onepoint to spline made with `wrc swap spline` while the run integrates is acted on

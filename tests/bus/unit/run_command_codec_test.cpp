@@ -1,11 +1,16 @@
 // The scheduled swaps of a run command: each limit with its own message (issue 21 item 8: 10 000
-// swaps were said to "not match the swap lists" while the limit is kMaxScheduledSwaps).
+// swaps were said to "not match the swap lists" while the limit is kMaxScheduledSwaps). The track
+// layout of a run command: every segment through the LCM encoding exactly, and each bad field
+// named.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
 
+#include "bus/transport/decode.hpp"
 #include "protocol/run/run_command_codec.hpp"
+#include "protocol/run/track_layout_codec.hpp"
+#include <vector>
 
 namespace wrc::protocol {
 namespace {
@@ -41,6 +46,47 @@ TEST(RunCommandCodec, EachSwapLimitHasItsOwnMessage) {
   run_command_t mismatch = command_with_swaps(3);
   mismatch.scheduled_swap_models.pop_back();
   EXPECT_EQ(error_of(mismatch), "num_scheduled_swaps = 3 does not match the swap lists (3 times, 2 models)");
+}
+
+// A layout of every kind of segment crosses run_command_t (and its LCM encoding) exactly: the same
+// curvature and cant at every sampled distance; straight track crosses as no segments.
+TEST(RunCommandCodec, TheTrackLayoutCrossesExactly) {
+  RunRequest request;
+  request.model = "spline";
+  request.run_id = "curve";
+  request.spec.track = TrackLayout({{TrackSegmentKind::kStraight, 100.25, 0, true, 0},
+                                    {TrackSegmentKind::kTransition, 90, 0, true, 0},
+                                    {TrackSegmentKind::kCurve, 400, 612.5, false, 0.1275},
+                                    {TrackSegmentKind::kTransition, 90, 0, true, 0},
+                                    {TrackSegmentKind::kStraight, 100, 0, true, 0}},
+                                   1.435);
+  const run_command_t m = to_message(request);
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(m.getEncodedSize()));
+  ASSERT_EQ(m.encode(bytes.data(), 0, static_cast<int>(bytes.size())), static_cast<int>(bytes.size()));
+  run_command_t decoded;
+  ASSERT_FALSE(bus::decode_bytes(bytes.data(), bytes.size(), decoded));  // the services' own decoding
+  const TrackLayout back = from_message(decoded).spec.track;
+  ASSERT_EQ(back.segments().size(), 5u);
+  EXPECT_EQ(back.cant_base(), 1.435);
+  for (double s = 0; s < 800; s += 3.7) {
+    EXPECT_EQ(back.at(s).curvature, request.spec.track.at(s).curvature) << s;
+    EXPECT_EQ(back.at(s).cant_angle, request.spec.track.at(s).cant_angle) << s;
+    EXPECT_EQ(back.at(s).curvature_rate, request.spec.track.at(s).curvature_rate) << s;
+  }
+  RunRequest straight_track = request;
+  straight_track.spec.track = TrackLayout();
+  EXPECT_TRUE(from_message(to_message(straight_track)).spec.track.straight());
+
+  run_command_t bad_kind = m;
+  bad_kind.layout_segments[2].kind = 7;
+  EXPECT_EQ(error_of(bad_kind), "layout_segments[2].kind = 7 is not STRAIGHT, TRANSITION or CURVE");
+  run_command_t bad_count = m;
+  bad_count.num_layout_segments = 4;
+  EXPECT_EQ(error_of(bad_count), "num_layout_segments = 4 does not match the 5 segments of the list");
+  run_command_t bad_radius = m;
+  bad_radius.layout_segments[2].radius = 10.0;
+  EXPECT_NE(error_of(bad_radius).find("layout: segment 3 (curve): radius 10"), std::string::npos)
+      << error_of(bad_radius);
 }
 
 }  // namespace

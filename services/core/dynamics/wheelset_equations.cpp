@@ -22,13 +22,18 @@ ContactQuery WheelsetEquations::query(ContactFormulation f, const double* y, con
   q.pose.z = y[kUnknownZ];
   q.pose.roll = y[kUnknownRoll];
   q.pose.yaw = y[kUnknownYaw];
-  q.y_dot = y[kUnknownYDot];
-  q.z_dot = y[kUnknownZDot];
-  // The contact sees the motion relative to the rails: the track frame turns at V kappa and rolls
-  // at V d(cant)/ds, and a point at lateral offset y of the turning frame moves forward at
-  // V (1 - kappa y) (the inner rail is the shorter one). On straight track these add exact zeros.
+  // The contact sees the motion relative to the rails, which rest on the ground: the track frame
+  // turns at r_t = V kappa and rolls at p_t = V d(cant)/ds about its origin on the centre line at
+  // rail level, so the wheelset's centre (0, y, z) moves with the frame at
+  // (p_t, 0, r_t) x (0, y, z) = (-r_t y, -p_t z, p_t y) on top of V and its own rates (the inner
+  // rail is the shorter one; rolling with the cant ramp the centre swings sideways, the contact
+  // points, at rail level, do not), and its angular velocity gains (p_t, 0, r_t). On straight,
+  // level track every added term is an exact zero.
   const double v = parameters_.speed;
-  q.roll_dot = y[kUnknownRollDot] + v * track_.cant_angle_rate;
+  const double p_t = v * track_.cant_angle_rate;  // [rad/s]
+  q.y_dot = y[kUnknownYDot] - p_t * y[kUnknownZ];
+  q.z_dot = y[kUnknownZDot] + p_t * y[kUnknownY];
+  q.roll_dot = y[kUnknownRollDot] + p_t;
   q.yaw_dot = y[kUnknownYawDot] + v * track_.curvature;
   q.spin_rate = y[kUnknownSpinRate];
   q.speed = v * (1.0 - track_.curvature * y[kUnknownY]);

@@ -17,6 +17,7 @@
 #include "core/track/track_layout_file.hpp"
 #include <initializer_list>
 #include <string>
+#include "run_to_end.hpp"
 #include "spline_test_model.hpp"
 
 namespace wrc {
@@ -46,13 +47,7 @@ std::shared_ptr<ContactEvaluator> interp_contact() {
   return std::make_shared<InProcessContact>(model);
 }
 
-std::vector<WheelsetSnapshot> run(WheelsetSimulation& sim) {
-  std::vector<WheelsetSnapshot> out;
-  sim.on_output([&](const WheelsetSnapshot& s) { out.push_back(s); });
-  sim.run();
-  EXPECT_EQ(sim.state(), RunState::kFinished) << sim.message();
-  return out;
-}
+std::vector<WheelsetSnapshot> run(WheelsetSimulation& sim) { return test::run_to_end(sim); }
 
 // Straight 100 m, transition 50 m, left curve R 600 m with 0.1 m cant for 200 m, transition 50 m,
 // straight: the curvature and the cant angle ramp linearly and continuously, with the signs of

@@ -13,6 +13,7 @@
 #include "core/geometry/conicity.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "run_to_end.hpp"
 #include "spline_test_model.hpp"
 
 namespace wrc {
@@ -28,13 +29,7 @@ std::shared_ptr<ContactEvaluator> contact(const std::string& model) {
   return std::make_shared<InProcessContact>(make_contact_model(model, test::s1002_uic60_geometry(), {}, data));
 }
 
-std::vector<WheelsetSnapshot> run(WheelsetSimulation& sim) {
-  std::vector<WheelsetSnapshot> out;
-  sim.on_output([&](const WheelsetSnapshot& s) { out.push_back(s); });
-  sim.run();
-  EXPECT_EQ(sim.state(), RunState::kFinished) << sim.message();
-  return out;
-}
+std::vector<WheelsetSnapshot> run(WheelsetSimulation& sim) { return test::run_to_end(sim); }
 
 // Total mechanical energy: kinetic, the constant vertical load's potential, the springs [J].
 double energy(const WheelsetSnapshot& s, const WheelsetParameters& p, double z_reference) {

@@ -47,7 +47,7 @@ DynamicsService::DynamicsService(lcm::LCM& lcm, const bus::ChannelNames& names, 
       [this](const run_command_t& c, const bus::ReceivedMessage&) { on_command(c); });
   selects_ = std::make_unique<bus::GuardedSubscription<contact_select_t>>(
       lcm_, names_.name(bus::channel::kContactSelect), "dynamics swaps",
-      [this](const contact_select_t& s, const bus::ReceivedMessage&) { on_select(s); });
+      [this](const contact_select_t& s, const bus::ReceivedMessage& info) { on_select(s, info.origin.nonce); });
 }
 
 template <class Message>
@@ -63,10 +63,19 @@ void DynamicsService::on_command(const run_command_t& command) {
   pending_command_ = command;  // acted on at the next step boundary (poll)
 }
 
-void DynamicsService::on_select(const contact_select_t& select) {
+void DynamicsService::on_select(const contact_select_t& select, std::uint64_t sender) {
   if (serving_ && !serving_()) return;
-  if (select.seq <= last_select_seq_) return;  // republished copies of a selection already seen
-  last_select_seq_ = select.seq;
+  if (select.seq <= 0) return;  // numbers count from 1
+  auto it = select_senders_.find(sender);
+  if (it != select_senders_.end() && select.seq <= it->second.seq) return;  // a copy of a selection already seen
+  if (it == select_senders_.end()) {
+    if (select_senders_.size() >= kMaxSelectSenders) {
+      select_senders_.erase(std::min_element(select_senders_.begin(), select_senders_.end(),
+                                             [](const auto& a, const auto& b) { return a.second.heard < b.second.heard; }));
+    }
+    it = select_senders_.emplace(sender, SelectSender{}).first;
+  }
+  it->second = {select.seq, ++selects_heard_};
   pending_select_ = select;
 }
 

@@ -9,7 +9,9 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,7 +50,7 @@ class DynamicsService {
 
  private:
   void on_command(const run_command_t& command);
-  void on_select(const contact_select_t& select);
+  void on_select(const contact_select_t& select, std::uint64_t sender);
   void start(const run_command_t& command);
   void finish();
   std::shared_ptr<ContactEvaluator> make_contact(const std::string& model);
@@ -72,7 +74,18 @@ class DynamicsService {
   std::optional<run_command_t> pending_command_;
   std::int64_t last_request_id_ = 0;
   std::optional<contact_select_t> pending_select_;
-  std::int64_t last_select_seq_ = 0;
+  /// Per sender (the verified nonce of its trailer): the last selection number acted on, and when
+  /// (a count of selections), so that the longest silent sender goes first beyond kMaxSelectSenders.
+  /// A sender republishes one choice with one number and numbers its later choices higher; one
+  /// sender's numbers say nothing about another's, so a number far in the future (a garbled or
+  /// hostile key holder) hides no one else's selections.
+  struct SelectSender {
+    std::int64_t seq = 0;
+    std::int64_t heard = 0;
+  };
+  static constexpr std::size_t kMaxSelectSenders = 1024;
+  std::map<std::uint64_t, SelectSender> select_senders_;
+  std::int64_t selects_heard_ = 0;
 
   std::unique_ptr<WheelsetSimulation> simulation_;
   protocol::RunRequest request_;

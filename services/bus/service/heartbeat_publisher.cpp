@@ -23,7 +23,8 @@ HeartbeatPublisher::HeartbeatPublisher(lcm::LCM& lcm, std::string channel, Servi
       started_(monotonic_seconds()),
       started_utime_(wall_utime()),
       stamper_(sender_name(identity_.program, identity_.instance)),
-      last_sent_(-1e300) {
+      last_sent_(-1e300),
+      last_fresh_(-1e300) {
   if (!(period > 0.0) || !std::isfinite(period)) {
     throw std::invalid_argument("heartbeat period " + std::to_string(period) + " s is not positive");
   }
@@ -55,8 +56,11 @@ bool HeartbeatPublisher::tick() {
 }
 
 double HeartbeatPublisher::seconds_until_due() const {
+  // Measured from the last heartbeat this process made, not from the keeper's copy of it: a copy
+  // sent while the loop was a little late must not postpone the loop's own (the keeper's next
+  // wake-up would fall on the next due time again, and every later heartbeat would be a copy).
   std::lock_guard<std::mutex> lock(mutex_);
-  return std::max(0.0, last_sent_ + period_ - monotonic_seconds());
+  return std::max(0.0, last_fresh_ + period_ - monotonic_seconds());
 }
 
 std::int64_t HeartbeatPublisher::published() const {
@@ -139,6 +143,7 @@ void HeartbeatPublisher::publish_now() {
   std::lock_guard<std::mutex> lock(mutex_);
   stamper_.stamp(hb.header);
   last_heartbeat_ = hb;
+  last_fresh_ = now;
   send_locked(hb, now);
 }
 

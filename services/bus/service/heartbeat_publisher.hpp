@@ -112,7 +112,9 @@ class HeartbeatPublisher {
   // Shared with the keeper thread, under mutex_.
   mutable std::mutex mutex_;
   HeaderStamper stamper_;
-  double last_sent_;                 // [s] monotonic time of the last heartbeat
+  double last_sent_;                 // [s] monotonic time of the last heartbeat (the keeper's copies included)
+  double last_fresh_;                // [s] monotonic time of the last heartbeat made by publish_now(): the
+                                     //     loop's own are due a period after it, whatever the keeper sent
   double last_tick_ = 0.0;           // [s] monotonic time of the last tick()
   double max_busy_ = 0.0;            // [s] the keeper covers a loop at most this late
   wrc::heartbeat_t last_heartbeat_{};

@@ -143,6 +143,16 @@ class RequestClient {
 
  private:
   void wait_for_answer(double deadline) {
+    // What is queued already is read first, whatever the deadline: a reply that is there is
+    // taken, and a call with a timeout below the round trip still reads every subscription of
+    // the LCM object once per attempt. Without this, a caller retrying such calls in a loop (the
+    // dynamics' contact client) would publish without ever reading: its queues overflowed, the
+    // heartbeats of the services it needs were lost, and no reply was ever seen.
+    for (int handled = 0; !answer_ && handled < kMaxDrain; ++handled) {
+      const int rc = lcm_.handleTimeout(0);
+      if (rc < 0 && errno != EINTR) throw std::runtime_error("LCM handle failed while waiting for a reply");
+      if (rc <= 0) break;
+    }
     while (!answer_) {
       const double remaining = deadline - monotonic_seconds();
       if (remaining <= 0.0) return;
@@ -152,6 +162,9 @@ class RequestClient {
       if (rc < 0) return;  // interrupted by a signal: let the caller look at its shutdown flag
     }
   }
+
+  /// [-] most queued messages read before the deadline is looked at (a flood cannot hold a call).
+  static constexpr int kMaxDrain = 10000;
 
   /// A random positive multiple of 2^32 below 2^62: ids of two clients do not meet.
   static std::int64_t first_request_id() {

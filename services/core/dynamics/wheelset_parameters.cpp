@@ -33,7 +33,17 @@ void WheelsetParameters::validate() const {
 
 void InitialState::validate() const { validate_parameters(initial_state_table(), *this); }
 
-void IntegratorSettings::validate() const { validate_parameters(integrator_settings_table(), *this); }
+void IntegratorSettings::validate() const {
+  validate_parameters(integrator_settings_table(), *this);
+  // Every output sample is a message (WHEELSET_STATE) and a history line: a period far below the
+  // steps (1e-300 s) would have one step emit samples for ever.
+  if (!(t_end / output_period <= static_cast<double>(kMaxOutputSamples))) {
+    std::ostringstream msg;
+    msg << "output_period = " << output_period << " s gives " << t_end / output_period << " output samples up to t_end = "
+        << t_end << " s, more than " << kMaxOutputSamples << ": choose a longer output_period";
+    throw std::invalid_argument(msg.str());
+  }
+}
 
 void RunSpec::validate() const {
   wheelset.validate();

@@ -72,12 +72,16 @@ inline constexpr double kMaxRunSteps = 1e12;
 
 /// Time integration (SUNDIALS IDA, BDF of variable order and step).
 struct IntegratorSettings {
+  /// [-] most output samples of one run: t_end / output_period may not exceed it (200 s at the
+  /// default 1 ms; publishing a sample takes some 30 us, so even all of them in one step stay a
+  /// few seconds).
+  static constexpr long kMaxOutputSamples = 200000;
   double t_end = 2.0;                 ///< simulated end time [s], > 0
   double relative_tolerance = 1e-6;   ///< rtol [-]
   double position_tolerance = 1e-8;   ///< atol of y, z [m] and roll, yaw [rad]
   double velocity_tolerance = 1e-6;   ///< atol of the rates [m/s, rad/s]
   double max_step = 0.01;             ///< largest step [s]
-  double output_period = 1e-3;        ///< simulated time between output samples [s], > 0
+  double output_period = 1e-3;        ///< simulated time between output samples [s], > 0, t_end / it <= kMaxOutputSamples
   long max_steps = 2000000;           ///< steps before the run fails [-]
   void validate() const;
 };

@@ -23,6 +23,7 @@
 #include "bus/transport/clock.hpp"
 #include "bus/transport/guarded_subscription.hpp"
 #include "bus_fixture.hpp"
+#include "wrc/contact_select_t.hpp"
 #include "wrc/progress_t.hpp"
 #include "wrc/run_status_t.hpp"
 #include "wrc/wheelset_state_t.hpp"
@@ -164,6 +165,12 @@ TEST_F(DynamicsServiceTest, LiveSwapIsListedAndReproducedBySwapAt) {
   // Swap early in the run (before the one-point model reaches the jump, its slow part).
   ASSERT_TRUE(wait_running_past(run_id(temp_path("live.json")), 0.1, 120.0)) << read_text(temp_path("live.log"));
   int status = -1;
+  // A selection of another sender numbered far in the future (a garbled or hostile key holder)
+  // hides no later swap: selection numbers count per sender (it used to hide every one).
+  contact_select_t future{};
+  future.seq = INT64_MAX;
+  future.model = "multipoint";
+  publish_signed(*lcm_, names_.name(channel::kContactSelect), future);
   const std::string out = run_command(std::string(WRC_CLI_PATH) + " swap spline 2>&1", &status);
   ASSERT_EQ(status, 0) << out;
   ASSERT_TRUE(handle_until([&] { return cli.wait(0.0); }, kRunDeadline)) << read_text(temp_path("live.log"));
@@ -257,7 +264,7 @@ TEST_F(DynamicsServiceTest, LossyBusKillsNoServiceAndRunsEndTheSame) {
 }
 
 // A swap to a model whose service is not on the bus is refused: the run keeps its model and its
-// summary says why.
+// summary says why (also after another sender's selection numbered INT64_MAX).
 TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
   const std::string log = temp_path("launch.log");
   auto launcher = launch({"contact-multipoint", "dynamics"}, log);
@@ -279,6 +286,12 @@ TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
   EXPECT_NE(listing.find("doing: run " + run_id(temp_path("refused.json")) + ": multipoint, t = "), std::string::npos)
       << listing;
   EXPECT_NE(listing.find("doing: serving multipoint queries, "), std::string::npos) << listing;
+  // A selection of another sender numbered far in the future (a garbled or hostile key holder)
+  // hides no later swap: selection numbers count per sender (it used to hide every one).
+  contact_select_t future{};
+  future.seq = INT64_MAX;
+  future.model = "multipoint";
+  publish_signed(*lcm_, names_.name(channel::kContactSelect), future);
   const std::string out = run_command(std::string(WRC_CLI_PATH) + " swap spline 2>&1", &status);
   ASSERT_EQ(status, 0) << out;
   ASSERT_TRUE(handle_until([&] { return cli.wait(0.0); }, kRunDeadline)) << read_text(temp_path("refused.log"));

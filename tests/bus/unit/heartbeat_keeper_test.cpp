@@ -6,6 +6,9 @@
 // 0.15 s (3 periods) around each threshold.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+
 #include "bus/service/heartbeat_monitor.hpp"
 #include "bus/service/heartbeat_publisher.hpp"
 #include "memq_bus.hpp"
@@ -50,6 +53,36 @@ TEST(HeartbeatKeeper, CoversABusyLoopButNotAStuckOne) {
   // The loop comes back: tick() publishes at once and the keeper covers again.
   EXPECT_TRUE(publisher.tick());
   EXPECT_TRUE(test::handle_until(lcm, [&] { return monitor.find("pingd", "k", monotonic_seconds())->alive; }));
+}
+
+// A loop that comes round often but not on the period's beat (a service loop running steps or
+// answering a burst) publishes its own heartbeats: the keeper's copies of the last one (sent when
+// the loop is a little late) do not postpone them. They used to: once the keeper had sent a copy,
+// its next wake-up fell exactly on the next due time, before the loop looked, so every later
+// heartbeat was a copy of the old one (a running wrc-dynamicsd said "idle" in `wrc status` for
+// whole runs, with stale loads and drop counts; here 17 copies in 20 periods, 50 turns stale).
+TEST(HeartbeatKeeper, CopiesDoNotPostponeTheLoopsOwnHeartbeats) {
+  lcm::LCM lcm("memq://");
+  HeartbeatMonitor monitor(lcm, "HEARTBEAT");
+  const double period = 0.05;
+  HeartbeatPublisher publisher(lcm, "HEARTBEAT", {"wrc-test", "pingd", "k", ""}, period);
+  int turn = 0;  // the loop's iterations, reported as the activity
+  publisher.set_activity_source([&turn] { return std::to_string(turn); });
+  publisher.set_state(wrc::heartbeat_t::READY);
+  publisher.start_keeper(1.0);
+  int stalest = 0;  // most iterations between the loop's state and what the last heartbeat says
+  const double end = monotonic_seconds() + 1.0;  // 20 periods
+  while (monotonic_seconds() < end) {
+    const double busy_until = monotonic_seconds() + 0.3 * period;  // work, then one look
+    while (monotonic_seconds() < busy_until) lcm.handleTimeout(1);
+    ++turn;
+    publisher.tick();
+    lcm.handleTimeout(0);
+    if (auto s = monitor.find("pingd", "k", monotonic_seconds())) stalest = std::max(stalest, turn - std::stoi(s->last.activity));
+  }
+  // The loop's own heartbeat is due once a period and the loop looks every 0.3 periods: what the
+  // monitor holds is at most about 4 turns old.
+  EXPECT_LE(stalest, 6) << publisher.kept_alive() << " copies by the keeper";
 }
 
 }  // namespace

@@ -164,6 +164,27 @@ TEST(ParameterTables, YawLimitIsOpenAtEveryEntryPoint) {
   EXPECT_EQ(request.spec.initial.yaw, 0.0599);
 }
 
+// An output period far below the steps would have one step emit samples for ever (found by the
+// signed campaign: a run command with output_period 1e-300 s hung wrc-dynamicsd): at most
+// kMaxOutputSamples samples up to t_end, in the library and in the message codec.
+TEST(ParameterTables, OutputSamplesAreBounded) {
+  protocol::RunRequest request = valid_request();
+  request.spec.integrator.t_end = 2.0;
+  request.spec.integrator.output_period = 2.0 / IntegratorSettings::kMaxOutputSamples;
+  EXPECT_NO_THROW(request.spec.validate());
+  EXPECT_NO_THROW(protocol::from_message(protocol::to_message(request)));
+  for (double period : {1e-300, 1.9 / IntegratorSettings::kMaxOutputSamples}) {
+    request.spec.integrator.output_period = period;
+    try {
+      request.spec.validate();
+      ADD_FAILURE() << "RunSpec::validate took output_period " << period;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("output samples"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(protocol::from_message(protocol::to_message(request)), std::invalid_argument);
+  }
+}
+
 TEST(ParameterTables, DefaultsOfTheOptionsAreTheLibrarys) {
   const auto& table = protocol::run_request_table();
   const Options none("run", "", parameter_option_specs(table, protocol::RunRequest{}), {});

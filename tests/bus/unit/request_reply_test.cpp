@@ -62,6 +62,20 @@ TEST(RequestReply, EchoesIdAndPayload) {
   EXPECT_EQ(client.counters().replies, 3);
 }
 
+// Each attempt reads what is queued whatever its timeout: a call with a timeout far below any
+// round trip still dispatches every subscription (on memq:// the request, then its reply), so a
+// client retrying short calls never stops reading its bus.
+TEST(RequestReply, ReadsItsQueueWhateverTheTimeout) {
+  lcm::LCM lcm("memq://");
+  Server server(lcm, "PING", "test-server", echo_handler());
+  Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
+  auto req = ping(3);
+  auto result = client.call(req, {1e-12, 0});
+  ASSERT_TRUE(result);
+  EXPECT_EQ(result.reply->num_payload, 3);
+  EXPECT_EQ(server.counters().answered, 1);
+}
+
 // Without a server every attempt times out; the call reports failure after 1 + retries sends.
 TEST(RequestReply, TimesOutAndRetries) {
   lcm::LCM lcm("memq://");

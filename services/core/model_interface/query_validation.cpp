@@ -2,6 +2,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -125,6 +126,32 @@ const char* query_field_name(QueryField field) {
     case QueryField::kFastsimStrips: return "fastsim_strips";
   }
   return "?";
+}
+
+std::string query_rule_breach(const QueryViolation& violation) {
+  const QueryRule& rule = violation.rule;
+  const double v = violation.value;
+  const std::string unit =
+      *rule.unit == '\0' ? "" : std::string(" ") + (std::strcmp(rule.unit, "-") == 0 ? "[-]" : rule.unit);
+  auto interval = [&](const char* open, double low, const char* close) {
+    return "is outside " + (open + number_text(low) + ", " + number_text(rule.high) + close) + unit;
+  };
+  switch (rule.kind) {
+    case QueryRuleKind::kFinite: return "is not a finite number";
+    case QueryRuleKind::kClosed:
+    case QueryRuleKind::kNanOrClosed:
+    case QueryRuleKind::kCount:
+      if (std::isinf(v) || (std::isnan(v) && rule.kind == QueryRuleKind::kClosed)) return "is not a finite number";
+      return interval("[", rule.low, "]");
+    case QueryRuleKind::kOpen:
+      if (!std::isfinite(v)) return "is not a finite number";
+      return interval("(", rule.low, ")");
+    case QueryRuleKind::kPositiveAtMost:
+      if (!std::isfinite(v)) return "is not a finite number";
+      if (v > rule.high) return interval("(", 0.0, "]");
+      return "is not positive";
+  }
+  return "is invalid";
 }
 
 void validate_contact_query(const ContactQuery& q) {

@@ -4,31 +4,12 @@
 #include <iomanip>
 #include <stdexcept>
 
+#include "cli/table_json.hpp"
 #include "core/dynamics/run_counter_table.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
 #include "protocol/run/run_output_codec.hpp"
 
 namespace wrc::cli {
-namespace {
-
-// The members of value as a JSON object, each by its table key: booleans as true / false, whole
-// numbers as integers.
-template <class Entry, class T>
-nlohmann::json table_json(const std::vector<Entry>& table, const T& value) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const Entry& p : table) {
-    const double v = p.get(value);
-    if (p.kind == ParameterKind::kBoolean)
-      j[p.key] = v != 0.0;
-    else if (p.kind == ParameterKind::kInteger)
-      j[p.key] = static_cast<long long>(v);
-    else
-      j[p.key] = v;
-  }
-  return j;
-}
-
-}  // namespace
 
 nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& request, const std::string& key) {
   nlohmann::json j;

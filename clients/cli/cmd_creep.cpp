@@ -8,28 +8,13 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/grid_option.hpp"
 #include "cli/options.hpp"
 #include "core/contact/fastsim.hpp"
 #include "core/contact/linear_creep.hpp"
 
 namespace wrc::cli {
 namespace {
-
-// Parses "MxN" (elements per strip x strips), each a whole number in 1..10000.
-void parse_grid(const std::string& text, int* elements_per_strip, int* strips) {
-  const auto x = text.find_first_of("xX");
-  auto whole = [&](const std::string& part) {
-    if (part.empty() || part.size() > 5 || part.find_first_not_of("0123456789") != std::string::npos) return -1;
-    return std::stoi(part);
-  };
-  const int m = x == std::string::npos ? -1 : whole(text.substr(0, x));
-  const int n = x == std::string::npos ? -1 : whole(text.substr(x + 1));
-  if (m < 1 || n < 1 || m > 10000 || n > 10000) {
-    throw UsageError("--grid: '" + text + "' is not MxN with whole numbers in 1..10000 (e.g. 20x20)");
-  }
-  *elements_per_strip = m;
-  *strips = n;
-}
 
 // A required number that must be strictly positive.
 double positive(const Options& o, const std::string& name) {
@@ -54,7 +39,7 @@ int run_creep(const std::vector<std::string>& args) {
                    {"--xi-y", true, "lateral creepage [-]", "0"},
                    {"--spin", true, "spin creepage [1/m]", "0"},
                    {"--model", true, "fastsim or linear (Kalker's linear theory, unsaturated)", "fastsim"},
-                   {"--grid", true, "FASTSIM grid: elements per strip x strips", "20x20"},
+                   grid_option_spec(),
                    {"--format", true, "csv or text", "csv"}},
                   args);
   if (o.help_requested()) {
@@ -79,11 +64,10 @@ int run_creep(const std::vector<std::string>& args) {
   const Creepages creep{o.number("--xi-x"), o.number("--xi-y"), o.number("--spin")};
   const std::string model = o.choice("--model", {"fastsim", "linear"});
   const std::string format = o.choice("--format", {"csv", "text"});
-  int elements_per_strip = 20, strips = 20;
-  parse_grid(o.text("--grid", "20x20"), &elements_per_strip, &strips);
+  const FastsimGrid grid = grid_option(o, kMinFastsimCount, kMaxFastsimCount);
 
   const CreepForces f = model == "linear" ? linear_creep_forces(patch, creep)
-                                          : Fastsim(elements_per_strip, strips).solve(patch, creep);
+                                          : Fastsim(grid.elements_per_strip, grid.strips).solve(patch, creep);
   char line[256];
   if (format == "csv") {
     std::snprintf(line, sizeof line, "fx,fy,mz\n%.10g,%.10g,%.10g\n", f.fx + 0.0, f.fy + 0.0, f.mz + 0.0);

@@ -18,7 +18,10 @@
 #include "cli/profile_options.hpp"
 #include "cli/progress_bar.hpp"
 #include "cli/service_starter.hpp"
+#include "cli/table_json.hpp"
+#include "core/geometry/track_table.hpp"
 #include "core/identity/geometry_key.hpp"
+#include "core/spline/spline_fit_table.hpp"
 #include "core/spline/spline_geometry_fit.hpp"
 #include "core/spline/spline_validation.hpp"
 
@@ -44,25 +47,17 @@ FieldError both_wheels(const FieldError& a, const FieldError& b) {
 json report_json(const GeometrySpec& spec, const SplineFitOptions& o, const SplineFit& fit,
                  const SplineAccuracy* accuracy) {
   json r;
-  r["geometry"] = {{"wheel", spec.wheel},
-                   {"rail", spec.rail},
-                   {"geometry_key", geometry_key(spec)},
-                   {"gauge", spec.track.gauge},
-                   {"flange_back_spacing", spec.track.flange_back_spacing},
-                   {"inclination", spec.track.inclination},
-                   {"nominal_radius", spec.track.nominal_radius}};
-  r["options"] = {{"box_left", {{"y_min", o.y_min}, {"y_max", o.y_max}, {"roll_max", o.roll_max}, {"yaw_max", o.yaw_max}}},
-                  {"intervals", o.intervals},
-                  {"degrees", o.degrees},
-                  {"knot_placement", o.placement == KnotPlacement::kUniform ? "uniform" : "graded"},
-                  {"sample_step_y", o.sample_step_y},
-                  {"samples_roll", o.roll_samples},
-                  {"samples_yaw", o.yaw_samples},
-                  {"jump_weight", o.jump_weight},
-                  {"jump_band", o.jump_band},
-                  {"transition", o.transition},
-                  {"flange_angle", o.flange_angle},
-                  {"flange_split_s", fit.model->s_split()}};
+  // The track and the scalar fit options under their tables' keys (core/geometry/track_table.hpp,
+  // core/spline/spline_fit_table.hpp), with what no table holds.
+  r["geometry"] = table_json(track_parameter_table(), spec.track);
+  r["geometry"]["wheel"] = spec.wheel;
+  r["geometry"]["rail"] = spec.rail;
+  r["geometry"]["geometry_key"] = geometry_key(spec);
+  r["options"] = table_json(spline_fit_table(), o);
+  r["options"]["intervals"] = o.intervals;
+  r["options"]["degrees"] = o.degrees;
+  r["options"]["knot_placement"] = o.placement == KnotPlacement::kUniform ? "uniform" : "graded";
+  r["options"]["flange_split_s"] = fit.model->s_split();
   json wheels = json::array();
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const WheelFitReport& w = fit.wheels[static_cast<size_t>(side)];

@@ -30,6 +30,7 @@
 #include "bus/transport/clock.hpp"
 #include "bus/transport/request_client.hpp"
 #include "cli/command.hpp"
+#include "cli/grid_option.hpp"
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/service_starter.hpp"
@@ -37,8 +38,10 @@
 #include "core/geometry/rigid_wheelset.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
 #include "core/identity/geometry_key.hpp"
+#include "core/model_interface/query_validation.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/numerics/number_text.hpp"
+#include "protocol/contact/contact_query_codec.hpp"
 #include "protocol/contact/contact_status.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
@@ -48,20 +51,40 @@ namespace {
 
 constexpr double kDefaultLoad = 154715.0 / 2.0;  // [N] per wheel: the benchmark's axle load shared by two wheels
 
-// Parses "MxN" (elements per strip x strips), each a whole number in 1..400 (contact_query_t limit).
-void parse_grid(const std::string& text, int* elements_per_strip, int* strips) {
-  const auto x = text.find_first_of("xX");
-  auto whole = [&](const std::string& part) {
-    if (part.empty() || part.size() > 3 || part.find_first_not_of("0123456789") != std::string::npos) return -1;
-    return std::stoi(part);
-  };
-  const int m = x == std::string::npos ? -1 : whole(text.substr(0, x));
-  const int n = x == std::string::npos ? -1 : whole(text.substr(x + 1));
-  if (m < 1 || n < 1 || m > 400 || n > 400) {
-    throw UsageError("--grid: '" + text + "' is not MxN with whole numbers in 1..400 (e.g. 20x20)");
+// The option that sets a field of the query, nullptr for a field no option sets.
+const char* query_option(QueryField field) {
+  switch (field) {
+    case QueryField::kPoseY: return "--y";
+    case QueryField::kPoseZ: return "--z";
+    case QueryField::kPoseRoll: return "--roll";
+    case QueryField::kPoseYaw: return "--yaw";
+    case QueryField::kSpinRate: return "--spin-rate";
+    case QueryField::kSpeed: return "--speed";
+    case QueryField::kNormalLoadLeft:
+    case QueryField::kNormalLoadRight: return "--load";
+    case QueryField::kFormulation: return "--formulation";
+    case QueryField::kShearModulus: return "--shear-modulus";
+    case QueryField::kPoissonRatio: return "--poisson";
+    case QueryField::kFriction: return "--friction";
+    case QueryField::kFastsimElements:
+    case QueryField::kFastsimStrips: return "--grid";
+    default: return nullptr;
   }
-  *elements_per_strip = m;
-  *strips = n;
+}
+
+// The library's rule (core/model_interface/query_validation.hpp) on the query the options make,
+// the one the service applies: UsageError "<option>: <value> is outside <range> [unit]" naming
+// the option that breaks it (the library's own message for a field no option sets).
+void check_query(const Options& o, const ContactQuery& query) {
+  const std::optional<QueryViolation> violation = find_query_violation(query);
+  if (!violation) return;
+  const char* option = query_option(violation->rule.field);
+  if (!option) {
+    validate_contact_query(query);  // throws the library's message
+    return;
+  }
+  const std::string value = o.has(option) ? o.text(option) : number_text(violation->value);
+  throw UsageError(std::string(option) + ": " + value + " " + query_rule_breach(*violation));
 }
 
 // Height of the wheelset centre at which the closer wheel just touches its rail at (y, roll, yaw):
@@ -140,22 +163,24 @@ void print_patches(const wrc::contact_reply_t& reply, const std::string& format)
 // ---- the command ---------------------------------------------------------------------------------
 
 int run_query(const std::vector<std::string>& args) {
+  const ContactQuery defaults;
   std::vector<OptionSpec> specs{
       {"--model", true, "contact model: onepoint, interp, multipoint or spline", ""},
       {"--y", true, "lateral shift of the wheelset [m], > 0 towards the left rail", ""},
       {"--roll", true, "roll angle [rad], > 0 raises the left wheel", "0 (elastic without --z: rigid solution)"},
-      {"--yaw", true, "yaw angle [rad], within +-0.06 (validated range)", "0"},
+      {"--yaw", true, "yaw angle [rad], within +-" + shortest_number_text(kMaxValidatedYaw) + " (validated range)",
+       shortest_number_text(defaults.pose.yaw)},
       {"--z", true, "height of the wheelset centre above the top-of-rail plane [m]",
        "rigid: closer wheel just touching; elastic: that minus --penetration"},
       {"--penetration", true, "elastic without --z: how far the centre is lowered below touching [m]", "1e-4"},
       {"--load", true, "normal load per wheel, rigid formulation [N]", number_text(kDefaultLoad)},
       {"--formulation", true, "rigid (loads given) or elastic (forces from penetration)", "rigid"},
-      {"--speed", true, "forward speed V [m/s]", "30"},
+      {"--speed", true, "forward speed V [m/s]", shortest_number_text(defaults.speed)},
       {"--spin-rate", true, "angular velocity about the axle [rad/s]", "V/r0"},
-      {"--shear-modulus", true, "shear modulus G [Pa]", "8.2e10"},
-      {"--poisson", true, "Poisson's ratio [-]", "0.28"},
-      {"--friction", true, "friction coefficient mu [-]", "0.3"},
-      {"--grid", true, "FASTSIM grid: elements per strip x strips", "20x20"},
+      {"--shear-modulus", true, "shear modulus G [Pa]", shortest_number_text(defaults.material.shear_modulus)},
+      {"--poisson", true, "Poisson's ratio [-]", shortest_number_text(defaults.material.poisson_ratio)},
+      {"--friction", true, "friction coefficient mu [-]", shortest_number_text(defaults.material.friction)},
+      grid_option_spec(),
       {"--timeout", true, "wait for the reply per attempt [s]", "1"},
       {"--retries", true, "re-sends after a timeout", "3"},
       {"--instance", true, "address this instance (must be running)", "from the heartbeats"},
@@ -182,54 +207,48 @@ int run_query(const std::vector<std::string>& args) {
   }
   const std::string model = o.choice("--model", contact_model_names());
   if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
-  const double y = o.required_number("--y", {-0.5, 0.5});
-  const double yaw = o.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
   const std::string formulation = o.choice("--formulation", {"rigid", "elastic"});
-  const double speed = o.number("--speed", {1e-6, 1000.0});
-  const double load = o.number("--load", {0.0, 1e8});
-  int elements = 20, strips = 20;
-  if (o.has("--grid")) parse_grid(o.text("--grid"), &elements, &strips);
   bus::CallPolicy policy;
   policy.timeout = o.number("--timeout", {1e-3, 600.0});
   policy.retries = o.integer("--retries", {0, 100});
   const double start_timeout = o.number("--start-timeout", {0.1, 3600.0});
   const std::string format = o.choice("--format", {"csv", "table"});
   const GeometrySpec spec = geometry_spec_from_options(o);
-  const std::string key = geometry_key(spec);
 
-  // The configuration; the client's own geometry only serves z (and the rigid roll when elastic).
-  wrc::wheelset_configuration_t c{};
-  c.y = y;
-  c.yaw = yaw;
-  c.roll = o.has("--roll") ? o.number("--roll", {-0.5, 0.5}) : 0.0;
-  c.spin_rate = o.has("--spin-rate") ? o.number("--spin-rate", {-1e4, 1e4}) : speed / spec.track.nominal_radius;
-  c.normal_load_left = load;
-  c.normal_load_right = load;
-  if (o.has("--z")) {
-    c.z = o.number("--z", {-10.0, 10.0});
-  } else {
+  // The query as the library takes it, checked by the library's rule before anything starts; the
+  // height (and the elastic roll) from the client's own geometry afterwards.
+  ContactQuery q;
+  q.pose.y = o.required_number("--y");
+  q.pose.yaw = o.number("--yaw");
+  q.pose.roll = o.has("--roll") ? o.number("--roll") : 0.0;
+  if (o.has("--z")) q.pose.z = o.number("--z");
+  q.speed = o.number("--speed");
+  if (o.has("--spin-rate")) q.spin_rate = o.number("--spin-rate");
+  q.normal_load.fill(o.number("--load"));
+  q.formulation = formulation == "elastic" ? ContactFormulation::kElastic : ContactFormulation::kRigid;
+  q.material = {o.number("--shear-modulus"), o.number("--poisson"), o.number("--friction")};
+  const FastsimGrid grid = grid_option(o, kMinFastsimGrid, kMaxFastsimGrid);
+  q.fastsim_elements = grid.elements_per_strip;
+  q.fastsim_strips = grid.strips;
+  check_query(o, q);
+  if (!o.has("--spin-rate")) q.spin_rate = q.speed / spec.track.nominal_radius;
+  const std::string key = geometry_key(spec);
+  if (!o.has("--z")) {
     const WheelsetGeometry geometry = make_geometry(spec);
-    if (formulation == "elastic" && !o.has("--roll")) {
-      const RigidContact rigid = RigidWheelsetSolver(geometry).solve(y, yaw);
-      c.roll = rigid.pose.roll;
-      c.z = rigid.pose.z;
+    if (q.formulation == ContactFormulation::kElastic && !o.has("--roll")) {
+      const RigidContact rigid = RigidWheelsetSolver(geometry).solve(q.pose.y, q.pose.yaw);
+      q.pose.roll = rigid.pose.roll;
+      q.pose.z = rigid.pose.z;
     } else {
-      c.z = touching_height(geometry, y, c.roll, yaw);
+      q.pose.z = touching_height(geometry, q.pose.y, q.pose.roll, q.pose.yaw);
     }
-    if (formulation == "elastic") c.z -= o.number("--penetration", {0.0, 0.01});
+    if (q.formulation == ContactFormulation::kElastic) q.pose.z -= o.number("--penetration", {0.0, 0.01});
   }
+  check_query(o, q);
   wrc::contact_query_t query{};
+  protocol::to_query_message({q}, query);
   query.model = model;
   query.geometry_key = key;
-  query.formulation = formulation == "elastic" ? wrc::contact_query_t::ELASTIC : wrc::contact_query_t::RIGID;
-  query.shear_modulus = o.number("--shear-modulus", {1.0, 1e13});
-  query.poisson_ratio = o.number("--poisson", {0.0, 0.5});
-  query.friction = o.number("--friction", {0.0, 10.0});
-  query.fastsim_elements = static_cast<std::int16_t>(elements);
-  query.fastsim_strips = static_cast<std::int16_t>(strips);
-  query.speed = speed;
-  query.num_configurations = 1;
-  query.configurations = {c};
 
   // Find the service, or start one.
   CommandBus session(o, "query");

@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <stdexcept>
 
+#include "cli/table_json.hpp"
 #include "core/dynamics/run_counter_table.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
 #include "core/track/track_layout.hpp"
@@ -11,23 +12,6 @@
 
 namespace wrc::cli {
 namespace {
-
-// The members of value as a JSON object, each by its table key: booleans as true / false, whole
-// numbers as integers.
-template <class Entry, class T>
-nlohmann::json table_json(const std::vector<Entry>& table, const T& value) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const Entry& p : table) {
-    const double v = p.get(value);
-    if (p.kind == ParameterKind::kBoolean)
-      j[p.key] = v != 0.0;
-    else if (p.kind == ParameterKind::kInteger)
-      j[p.key] = static_cast<long long>(v);
-    else
-      j[p.key] = v;
-  }
-  return j;
-}
 
 // The layout the run went along: its length, the distance travelled and, per curve, where it
 // starts, its radius, direction and cant, its balanced speed and the cant deficiency at the run's

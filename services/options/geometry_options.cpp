@@ -4,14 +4,31 @@
 #include <string>
 
 #include "core/geometry/track_table.hpp"
+#include "core/profile/builtin_profiles.hpp"
 #include "options/parameter_options.hpp"
 
 namespace wrc {
 
+namespace {
+
+// The profiles a side's option takes: its built-in names, its one-parameter form, or a file
+// ("S1002, conic:<slope>, or a profile file").
+std::string profile_choices(ProfileSide side, const std::string& parametric) {
+  std::string text;
+  for (const BuiltinProfile& p : kBuiltinProfiles)
+    if (p.side == side) text += std::string(p.name) + ", ";
+  return text + parametric + ", or a profile file";
+}
+
+}  // namespace
+
 std::vector<OptionSpec> geometry_option_specs() {
   std::vector<OptionSpec> specs{
-      {"--wheel", true, "wheel profile: S1002, conic:<slope>, or a profile file", GeometrySpec{}.wheel},
-      {"--rail", true, "rail profile: UIC60, UIC60-MB, circle:<radius [m]>, or a profile file", GeometrySpec{}.rail},
+      {"--wheel", true, "wheel profile: " + profile_choices(ProfileSide::kWheel, std::string(kConicPrefix) + "<slope>"),
+       GeometrySpec{}.wheel},
+      {"--rail", true,
+       "rail profile: " + profile_choices(ProfileSide::kRail, std::string(kCirclePrefix) + "<radius [m]>"),
+       GeometrySpec{}.rail},
       {"--rail-cant", true, "inclination already contained in a rail profile file: 1:N, none or [rad] "
                             "(SIMPACK files saying 'canted': 1:40)", "from the file"},
   };

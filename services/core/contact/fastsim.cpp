@@ -9,7 +9,6 @@
 namespace wrc {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-constexpr int kMaxCount = 10000;
 
 // Four strips in lockstep (GCC vector extension: one AVX register in the x86-64-v3 clone, two SSE
 // registers in the baseline): strips are independent, each a serial recursion along x, so the
@@ -82,10 +81,10 @@ StripSums sweep_strips(const StripBlock& block, const double* zeta, const double
 }  // namespace
 
 Fastsim::Fastsim(int elements_per_strip, int strips) : m_x_(elements_per_strip), m_y_(strips) {
-  if (m_x_ < 1 || m_x_ > kMaxCount || m_y_ < 1 || m_y_ > kMaxCount) {
+  if (m_x_ < kMinFastsimCount || m_x_ > kMaxFastsimCount || m_y_ < kMinFastsimCount || m_y_ > kMaxFastsimCount) {
     std::ostringstream msg;
     msg << "Fastsim: grid " << elements_per_strip << "x" << strips << " (elements per strip x strips) must have "
-        << "both counts in 1.." << kMaxCount;
+        << "both counts in " << kMinFastsimCount << ".." << kMaxFastsimCount;
     throw std::invalid_argument(msg.str());
   }
   strip_eta_.resize(m_y_);

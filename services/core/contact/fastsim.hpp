@@ -37,14 +37,21 @@
 
 namespace wrc {
 
+/// The FASTSIM grid used unless another is asked for: elements per strip and strips [-].
+inline constexpr int kDefaultFastsimGrid = 20;
+/// The element counts per direction a Fastsim takes [-], both included.
+inline constexpr int kMinFastsimCount = 1;
+inline constexpr int kMaxFastsimCount = 10000;
+
 /// A FASTSIM solver for one grid size. Construction precomputes the normalised grid; solve() is
 /// const, allocation-free and thread-safe.
 class Fastsim {
  public:
-  /// @param elements_per_strip m_x, elements along the rolling direction in every strip [-], 1..10000.
-  /// @param strips m_y, number of strips across the lateral direction [-], 1..10000.
-  /// @throws std::invalid_argument naming the values when a count is outside 1..10000.
-  explicit Fastsim(int elements_per_strip = 20, int strips = 20);
+  /// @param elements_per_strip m_x, elements along the rolling direction in every strip [-],
+  /// kMinFastsimCount..kMaxFastsimCount (1..10000).
+  /// @param strips m_y, number of strips across the lateral direction [-], the same range.
+  /// @throws std::invalid_argument naming the values when a count is outside that range.
+  explicit Fastsim(int elements_per_strip = kDefaultFastsimGrid, int strips = kDefaultFastsimGrid);
 
   /// Creep forces with precomputed Kalker coefficients (C11, C22, C23 are used; C33 is not).
   /// @param patch a, b [m], N [N], G [Pa], mu [-] (nu is only used by the other overload).
@@ -74,7 +81,7 @@ class Fastsim {
 
 /// One-off convenience: Fastsim(elements_per_strip, strips).solve(patch, creepages). Allocates the grid;
 /// build a Fastsim once for repeated calls.
-CreepForces fastsim(const CreepPatch& patch, const Creepages& creepages, int elements_per_strip = 20,
-                    int strips = 20);
+CreepForces fastsim(const CreepPatch& patch, const Creepages& creepages,
+                    int elements_per_strip = kDefaultFastsimGrid, int strips = kDefaultFastsimGrid);
 
 }  // namespace wrc

@@ -1,5 +1,6 @@
 #include "core/dynamics/run_parameter_table.hpp"
 
+#include "core/geometry/wheelset_geometry.hpp"
 #include "core/model_interface/query_validation.hpp"
 
 namespace wrc {
@@ -85,7 +86,7 @@ const std::vector<Parameter<InitialState>>& initial_state_table() {
       member_parameter<I>({"y0", nullptr, "m", "initial lateral shift", ParameterKind::kNumber, below_magnitude(0.05)},
                           &I::y),
       member_parameter<I>({"yaw0", nullptr, "rad", "initial yaw angle", ParameterKind::kNumber,
-                           below_magnitude(0.06)}, &I::yaw),
+                           below_magnitude(kMaxValidatedYaw)}, &I::yaw),
       member_parameter<I>({"y_dot0", nullptr, "m/s", "initial lateral velocity"}, &I::y_dot),
       member_parameter<I>({"yaw_dot0", nullptr, "rad/s", "initial yaw rate"}, &I::yaw_dot),
       member_parameter<I>({"spin_rate_offset", nullptr, "rad/s", "initial spin rate minus speed / r0"},

@@ -14,6 +14,7 @@
 
 #include "core/models/contact_model_factory.hpp"
 #include "core/models/wheel_constraint.hpp"
+#include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
@@ -55,12 +56,7 @@ ContactFormulation formulation_of(const ContactEvaluator& contact) {
   return contact_model_entry(contact.model()).dynamics_formulation;
 }
 
-std::string format_time(double t) {
-  std::ostringstream s;
-  s.precision(17);
-  s << t;
-  return s.str();
-}
+std::string format_time(double t) { return exact_number_text(t); }
 
 // [-] relative finite-difference increment of the Jacobian: about the square root of the contact
 // result's relative rounding, so that truncation and rounding errors are alike.

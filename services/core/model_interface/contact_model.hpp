@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 
 #include "core/contact/creep_forces.hpp"
+#include "core/contact/fastsim.hpp"
 #include "core/geometry/contact_point.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
 #include "core/geometry/wheelset_pose.hpp"
@@ -46,8 +47,8 @@ struct ContactQuery {
   std::array<double, 2> normal_load{0.0, 0.0};  ///< kRigid: normal load on the left [0] and right [1] wheel [N]
   ContactFormulation formulation = ContactFormulation::kRigid;
   ContactMaterial material;
-  int fastsim_elements = 20;  ///< FASTSIM elements per strip (rolling direction)
-  int fastsim_strips = 20;    ///< FASTSIM strips (lateral)
+  int fastsim_elements = kDefaultFastsimGrid;  ///< FASTSIM elements per strip (rolling direction)
+  int fastsim_strips = kDefaultFastsimGrid;    ///< FASTSIM strips (lateral)
   /// The contact-point branch to follow on the left [0] and right [1] wheel: the wheel profile
   /// coordinate s of the point the caller is on (its last accepted step, or the switch_s_wheel of
   /// the event that put it there) [m]. NaN: the model's own choice (the lowest point). Models

@@ -2,20 +2,18 @@
 
 #include <cfloat>
 #include <cmath>
-#include <sstream>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
 #include "core/geometry/wheelset_geometry.hpp"
+#include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
 
-std::string text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
+// Significant digits of the values and bounds in the library's messages [-].
+constexpr int kDigits = 6;
 
 bool keeps(const QueryRule& rule, double v) {
   switch (rule.kind) {
@@ -36,21 +34,24 @@ bool is_load(QueryField field) {
 
 // The library's wording of a broken rule (after "<field> [unit] = <value> ").
 std::string library_rule_text(const QueryRule& rule, double v) {
+  auto bound = [](double b) { return number_text(b, kDigits); };
+  auto interval = [&](const char* open, const char* close) {
+    return open + bound(rule.low) + ", " + bound(rule.high) + close;
+  };
   switch (rule.kind) {
     case QueryRuleKind::kFinite: return "must be finite";
     case QueryRuleKind::kClosed:
       if (rule.field == QueryField::kPoseYaw && std::isfinite(v))
-        return "is beyond the validated range +-" + text(rule.high) + " rad of the contact geometry";
+        return "is beyond the validated range +-" + bound(rule.high) + " rad of the contact geometry";
       if (is_load(rule.field) && !(v > rule.high)) return "must be non-negative and finite";
       if (!std::isfinite(v)) return "must be finite";
-      return "must be in [" + text(rule.low) + ", " + text(rule.high) + "]";
-    case QueryRuleKind::kOpen: return "must be in (" + text(rule.low) + ", " + text(rule.high) + ")";
-    case QueryRuleKind::kPositiveAtMost: return "must be in (0, " + text(rule.high) + "]";
-    case QueryRuleKind::kNanOrClosed:
-      return "must be NaN (none) or in [" + text(rule.low) + ", " + text(rule.high) + "]";
+      return "must be in " + interval("[", "]");
+    case QueryRuleKind::kOpen: return "must be in " + interval("(", ")");
+    case QueryRuleKind::kPositiveAtMost: return "must be in (0, " + bound(rule.high) + "]";
+    case QueryRuleKind::kNanOrClosed: return "must be NaN (none) or in " + interval("[", "]");
     case QueryRuleKind::kCount:
       if (rule.field == QueryField::kFormulation) return "is not kRigid or kElastic";
-      return "must be in " + text(rule.low) + ".." + text(rule.high);
+      return "must be in " + bound(rule.low) + ".." + bound(rule.high);
   }
   return "is invalid";
 }
@@ -127,15 +128,40 @@ const char* query_field_name(QueryField field) {
   return "?";
 }
 
+std::string query_rule_breach(const QueryViolation& violation) {
+  const QueryRule& rule = violation.rule;
+  const double v = violation.value;
+  const std::string unit =
+      *rule.unit == '\0' ? "" : std::string(" ") + (std::strcmp(rule.unit, "-") == 0 ? "[-]" : rule.unit);
+  auto interval = [&](const char* open, double low, const char* close) {
+    return "is outside " + (open + number_text(low) + ", " + number_text(rule.high) + close) + unit;
+  };
+  switch (rule.kind) {
+    case QueryRuleKind::kFinite: return "is not a finite number";
+    case QueryRuleKind::kClosed:
+    case QueryRuleKind::kNanOrClosed:
+    case QueryRuleKind::kCount:
+      if (std::isinf(v) || (std::isnan(v) && rule.kind == QueryRuleKind::kClosed)) return "is not a finite number";
+      return interval("[", rule.low, "]");
+    case QueryRuleKind::kOpen:
+      if (!std::isfinite(v)) return "is not a finite number";
+      return interval("(", rule.low, ")");
+    case QueryRuleKind::kPositiveAtMost:
+      if (!std::isfinite(v)) return "is not a finite number";
+      if (v > rule.high) return interval("(", 0.0, "]");
+      return "is not positive";
+  }
+  return "is invalid";
+}
+
 void validate_contact_query(const ContactQuery& q) {
   const std::optional<QueryViolation> violation = find_query_violation(q);
   if (!violation) return;
   const QueryRule& rule = violation->rule;
-  std::ostringstream msg;
-  msg << "contact query: " << query_field_name(rule.field);
-  if (*rule.unit) msg << " [" << rule.unit << "]";
-  msg << " = " << violation->value << " " << library_rule_text(rule, violation->value);
-  throw std::invalid_argument(msg.str());
+  std::string msg = std::string("contact query: ") + query_field_name(rule.field);
+  if (*rule.unit) msg += std::string(" [") + rule.unit + "]";
+  msg += " = " + number_text(violation->value, kDigits) + " " + library_rule_text(rule, violation->value);
+  throw std::invalid_argument(msg);
 }
 
 }  // namespace wrc

@@ -6,6 +6,7 @@
 /// (find_query_violation), so a query is accepted or rejected alike in-process and over the bus.
 
 #include <optional>
+#include <string>
 
 #include "core/model_interface/contact_model.hpp"
 
@@ -84,6 +85,13 @@ std::optional<QueryViolation> find_query_violation(const ContactQuery& query);
 
 /// The field's name in the library ("pose.y", "normal_load[0] (left)", "material.friction").
 const char* query_field_name(QueryField field);
+
+/// How a violation's value breaks its rule, in the words of the bus adapter and the command line
+/// (after "<name> = <value> " or "<option>: <value> "): "is not a finite number", "is outside
+/// [low, high] <unit>" (a closed rule or a count), "is outside (low, high) [-]" (an open one),
+/// "is not positive" or "is outside (0, high] <unit>" (a positive one); the bounds with
+/// number_text's nine digits.
+std::string query_rule_breach(const QueryViolation& violation);
 
 /// Throws std::invalid_argument "contact query: <field> [unit] = <value> <rule>" for the first
 /// violation (find_query_violation): any pose value or rate NaN, infinite or outside its range

@@ -11,8 +11,8 @@
 
 namespace wrc {
 
-/// Thread-safe cache of Fastsim instances keyed by (elements per strip, strips). The 20x20 solver
-/// (the query default) is built in the constructor. References stay valid for the cache's lifetime.
+/// Thread-safe cache of Fastsim instances keyed by (elements per strip, strips). The solver of the
+/// query default (kDefaultFastsimGrid in both directions) is built in the constructor. References stay valid for the cache's lifetime.
 class FastsimCache {
  public:
   FastsimCache();

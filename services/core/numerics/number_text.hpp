@@ -2,7 +2,7 @@
 /// @file
 /// Numbers as text, the one way for every layer: a whole text read as one number (strtod's syntax,
 /// leading white space allowed, nothing after the number), and a number written with a given
-/// count of significant digits (printf's %g).
+/// count of significant digits (printf's %g) or in its shortest exact form.
 
 #include <optional>
 #include <string>
@@ -29,5 +29,9 @@ std::string number_text(double value, int digits = 9);
 
 /// value with 17 significant digits, which reads back as the same double.
 inline std::string exact_number_text(double value) { return number_text(value, 17); }
+
+/// The shortest text that reads back as value, its exponent as people write it: "0.28", "30",
+/// "8.2e10", "1e-6" (the parameter tables' values and the command line's defaults).
+std::string shortest_number_text(double value);
 
 }  // namespace wrc

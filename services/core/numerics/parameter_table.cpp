@@ -1,7 +1,5 @@
 #include "core/numerics/parameter_table.hpp"
 
-#include <algorithm>
-#include <charconv>
 #include <cmath>
 
 #include "core/numerics/number_text.hpp"
@@ -49,18 +47,7 @@ std::string ParameterInfo::value_text(double value) const {
   if (kind == ParameterKind::kBoolean) return value != 0.0 ? "true" : "false";
   if (kind == ParameterKind::kInteger && std::isfinite(value) && std::abs(value) < 9e15)
     return std::to_string(static_cast<long long>(value));
-  char buf[64];
-  const auto written = std::to_chars(buf, buf + sizeof buf, value);  // shortest exact form
-  std::string text(buf, written.ptr);
-  // "1e-06" -> "1e-6", "1.5e+07" -> "1.5e7": the same number, as people write it
-  if (const auto e = text.find('e'); e != std::string::npos) {
-    std::string exponent = text.substr(e + 1);
-    const bool negative = exponent[0] == '-';
-    if (exponent[0] == '-' || exponent[0] == '+') exponent.erase(0, 1);
-    exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
-    text = text.substr(0, e + 1) + (negative ? "-" : "") + exponent;
-  }
-  return text;
+  return shortest_number_text(value);
 }
 
 double ParameterInfo::parse(const std::string& text, const std::string& what) const {

@@ -362,13 +362,11 @@ __attribute__((always_inline)) inline void lane_sums(const Vec4* p, Vec4& sums) 
 // the S / 4 accumulators stay in registers and the terms are one pass: the term's weight is formed
 // from the 1-D factors, its row is base + row offset). The derivatives of function n come from
 // its transposed coefficients (transposed[n]: the query's first term; transposed_offsets: the
-// (b, c) vectors of 4 y terms from there). Measured (callgrind, 26 values, 2 functions with
-// derivatives, per wheel): the values about 700 instructions, against about 780 for a fully
-// separable contraction (its intermediate sums cost more than the term weights they save) and more
-// again when merged with the derivatives into one pass (register pressure); the derivatives about
-// 900 contracted for functions 0..3 together from the rows, about 330 one function at a time from
-// the transposed coefficients. Compiled for x86-64-v3 (AVX2, FMA) and the baseline, chosen at run
-// time.
+// (b, c) vectors of 4 y terms from there). Fewer instructions than a fully separable contraction
+// of the values (its intermediate sums cost more than the term weights they save), than values and
+// derivatives merged into one pass (register pressure), and than the derivatives of functions 0..3
+// contracted together from the rows (instruction counts: tests/bench/models_bench.cpp,
+// BM_SplineBothWheels). Compiled for x86-64-v3 (AVX2, FMA) and the baseline, chosen at run time.
 template <int Q0, int Q1, int Q2, int S>
 WRC_SIMD_CLONES
 void query_kernel(const double* base, const std::ptrdiff_t* offsets, const double* const* transposed,

@@ -1,7 +1,6 @@
 #include "protocol/contact/contact_query_codec.hpp"
 
 #include <cmath>
-#include <cstring>
 #include <exception>
 #include <optional>
 #include <stdexcept>
@@ -50,32 +49,6 @@ MessageField message_field(QueryField field) {
     case QueryField::kFastsimStrips: return {"fastsim_strips", false};
   }
   return {"?", false};
-}
-
-// The adapter's wording of a broken rule: "<name> = <value> is ...", with the bounds in the
-// field's unit.
-std::string describe(const std::string& name, const QueryViolation& violation) {
-  const QueryRule& rule = violation.rule;
-  const double v = violation.value;
-  const std::string head = name + " = " + number_text(v);
-  const std::string unit = *rule.unit == '\0' ? "" : std::string(" ") + (std::strcmp(rule.unit, "-") == 0 ? "[-]" : rule.unit);
-  const std::string closed = "[" + number_text(rule.low) + ", " + number_text(rule.high) + "]" + unit;
-  switch (rule.kind) {
-    case QueryRuleKind::kFinite: return head + " is not a finite number";
-    case QueryRuleKind::kClosed:
-    case QueryRuleKind::kNanOrClosed:
-    case QueryRuleKind::kCount:
-      if (std::isinf(v) || (std::isnan(v) && rule.kind == QueryRuleKind::kClosed)) return head + " is not a finite number";
-      return head + " is outside " + closed;
-    case QueryRuleKind::kOpen:
-      if (!std::isfinite(v)) return head + " is not a finite number";
-      return head + " is outside (" + number_text(rule.low) + ", " + number_text(rule.high) + ")" + unit;
-    case QueryRuleKind::kPositiveAtMost:
-      if (!std::isfinite(v)) return head + " is not a finite number";
-      if (v < 0.0 || v > rule.high) return head + " is outside [0, " + number_text(rule.high) + "]" + unit;
-      return head + " is not positive";
-  }
-  return head + " is invalid";
 }
 
 void copy3(const Eigen::Vector3d& from, double to[3]) {
@@ -127,7 +100,7 @@ std::string validate_query(const wrc::contact_query_t& q) {
     const MessageField field = message_field(violation->rule.field);
     const std::string name =
         field.per_configuration ? "configurations[" + std::to_string(i) + "]." + field.name : field.name;
-    return describe(name, *violation);
+    return name + " = " + number_text(violation->value) + " " + query_rule_breach(*violation);
   }
   return {};
 }

@@ -514,6 +514,12 @@ TEST_F(ContactServiceTest, QueryCommandPrintsPatches) {
   EXPECT_NE(out.find("normal_force"), std::string::npos) << out;
   EXPECT_EQ(err2.find("starting"), std::string::npos) << err2;
   EXPECT_NE(err2.find("instance r answered"), std::string::npos) << err2;
+  // The library's edges, which the command checks by the service's own rule, are answered.
+  out = run_command(cli + " --model onepoint --y 0.001 --poisson 0.4999 --grid 2x400 --shear-modulus 1e13 "
+                          "--speed 1000 --friction 10 --format csv 2>&1",
+                    &status);
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("\nleft,"), std::string::npos) << out;
 
   out = run_command(cli + " --model onepoint --y 0.001 --instance zz 2>&1", &status);
   EXPECT_NE(status, 0);

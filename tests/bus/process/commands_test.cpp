@@ -748,5 +748,23 @@ TEST_F(EarlyErrors, RunRefusesMoreSwapsThanTheLimitNamingIt) {
                                 {"--summary /nonexistent-wrc/x.json"});
 }
 
+// `wrc query` had ranges of its own, wider than the library's rule the contact service applies
+// (core/model_interface/query_validation.hpp): `--poisson 0.5` and `--grid 1x1` passed the command
+// and failed at the service. It now checks its query by that rule before it starts anything, in
+// one line naming the option and the library's range; the library's edges pass the check (the
+// error is then the next one, the wheel profile file's, which comes before the bus).
+TEST_F(EarlyErrors, QueryRefusesWhatTheServiceRefusesNamingTheRange) {
+  const std::string query = "query --model onepoint --y 0.001 --channel-prefix early";
+  expect_one_line_error_at_once(query + " --poisson 0.5", {"wrc query: --poisson: 0.5 is outside (0, 0.5) [-]"});
+  expect_one_line_error_at_once(query + " --grid 1x1",
+                                {"wrc query: --grid: '1x1' is not MxN with whole numbers in 2..400"});
+  expect_one_line_error_at_once(query + " --shear-modulus 1e14", {"wrc query: --shear-modulus: 1e14 is outside (0, "});
+  expect_one_line_error_at_once(query + " --speed 0", {"wrc query: --speed: 0 is not positive"});
+  expect_one_line_error_at_once(query + " --speed 1000.5", {"wrc query: --speed: 1000.5 is outside (0, 1000] m/s"});
+  const std::string bad = std::string(WRC_SOURCE_DIR) + "/tests/data/bad_nan.txt";
+  expect_one_line_error_at_once(query + " --poisson 0.4999 --grid 2x400 --shear-modulus 1e13 --speed 1000 --wheel " + bad,
+                                {"wrc query: " + bad + ":4: NaN or infinite value"});
+}
+
 }  // namespace
 }  // namespace wrc::bus::test

@@ -1,13 +1,17 @@
 // `wrc fit` as the user runs it: a small model fitted from the command line writes a JSON report
 // with every fitted parameter's max_error and rms_error (z among them), the validation set and
-// what it leaves out, the jumps and knots of both wheels and the timing; bad options fail with
-// one line naming the option.
+// what it leaves out, the jumps and knots of both wheels, the timing, and the fit options and the
+// track under their parameter tables' keys, every key; bad options fail with one line naming the
+// option.
 #include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "bus_fixture.hpp"
+#include "core/geometry/track_table.hpp"
+#include "core/identity/geometry_key.hpp"
+#include "core/spline/spline_fit_table.hpp"
 
 namespace wrc::bus::test {
 namespace {
@@ -33,6 +37,25 @@ TEST_F(BusTest, FitCommandWritesTheAccuracyReport) {
   for (const char* name : {"contact_angle", "rolling_radius", "s_wheel", "hertz_m", "flange_clearance"})
     EXPECT_TRUE(r.at("parameters").contains(name)) << name;
   EXPECT_EQ(r.at("options").at("intervals"), (nlohmann::json{6, 1, 1}));
+  EXPECT_EQ(r.at("options").at("degrees"), (nlohmann::json{3, 1, 1}));
+  EXPECT_EQ(r.at("options").at("knot_placement"), "graded");
+  EXPECT_TRUE(r.at("options").at("flange_split_s").is_number());
+  // Every scalar fit option and every track parameter under its table's key, with the value the
+  // command fitted with (the defaults but for the options given above).
+  SplineFitOptions fitted;
+  fitted.roll_samples = fitted.yaw_samples = 3;
+  fitted.sample_step_y = 2.5e-4;
+  for (const auto& p : spline_fit_table()) {
+    ASSERT_TRUE(r.at("options").contains(p.key)) << p.key;
+    EXPECT_EQ(r.at("options").at(p.key).get<double>(), p.get(fitted)) << p.key;
+  }
+  for (const auto& p : track_parameter_table()) {
+    ASSERT_TRUE(r.at("geometry").contains(p.key)) << p.key;
+    EXPECT_EQ(r.at("geometry").at(p.key).get<double>(), p.get(TrackParameters{})) << p.key;
+  }
+  EXPECT_EQ(r.at("geometry").at("wheel"), "S1002");
+  EXPECT_EQ(r.at("geometry").at("rail"), "UIC60");
+  EXPECT_EQ(r.at("geometry").at("geometry_key"), geometry_key(GeometrySpec{}));
   EXPECT_EQ(r.at("validation").at("excluded_band").get<double>(), 5e-4);
   ASSERT_EQ(r.at("wheels").size(), 2u);
   for (const auto& w : r.at("wheels")) {

@@ -739,7 +739,8 @@ TEST_F(EarlyErrors, RunRefusesMoreSwapsThanTheLimitNamingIt) {
     for (int k = 1; k <= count; ++k) text += (k > 1 ? "," : "") + std::to_string(k) + ":interp";
     return text;
   };
-  const std::string run = "run --model onepoint --t-end 20000 --channel-prefix early";
+  // 20000 s of run at 0.1 s per output sample: within the 200 000 samples a run may write.
+  const std::string run = "run --model onepoint --t-end 20000 --output-period 0.1 --channel-prefix early";
   expect_one_line_error_at_once(run + " --summary " + temp_path("s.json") + " --swap-at " + swaps(10000),
                                 {"wrc run: --swap-at: 10000 swaps, more than the limit of 1000"});
   expect_one_line_error_at_once(run + " --summary " + temp_path("s.json") + " --swap-at " + swaps(1001),

@@ -20,6 +20,7 @@ run_command_t command_with_swaps(std::size_t count) {
   request.model = "onepoint";
   request.run_id = "swaps";
   request.spec.integrator.t_end = 1e6;
+  request.spec.integrator.output_period = 10.0;  // 1e5 samples: within the 200 000 a run may write
   for (std::size_t k = 0; k < count; ++k) request.swaps.push_back({static_cast<double>(k + 1), "interp"});
   return to_message(request);
 }

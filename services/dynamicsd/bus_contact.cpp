@@ -30,7 +30,6 @@ std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>&
     retries_ += result.attempts - 1;
     if (!result && settings_.instance.empty()) {
       // Fail-over: the same query to every READY instance by name, the first answer taken.
-      ++timeouts_;
       addressed_.clear();
       std::vector<contact_query_t> copies;
       for (const std::string& name :
@@ -39,6 +38,7 @@ std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>&
         copies.back().instance = name;
       }
       if (!copies.empty()) {
+        ++timeouts_;  // the round without a reply before it (a fail-over round that fails counts below)
         ++failovers_;
         result = client_.call_any(copies.data(), copies.size(), settings_.policy);
         retries_ += result.attempts - 1;

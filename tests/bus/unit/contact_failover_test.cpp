@@ -172,6 +172,16 @@ TEST(ContactFailover, NoAnswerAnywhereEndsTheWaitWithTheReason) {
   Responder b(bus.lcm);
   publish_heartbeat(bus.lcm, "onepoint", "b", heartbeat_t::READY, 202);
   bus::test::drain(bus.lcm);
+  // No instance READY at all: each round counts once, none fails over (a round is 2 attempts of
+  // 20 ms, so the 0.2 s wait holds at most 6 rounds).
+  BusContactSettings none = s;
+  none.model = "multipoint";
+  BusContact lonely(bus.client, bus.monitor, bus.names, none);
+  EXPECT_THROW(lonely.evaluate(one_query(0.001)), std::runtime_error);
+  EXPECT_EQ(lonely.failovers(), 0);
+  EXPECT_GE(lonely.timeouts(), 1);
+  EXPECT_LE(lonely.timeouts(), 6);
+
   s.instance = "a";  // asked by name: a's silence is the answer, b is not asked
   BusContact named(bus.client, bus.monitor, bus.names, s);
   EXPECT_THROW(named.evaluate(one_query(0.001)), std::runtime_error);

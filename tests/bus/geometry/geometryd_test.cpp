@@ -24,6 +24,7 @@
 #include "bus_fixture.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/spline/wheel_sample.hpp"
+#include "small_fit_options.hpp"
 #include "geometryd/geometryd_options.hpp"
 #include "geometryd/model_cache.hpp"
 #include "protocol/geometry/fit_options_codec.hpp"
@@ -45,18 +46,6 @@ using protocol::decode_model;
 using protocol::resolve_model;
 
 constexpr double kPeriod = 0.2;  // [s] heartbeat period of the services started here
-
-/// A model that fits in well under a second: cubic in y on 4 intervals, linear in roll and yaw,
-/// 3 x 3 lines sampled every 0.5 mm.
-SplineFitOptions small_options() {
-  SplineFitOptions o;
-  o.intervals = {4, 1, 1};
-  o.degrees = {3, 1, 1};
-  o.roll_samples = 3;
-  o.yaw_samples = 3;
-  o.sample_step_y = 5e-4;
-  return o;
-}
 
 /// Heartbeats of wrc-geometryd as they arrive.
 struct Beat {
@@ -165,7 +154,7 @@ class GeometryServiceTest : public BusTest {
 // also on the default channel SPLINE_MODEL; recompute fits again.
 TEST_F(GeometryServiceTest, FitsASmallModelThenAnswersFromTheCache) {
   start_service();
-  const SplineFitOptions options = small_options();
+  const SplineFitOptions options = small_fit_options();
   const std::string key = protocol::model_key(geometry_key(GeometrySpec{}), options);
 
   double t0 = monotonic_seconds();
@@ -234,7 +223,7 @@ TEST_F(GeometryServiceTest, FitsASmallModelThenAnswersFromTheCache) {
 // model's published fit_max_error for z), and a cache hit republishes the same tables.
 TEST_F(GeometryServiceTest, PublishesTheExactSamplesAsGeometryTables) {
   start_service();
-  const SplineFitOptions options = small_options();
+  const SplineFitOptions options = small_fit_options();
   send(make_request(21, options));
   const auto fitted = wait_model(21, 20.0);
   ASSERT_TRUE(fitted) << read_text(log_);
@@ -362,7 +351,7 @@ TEST_F(GeometryServiceTest, HeartbeatsKeepComingDuringADefaultFit) {
 // the same command again from there.
 TEST_F(GeometryServiceTest, FitCommandPrecomputesOnTheService) {
   start_service();
-  const SplineFitOptions options = small_options();
+  const SplineFitOptions options = small_fit_options();
   const std::string key = protocol::model_key(geometry_key(GeometrySpec{}), options);
   const std::string command = std::string(WRC_CLI_PATH) +
                               " fit --service --knots 4x1x1 --degree 3x1x1 --samples 3x3 --sample-step 5e-4 2>&1";
@@ -409,7 +398,7 @@ TEST_F(GeometryServiceTest, RejectsInvalidRequestsAndSurvivesGarbage) {
   const std::string channel = names_.name(channel::kGeometryRequest);
   wrc::heartbeat_t other_type{};
   publish_signed(*lcm_, channel, other_type);
-  auto truncated = make_request(35, small_options());
+  auto truncated = make_request(35, small_fit_options());
   std::vector<unsigned char> bytes(static_cast<std::size_t>(truncated.getEncodedSize()));
   truncated.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
   publish_signed_bytes(channel, {bytes.begin(), bytes.begin() + static_cast<long>(bytes.size() - 9)});
@@ -430,7 +419,7 @@ TEST_F(GeometryServiceTest, RejectsInvalidRequestsAndSurvivesGarbage) {
       {0, [](auto&) {}, "request_id 0 is not positive"},
   };
   for (const auto& c : cases) {
-    auto r = make_request(c.id, small_options());
+    auto r = make_request(c.id, small_fit_options());
     c.spoil(r);
     send(r);
     const auto p = wait_progress(c.id, "rejected: ", 3.0);
@@ -442,7 +431,7 @@ TEST_F(GeometryServiceTest, RejectsInvalidRequestsAndSurvivesGarbage) {
   }
 
   // A fit that throws (a box beyond the flange: no tread contact) fails; the service stays up.
-  SplineFitOptions beyond = small_options();
+  SplineFitOptions beyond = small_fit_options();
   beyond.y_min = 0.10;
   beyond.y_max = 0.12;
   send(make_request(37, beyond));
@@ -452,7 +441,7 @@ TEST_F(GeometryServiceTest, RejectsInvalidRequestsAndSurvivesGarbage) {
   EXPECT_EQ(failed->done, failed->total);
   EXPECT_EQ(models_.count(37), 0u);
 
-  send(make_request(36, small_options()));
+  send(make_request(36, small_fit_options()));
   ASSERT_TRUE(wait_model(36, 20.0)) << read_text(log_);
   EXPECT_EQ(models_.count(35), 0u);
   ASSERT_TRUE(handle_until(

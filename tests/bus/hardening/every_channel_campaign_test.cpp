@@ -51,6 +51,7 @@
 #include "child_process.hpp"
 #include "core/geometry/geometry_spec.hpp"
 #include "core/spline/spline_fit_options.hpp"
+#include "small_fit_options.hpp"
 #include "protocol/geometry/fit_options_codec.hpp"
 #include "protocol/geometry/track_codec.hpp"
 #include "protocol/run/run_command_codec.hpp"
@@ -97,17 +98,6 @@ long peak_rss_kib(pid_t pid) {
   while (std::getline(status, line))
     if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
   return -1;
-}
-
-/// A spline model that fits in well under a second (as in the geometry service tests).
-SplineFitOptions small_fit() {
-  SplineFitOptions o;
-  o.intervals = {4, 1, 1};
-  o.degrees = {3, 1, 1};
-  o.roll_samples = 3;
-  o.yaw_samples = 3;
-  o.sample_step_y = 5e-4;
-  return o;
 }
 
 /// One listening service: its heartbeat identity and the channels it subscribes to (with how many
@@ -212,7 +202,7 @@ class EveryChannelCampaign : public BusTest {
   wrc::geometry_request_t geometry_request() const {
     wrc::geometry_request_t g{};
     g.track = protocol::to_message(GeometrySpec{});
-    g.fit = protocol::to_message(small_fit());
+    g.fit = protocol::to_message(small_fit_options());
     return g;
   }
   /// The small model from wrc-geometryd (fitted the first time, then from its cache), normalized.

@@ -11,9 +11,7 @@ namespace wrc {
 namespace {
 
 std::string segment_name(std::size_t k, const TrackSegment& s) {
-  const char* kind = s.kind == TrackSegmentKind::kStraight ? "straight" : s.kind == TrackSegmentKind::kCurve ? "curve"
-                                                                                                             : "transition";
-  return "segment " + std::to_string(k + 1) + " (" + kind + ")";
+  return "segment " + std::to_string(k + 1) + " (" + track_segment_kind_name(s.kind) + ")";
 }
 
 }  // namespace

@@ -32,6 +32,15 @@ struct TrackPoint {
 /// What a piece of the layout is.
 enum class TrackSegmentKind { kStraight, kTransition, kCurve };
 
+/// Every kind, in the order of the enum.
+inline constexpr TrackSegmentKind kTrackSegmentKinds[] = {TrackSegmentKind::kStraight, TrackSegmentKind::kTransition,
+                                                           TrackSegmentKind::kCurve};
+
+/// The kind's name in layout files and messages: "straight", "transition", "curve".
+constexpr const char* track_segment_kind_name(TrackSegmentKind kind) {
+  return kind == TrackSegmentKind::kStraight ? "straight" : kind == TrackSegmentKind::kCurve ? "curve" : "transition";
+}
+
 /// One piece of the layout. A transition takes its start from the end of the piece before it (a
 /// straight at the start of the layout) and its end from the piece after it, and runs the
 /// curvature and the cant linearly in between.

@@ -2,7 +2,9 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -68,13 +70,13 @@ TrackLayout parse_track_layout(const std::string& json_text, const std::string& 
       throw std::invalid_argument(where + ": type: missing (straight, transition or curve)");
     const std::string type = item.at("type").get<std::string>();
     TrackSegment s;
+    const auto* kind = std::find_if(std::begin(kTrackSegmentKinds), std::end(kTrackSegmentKinds),
+                                    [&](TrackSegmentKind candidate) { return type == track_segment_kind_name(candidate); });
+    if (kind == std::end(kTrackSegmentKinds))
+      throw std::invalid_argument(where + ": type: '" + type + "' is not straight, transition or curve");
+    s.kind = *kind;
     std::set<std::string> known{"type", "length"};
-    if (type == "straight") {
-      s.kind = TrackSegmentKind::kStraight;
-    } else if (type == "transition") {
-      s.kind = TrackSegmentKind::kTransition;
-    } else if (type == "curve") {
-      s.kind = TrackSegmentKind::kCurve;
+    if (s.kind == TrackSegmentKind::kCurve) {
       known.insert({"radius", "direction", "cant"});
       s.radius = number(item, "radius", where);
       s.cant = number(item, "cant", where, false, 0.0);
@@ -82,8 +84,6 @@ TrackLayout parse_track_layout(const std::string& json_text, const std::string& 
           (item.at("direction") != "left" && item.at("direction") != "right"))
         throw std::invalid_argument(where + ": direction: must be \"left\" or \"right\"");
       s.left = item.at("direction") == "left";
-    } else {
-      throw std::invalid_argument(where + ": type: '" + type + "' is not straight, transition or curve");
     }
     for (const auto& [key, value] : item.items()) {
       (void)value;
@@ -118,7 +118,7 @@ std::string track_layout_text(const TrackLayout& layout) {
   for (std::size_t k = 0; k < layout.segments().size(); ++k) {
     const TrackSegment& s = layout.segments()[k];
     out << (k ? ", " : "") << "{\"type\": \""
-        << (s.kind == TrackSegmentKind::kStraight ? "straight" : s.kind == TrackSegmentKind::kCurve ? "curve" : "transition")
+        << track_segment_kind_name(s.kind)
         << "\", \"length\": " << exact_number_text(s.length);
     if (s.kind == TrackSegmentKind::kCurve)
       out << ", \"radius\": " << exact_number_text(s.radius) << ", \"direction\": \"" << (s.left ? "left" : "right")

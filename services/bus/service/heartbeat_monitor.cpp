@@ -103,8 +103,10 @@ std::vector<std::string> HeartbeatMonitor::ready_instances(const std::string& mo
   std::vector<std::string> names;
   for (auto it = table_.lower_bound(Key{model, std::string(), 0}); it != table_.end() && std::get<0>(it->first) == model;
        ++it) {
-    const ServiceStatus s = evaluate(it->second, now);
-    if (s.available() && (geometry_key.empty() || s.last.geometry_key == geometry_key)) names.push_back(s.last.instance);
+    const ServiceStatus& s = it->second;
+    if (ServiceStatus::says_available(s.last) && alive(s, now) &&
+        (geometry_key.empty() || s.last.geometry_key == geometry_key))
+      names.push_back(s.last.instance);
   }
   names.erase(std::unique(names.begin(), names.end()), names.end());  // the table is sorted by instance
   return names;

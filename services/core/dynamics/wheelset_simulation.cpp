@@ -360,7 +360,6 @@ void WheelsetSimulation::start() {
   }
   cache_.clear();
   t_ = 0.0;
-  place_on_track(t_);
   begin_segment(y, true);
   next_output_ = 0.0;
   output_index_ = 0;

@@ -428,10 +428,7 @@ TEST_F(ContactServiceTest, LaunchBringsUpTheSplineServiceAndQueryUsesIt) {
   const std::string cache = temp_path("models");
   ::setenv("WRC_CACHE_DIR", cache.c_str(), 1);
   const std::string log = temp_path("launch.log");
-  ChildProcess launcher(WRC_CLI_PATH,
-                        {"launch", "--profile", std::string(WRC_SOURCE_DIR) + "/profiles/launch/default.txt",
-                         "--build-dir", WRC_TEST_BUILD_DIR, "geometry", "contact-spline"},
-                        log);
+  const auto launcher = launch({"geometry", "contact-spline"}, log);
   handle_until([&] { auto s = monitor_->find("spline", "a", monotonic_seconds()); return s && s->available(); },
                kBuildDeadline);
   ::unsetenv("WRC_CACHE_DIR");
@@ -444,8 +441,8 @@ TEST_F(ContactServiceTest, LaunchBringsUpTheSplineServiceAndQueryUsesIt) {
   EXPECT_NE(out.find("spline instance a answered"), std::string::npos) << out;
   EXPECT_NE(out.find("\nleft,"), std::string::npos) << out;
   EXPECT_NE(out.find("\nright,"), std::string::npos) << out;
-  launcher.signal(SIGINT);
-  ASSERT_TRUE(launcher.wait(10.0, &status)) << read_text(log);
+  launcher->signal(SIGINT);
+  ASSERT_TRUE(launcher->wait(10.0, &status)) << read_text(log);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(log);
 }
 
@@ -454,10 +451,7 @@ TEST_F(ContactServiceTest, LaunchBringsUpTheSplineServiceAndQueryUsesIt) {
 // `wrc launch` with the default profile starts the three contact services; `wrc status` lists them.
 TEST_F(ContactServiceTest, LaunchStartsTheContactServicesAndStatusListsThem) {
   const std::string log = temp_path("launch.log");
-  ChildProcess launcher(WRC_CLI_PATH,
-                        {"launch", "--profile", std::string(WRC_SOURCE_DIR) + "/profiles/launch/default.txt",
-                         "--build-dir", WRC_TEST_BUILD_DIR, "contact-onepoint", "contact-interp", "contact-multipoint"},
-                        log);
+  const auto launcher = launch({"contact-onepoint", "contact-interp", "contact-multipoint"}, log);
   for (const char* model : {"onepoint", "interp", "multipoint"}) {
     const std::string failed = std::string("cannot build the ") + model + " model";
     handle_until(
@@ -477,8 +471,8 @@ TEST_F(ContactServiceTest, LaunchStartsTheContactServicesAndStatusListsThem) {
     EXPECT_NE(out.find(std::string(",CONTACT_QUERY.") + model + ",\"serving " + model + " queries, "), std::string::npos) << out;
     EXPECT_NE(out.find("," + geometry_key(GeometrySpec{}).substr(0, 12) + ","), std::string::npos) << out;
   }
-  launcher.signal(SIGINT);
-  ASSERT_TRUE(launcher.wait(10.0, &status)) << read_text(log);
+  launcher->signal(SIGINT);
+  ASSERT_TRUE(launcher->wait(10.0, &status)) << read_text(log);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(log);
 }
 

@@ -87,12 +87,6 @@ class DynamicsServiceTest : public BusTest {
       EXPECT_EQ(a["final_state"][key].get<double>(), b["final_state"][key].get<double>()) << key;
     EXPECT_EQ(a["counters"]["steps"], b["counters"]["steps"]);
   }
-  std::unique_ptr<ChildProcess> launch(const std::vector<std::string>& services, const std::string& log) {
-    std::vector<std::string> args{"launch", "--profile", std::string(WRC_SOURCE_DIR) + "/profiles/launch/default.txt",
-                                  "--build-dir", WRC_TEST_BUILD_DIR};
-    args.insert(args.end(), services.begin(), services.end());
-    return std::make_unique<ChildProcess>(WRC_CLI_PATH, args, log);
-  }
   // Waits until some instance of model is READY.
   bool wait_available(const std::string& model, double timeout) {
     return handle_until(

@@ -75,10 +75,7 @@ class HeartbeatFloodTest : public BusTest {
 TEST_F(HeartbeatFloodTest, KillsNothingAndQueriesStayAsFast) {
   if (!in_netns()) GTEST_SKIP() << "the flood is only sent inside a private network namespace";
   const std::string log = temp_path("launch.log");
-  ChildProcess launcher(WRC_CLI_PATH,
-                        {"launch", "--profile", std::string(WRC_SOURCE_DIR) + "/profiles/launch/default.txt",
-                         "--build-dir", WRC_TEST_BUILD_DIR, "contact-onepoint"},
-                        log);
+  const auto launcher = launch({"contact-onepoint"}, log);
   ASSERT_TRUE(wait_ready("onepoint", "a", 120.0)) << read_text(log);
   const auto real = monitor_->find("onepoint", "a", monotonic_seconds());
   ASSERT_TRUE(real);
@@ -151,12 +148,12 @@ TEST_F(HeartbeatFloodTest, KillsNothingAndQueriesStayAsFast) {
   EXPECT_TRUE(still->available());
   EXPECT_EQ(still->last.pid, pid);
   EXPECT_EQ(still->nonce, real->nonce);
-  EXPECT_FALSE(launcher.wait(0.0));  // still running
+  EXPECT_FALSE(launcher->wait(0.0));  // still running
   const std::string text = read_text(log);
   EXPECT_EQ(text.find("killing it"), std::string::npos) << text;
   EXPECT_EQ(text.find("restart #"), std::string::npos) << text;
-  launcher.signal(SIGINT);
-  launcher.wait(20.0);
+  launcher->signal(SIGINT);
+  launcher->wait(20.0);
 }
 
 }  // namespace

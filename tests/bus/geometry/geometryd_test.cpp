@@ -465,10 +465,7 @@ TEST_F(GeometryServiceTest, RejectsInvalidRequestsAndSurvivesGarbage) {
 TEST_F(GeometryServiceTest, LaunchStartsItAndStatusListsIt) {
   ::setenv("WRC_CACHE_DIR", cache_dir_.c_str(), 1);  // the profile line has no --cache-dir
   const std::string log = temp_path("launch.log");
-  ChildProcess launcher(WRC_CLI_PATH,
-                        {"launch", "--profile", std::string(WRC_SOURCE_DIR) + "/profiles/launch/default.txt",
-                         "--build-dir", WRC_TEST_BUILD_DIR, "geometry"},
-                        log);
+  const auto launcher = launch({"geometry"}, log);
   ASSERT_TRUE(wait_ready("geometryd", "0", 10.0)) << read_text(log);
   int status = -1;
   const std::string out = run_command(std::string(WRC_CLI_PATH) + " status --duration 1.2 --format csv", &status);
@@ -477,8 +474,8 @@ TEST_F(GeometryServiceTest, LaunchStartsItAndStatusListsIt) {
   EXPECT_NE(out.find(",READY,1,"), std::string::npos) << out;
   EXPECT_NE(out.find("," + names_.name(channel::kGeometryRequest) + ",\"idle; "), std::string::npos) << out;
   EXPECT_TRUE(fs::is_directory(cache_dir_)) << "the service did not use $WRC_CACHE_DIR";
-  launcher.signal(SIGINT);
-  ASSERT_TRUE(launcher.wait(10.0, &status)) << read_text(log);
+  launcher->signal(SIGINT);
+  ASSERT_TRUE(launcher->wait(10.0, &status)) << read_text(log);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(log);
   ::unsetenv("WRC_CACHE_DIR");
 }

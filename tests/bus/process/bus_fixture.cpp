@@ -54,6 +54,13 @@ std::unique_ptr<ChildProcess> BusTest::start_pingd(const std::string& instance, 
   return std::make_unique<ChildProcess>(WRC_PINGD_PATH, args, log_path);
 }
 
+std::unique_ptr<ChildProcess> BusTest::launch(const std::vector<std::string>& services, const std::string& log) const {
+  std::vector<std::string> args{"launch", "--profile", std::string(WRC_SOURCE_DIR) + "/profiles/launch/default.txt",
+                                "--build-dir", WRC_TEST_BUILD_DIR};
+  args.insert(args.end(), services.begin(), services.end());
+  return std::make_unique<ChildProcess>(WRC_CLI_PATH, args, log);
+}
+
 bool BusTest::wait_ready(const std::string& model, const std::string& instance, double timeout,
                          int not_pid) {
   return handle_until(

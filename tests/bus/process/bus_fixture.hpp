@@ -37,6 +37,10 @@ class BusTest : public ::testing::Test {
   std::unique_ptr<ChildProcess> start_pingd(const std::string& instance, double period,
                                             const std::string& log_path = "",
                                             const std::vector<std::string>& extra = {});
+  /// Starts `wrc launch` with the shipped launch profile (profiles/launch/default.txt) and the
+  /// services named (profile names: "geometry", "contact-onepoint", "dynamics", ...), its output
+  /// to log.
+  std::unique_ptr<ChildProcess> launch(const std::vector<std::string>& services, const std::string& log) const;
   /// Waits until model/instance heartbeats READY (optionally from a pid other than not_pid).
   bool wait_ready(const std::string& model, const std::string& instance, double timeout,
                   int not_pid = 0);

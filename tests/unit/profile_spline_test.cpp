@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/profile/cubic_spline.hpp"
+#include "core/numerics/cubic_spline.hpp"
 #include "core/profile/spline_profile.hpp"
 
 namespace wrc {
@@ -20,7 +20,7 @@ TEST(ProfileSpline, ReproducesParabola) {
   for (double v : x) y.push_back(0.5 * v * v - v + 2);
   const CubicSpline s(x, y);
   for (double t = -2.0; t <= 3.0; t += 0.01) {
-    EXPECT_NEAR(s.evaluate(t).height, 0.5 * t * t - t + 2, 1e-12);
+    EXPECT_NEAR(s.evaluate(t).value, 0.5 * t * t - t + 2, 1e-12);
     EXPECT_NEAR(s.evaluate(t).slope, t - 1, 1e-11);
     EXPECT_NEAR(s.evaluate(t).second_derivative, 1.0, 1e-10);
   }
@@ -36,11 +36,11 @@ TEST(ProfileSpline, InterpolatesAndIsC2) {
     y.push_back(std::cos(1.7 * i) + 0.1 * i);
   }
   const CubicSpline s(x, y);
-  for (std::size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(s.evaluate(x[i]).height, y[i], 1e-13);
+  for (std::size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(s.evaluate(x[i]).value, y[i], 1e-13);
   for (std::size_t i = 1; i + 1 < x.size(); ++i) {
-    const ProfileSample l = s.evaluate(x[i] - 1e-12);
-    const ProfileSample r = s.evaluate(x[i] + 1e-12);
-    EXPECT_NEAR(l.height, r.height, 1e-10);
+    const CubicSplineSample l = s.evaluate(x[i] - 1e-12);
+    const CubicSplineSample r = s.evaluate(x[i] + 1e-12);
+    EXPECT_NEAR(l.value, r.value, 1e-10);
     EXPECT_NEAR(l.slope, r.slope, 1e-9);
     EXPECT_NEAR(l.second_derivative, r.second_derivative, 1e-8);
   }

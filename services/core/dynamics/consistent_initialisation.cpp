@@ -40,16 +40,19 @@ constexpr int kMaxNormalForceIterations = 8;
 constexpr double kNormalForceTolerance = 1e-10;
 
 // The active constraints' gap gradients at c, one row each [-, -, m/rad, m/rad]; their gaps into
-// gaps [m] when given.
-Eigen::MatrixXd constraint_gradients(const FollowedBranches& branches, const ContactResult& c, Eigen::VectorXd* gaps) {
+// gaps [m] and their gap rates (the rails moving under the wheelset) into rates [m/s] when given.
+Eigen::MatrixXd constraint_gradients(const FollowedBranches& branches, const ContactResult& c, Eigen::VectorXd* gaps,
+                                     Eigen::VectorXd* rates = nullptr) {
   const std::vector<ActiveConstraint> active = active_constraints(branches);
   const int count = static_cast<int>(active.size());
   Eigen::MatrixXd g(count, kPoseUnknowns);
   if (gaps) gaps->resize(count);
+  if (rates) rates->resize(count);
   for (int r = 0; r < count; ++r) {
     const WheelConstraint& w = active[static_cast<size_t>(r)].of(c);
     g.row(r) = w.gap_gradient.transpose();
     if (gaps) (*gaps)[r] = w.gap;
+    if (rates) (*rates)[r] = w.gap_rate;
   }
   return g;
 }
@@ -102,11 +105,13 @@ void project_positions(const InitialisationContext& context, std::vector<double>
 }
 
 void project_velocities(const InitialisationContext& context, std::vector<double>& y) {
-  const Eigen::MatrixXd g = constraint_gradients(context.branches, context.contact_at(y.data()), nullptr);
+  Eigen::VectorXd rates;
+  const Eigen::MatrixXd g = constraint_gradients(context.branches, context.contact_at(y.data()), nullptr, &rates);
   const Eigen::Vector4d inv_mass = context.equations.mass_diagonal().cwiseInverse();
   Eigen::Vector4d v(y[kUnknownYDot], y[kUnknownZDot], y[kUnknownRollDot], y[kUnknownYawDot]);
   const Eigen::MatrixXd mg = inv_mass.asDiagonal() * g.transpose();
-  const Eigen::VectorXd impulse = (g * mg).fullPivLu().solve(g * v);
+  // G v + gap_rate = 0 afterwards (the rails may move under the wheelset).
+  const Eigen::VectorXd impulse = (g * mg).fullPivLu().solve(g * v + rates);
   v -= mg * impulse;  // the velocity change of an inelastic impact along the constraint normals
   for (int k = 0; k < 4; ++k) y[kPoseUnknowns + k] = v[k];
 }
@@ -193,7 +198,10 @@ void consistent_derivatives(const InitialisationContext& context, std::vector<do
     for (int i = 0; i < count; ++i) {
       const WheelConstraint& w = active[static_cast<size_t>(i)].of(c);
       const WheelConstraint& w_ahead = active[static_cast<size_t>(i)].of(c_ahead);
-      double g_dot_v = 0.0;
+      // The gap rates' change along v too; their change with the track position at a fixed pose
+      // (the rails' curvature under the wheelset, V^2 times the irregularity's second derivative)
+      // is left out of these start values: IDA's first steps absorb it.
+      double g_dot_v = (w_ahead.gap_rate - w.gap_rate) / eps;
       for (int k = 0; k < 4; ++k) {
         // r holds the forces of the current N; the unknown is the change of N (scaled).
         a(k, 4 + i) = -scale * w.normal_z * w.gap_gradient[k];

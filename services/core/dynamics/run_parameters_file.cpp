@@ -1,9 +1,6 @@
 #include "core/dynamics/run_parameters_file.hpp"
 
-#include <sys/stat.h>
-
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -12,6 +9,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "core/numerics/regular_file.hpp"
 
 namespace wrc {
 namespace {
@@ -146,16 +145,7 @@ void apply_run_parameters(const std::string& text, const std::string& source, Ru
 }
 
 void apply_run_parameter_file(const std::string& path, RunSpec& spec) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw std::runtime_error(path + ": cannot read the parameter file");
-  if (!S_ISREG(st.st_mode)) throw std::invalid_argument(path + ": not a regular file");
-  if (static_cast<std::size_t>(st.st_size) > kMaxFileBytes)
-    throw std::invalid_argument(path + ": " + std::to_string(st.st_size) + " bytes, more than a parameter file has");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) throw std::runtime_error(path + ": read error");
-  apply_run_parameters(text.str(), path, spec);
+  apply_run_parameters(read_regular_file(path, kMaxFileBytes), path, spec);
 }
 
 std::string run_parameter_text(const RunSpec& spec) {

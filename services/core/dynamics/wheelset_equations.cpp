@@ -52,6 +52,7 @@ ContactQuery WheelsetEquations::query(ContactFormulation f, const double* y, con
   q.fastsim_elements = parameters_.fastsim_elements;
   q.fastsim_strips = parameters_.fastsim_strips;
   q.tracked_s_wheel = branches.tracked_s;
+  q.rail_offsets = rails_;
   return q;
 }
 
@@ -173,7 +174,7 @@ void WheelsetEquations::residual(ContactFormulation f, const double* y, const do
   for (int i = 0; i < 2; ++i) {
     const WheelConstraint& c = contact.wheels[static_cast<size_t>(i)];
     r[kUnknownNormalLeft + i] = c.gap;
-    double g_dot = 0.0;
+    double g_dot = c.gap_rate;  // the rail moving under the wheelset (irregularities)
     for (int k = 0; k < kPoseUnknowns; ++k) g_dot += c.gap_gradient[k] * y[kPoseUnknowns + k];
     r[kUnknownMuLeft + i] = g_dot;
   }
@@ -181,7 +182,7 @@ void WheelsetEquations::residual(ContactFormulation f, const double* y, const do
   for (int i = 0; i < 2; ++i) {
     if (const WheelConstraint* c2 = second_constraint(contact, branches, i)) {
       r[kUnknownSecondNormalLeft + i] = c2->gap;
-      double g_dot = 0.0;
+      double g_dot = c2->gap_rate;
       for (int k = 0; k < kPoseUnknowns; ++k) g_dot += c2->gap_gradient[k] * y[kPoseUnknowns + k];
       r[kUnknownSecondMuLeft + i] = g_dot;
     } else {

@@ -81,6 +81,10 @@ class WheelsetEquations {
   /// bit for bit.
   void set_track(const TrackPoint& track) { track_ = track; }
   const TrackPoint& track() const { return track_; }
+  /// Where the rails lie at the wheelset, moved by the track's irregularities (rail_placement.hpp):
+  /// every query carries them. Default: the nominal rails.
+  void set_rails(const std::array<RailOffset, 2>& rails) { rails_ = rails; }
+  const std::array<RailOffset, 2>& rails() const { return rails_; }
 
   /// The contact query at state y (formulation f): pose and rates, rigid loads N_i, the followed
   /// branches (and in two-point contact the second points and their loads), material and grid.
@@ -116,6 +120,7 @@ class WheelsetEquations {
   double nominal_radius_;
   double force_scale_;
   TrackPoint track_;
+  std::array<RailOffset, 2> rails_{};
 };
 
 }  // namespace wrc

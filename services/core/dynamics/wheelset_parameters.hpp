@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/model_interface/contact_model.hpp"
+#include "core/track/track_irregularity.hpp"
 #include "core/track/track_layout.hpp"
 
 namespace wrc {
@@ -94,6 +95,9 @@ struct RunSpec {
   /// The track the wheelset runs on (default: straight and level); the wheelset starts at its
   /// s = 0 and travels s = speed * t.
   TrackLayout track;
+  /// The track's irregularities along the same s (default: none); the cross-level is measured over
+  /// the layout's cant base.
+  TrackIrregularity irregularity;
   void validate() const;
 };
 

@@ -1,6 +1,7 @@
 #include "core/dynamics/wheelset_simulation.hpp"
 
 #include "core/dynamics/consistent_initialisation.hpp"
+#include "core/dynamics/rail_placement.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -118,8 +119,10 @@ std::vector<ContactResult> WheelsetSimulation::evaluate(const std::vector<Contac
 }
 
 void WheelsetSimulation::place_on_track(double t) {
-  if (spec_.track.straight()) return;  // straight, level track: nothing moves
-  equations_.set_track(spec_.track.at(spec_.wheelset.speed * t));
+  const double s = spec_.wheelset.speed * t;
+  if (!spec_.track.straight()) equations_.set_track(spec_.track.at(s));  // straight, level: nothing moves
+  if (!spec_.irregularity.empty())
+    equations_.set_rails(rail_offsets_at(spec_.irregularity.at(s), spec_.track.cant_base(), spec_.wheelset.speed));
 }
 
 const ContactResult& WheelsetSimulation::contact_at(const double* y) {
@@ -133,6 +136,11 @@ const ContactResult& WheelsetSimulation::contact_at(const double* y) {
   // The track's turning and rolling rates enter the query's rates (WheelsetEquations::query).
   key.push_back(equations_.track().curvature);
   key.push_back(equations_.track().cant_angle_rate);
+  // The rails' offsets and rates enter the query (irregularities).
+  if (!spec_.irregularity.empty()) {
+    for (const RailOffset& r : equations_.rails())
+      key.insert(key.end(), {r.lateral, r.vertical, r.roll, r.lateral_rate, r.vertical_rate, r.roll_rate});
+  }
   for (const CachedContact& c : cache_)
     if (c.key.size() == key.size() && std::memcmp(c.key.data(), key.data(), key.size() * sizeof(double)) == 0)
       return c.result;
@@ -326,15 +334,18 @@ void WheelsetSimulation::start() {
   const ContactFormulation own = formulation_;
   formulation_ = ContactFormulation::kRigid;  // both formulations start from rigid contact
   try {
-    // The suspension is relaxed for the centred wheelset in contact.
+    // The suspension is relaxed for the centred wheelset in contact on the nominal track.
+    const std::array<RailOffset, 2> rails = equations_.rails();
+    equations_.set_rails({});
     project_positions(initialisation(), y);
     equations_.set_z_reference(y[kUnknownZ]);
+    equations_.set_rails(rails);
     y[kUnknownY] = init.y;
     y[kUnknownYaw] = init.yaw;
     y[kUnknownYDot] = init.y_dot;
     y[kUnknownYawDot] = init.yaw_dot;
     project_positions(initialisation(), y);
-    // z' and roll' follow from y' and yaw' on the constraints.
+    // z' and roll' follow from y' and yaw' on the constraints (and the rails' rates).
     const ContactResult& c = contact_at(y.data());
     Eigen::Matrix2d a;
     Eigen::Vector2d b;
@@ -342,7 +353,7 @@ void WheelsetSimulation::start() {
       const Eigen::Vector4d& g = c.wheels[static_cast<size_t>(i)].gap_gradient;
       a(i, 0) = g[kUnknownZ];
       a(i, 1) = g[kUnknownRoll];
-      b[i] = -(g[kUnknownY] * init.y_dot + g[kUnknownYaw] * init.yaw_dot);
+      b[i] = -(g[kUnknownY] * init.y_dot + g[kUnknownYaw] * init.yaw_dot + c.wheels[static_cast<size_t>(i)].gap_rate);
     }
     const Eigen::Vector2d rates = a.fullPivLu().solve(b);
     y[kUnknownZDot] = rates[0];
@@ -538,7 +549,7 @@ void WheelsetSimulation::switch_wheel(int wheel, double target_s, std::vector<do
     const std::optional<WheelConstraint>& from = c.second_wheels[w];
     pair_valid = from && std::abs(from->s_wheel - from_s) <= kBranchLostDistance && c.wheels[w].switch_function > 0.0;
     if (pair_valid) {
-      double rate = 0.0;
+      double rate = from->gap_rate;
       for (int k = 0; k < kPoseUnknowns; ++k) rate += from->gap_gradient[k] * y_pair[kPoseUnknowns + k];
       from_separates = rate > 0.0;
     }

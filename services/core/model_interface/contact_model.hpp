@@ -19,6 +19,7 @@
 #include "core/geometry/contact_point.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
 #include "core/geometry/wheelset_pose.hpp"
+#include "core/model_interface/rail_offset.hpp"
 
 namespace wrc {
 
@@ -65,6 +66,10 @@ struct ContactQuery {
                                                std::numeric_limits<double>::quiet_NaN()};
   /// kRigid: normal load on the second point of a wheel in two-point contact [N] (>= 0).
   std::array<double, 2> second_normal_load{0.0, 0.0};
+  /// Where the left [0] and right [1] rail lie at the wheelset, moved from their nominal place by
+  /// the track's irregularities (rail_offset.hpp; all 0: the nominal track). Each wheel is
+  /// evaluated against its own rail (RailFrame); the result stays in the track frame.
+  std::array<RailOffset, 2> rail_offsets{};
 };
 
 /// switch_function of a model whose contact point never jumps [m].
@@ -80,6 +85,10 @@ struct WheelConstraint {
   /// d gap / d(y, z, roll, yaw) [-, -, m/rad, m/rad]. The normal force N on the wheel along its
   /// contact normal n acts on the coordinates as the generalised force N n_z gap_gradient.
   Eigen::Vector4d gap_gradient{0, 1, 0, 0};
+  /// d gap / dt at a fixed pose, from the rail moving under the travelling wheelset (the query's
+  /// rail offset rates) [m/s]: d gap / dt = gap_gradient . (y, z, roll, yaw)' + gap_rate. 0 on a
+  /// nominal track.
+  double gap_rate = 0;
   double normal_z = 1;  ///< vertical component of the unit contact normal n [-] (see gap_gradient)
   double s_wheel = 0;   ///< wheel profile coordinate of the contact point the model used [m]
   double contact_angle = 0;  ///< contact angle there [rad] (ContactPoint::contact_angle)

@@ -62,6 +62,10 @@ std::optional<QueryViolation> find_query_violation(const ContactQuery& q) {
   using F = QueryField;
   using K = QueryRuleKind;
   const double tracked = kMaxTrackedProfileCoordinate;
+  const double offset = kMaxRailOffset;
+  const double rate = kMaxRailOffsetRate;
+  const RailOffset& left = q.rail_offsets[0];
+  const RailOffset& right = q.rail_offsets[1];
   const struct {
     QueryRule rule;
     double value;
@@ -91,6 +95,18 @@ std::optional<QueryViolation> find_query_violation(const ContactQuery& q) {
       {{F::kFriction, K::kClosed, 0.0, kMaxFriction, "-"}, q.material.friction},
       {{F::kFastsimElements, K::kCount, kMinFastsimGrid, kMaxFastsimGrid, ""}, static_cast<double>(q.fastsim_elements)},
       {{F::kFastsimStrips, K::kCount, kMinFastsimGrid, kMaxFastsimGrid, ""}, static_cast<double>(q.fastsim_strips)},
+      {{F::kRailLateralLeft, K::kClosed, -offset, offset, "m"}, left.lateral},
+      {{F::kRailVerticalLeft, K::kClosed, -offset, offset, "m"}, left.vertical},
+      {{F::kRailRollLeft, K::kClosed, -kMaxRailRoll, kMaxRailRoll, "rad"}, left.roll},
+      {{F::kRailLateralRateLeft, K::kClosed, -rate, rate, "m/s"}, left.lateral_rate},
+      {{F::kRailVerticalRateLeft, K::kClosed, -rate, rate, "m/s"}, left.vertical_rate},
+      {{F::kRailRollRateLeft, K::kClosed, -rate, rate, "rad/s"}, left.roll_rate},
+      {{F::kRailLateralRight, K::kClosed, -offset, offset, "m"}, right.lateral},
+      {{F::kRailVerticalRight, K::kClosed, -offset, offset, "m"}, right.vertical},
+      {{F::kRailRollRight, K::kClosed, -kMaxRailRoll, kMaxRailRoll, "rad"}, right.roll},
+      {{F::kRailLateralRateRight, K::kClosed, -rate, rate, "m/s"}, right.lateral_rate},
+      {{F::kRailVerticalRateRight, K::kClosed, -rate, rate, "m/s"}, right.vertical_rate},
+      {{F::kRailRollRateRight, K::kClosed, -rate, rate, "rad/s"}, right.roll_rate},
   };
   for (const auto& f : fields)
     if (!keeps(f.rule, f.value)) return QueryViolation{f.rule, f.value};
@@ -124,6 +140,18 @@ const char* query_field_name(QueryField field) {
     case QueryField::kFriction: return "material.friction";
     case QueryField::kFastsimElements: return "fastsim_elements";
     case QueryField::kFastsimStrips: return "fastsim_strips";
+    case QueryField::kRailLateralLeft: return "rail_offsets[0].lateral (left)";
+    case QueryField::kRailVerticalLeft: return "rail_offsets[0].vertical (left)";
+    case QueryField::kRailRollLeft: return "rail_offsets[0].roll (left)";
+    case QueryField::kRailLateralRateLeft: return "rail_offsets[0].lateral_rate (left)";
+    case QueryField::kRailVerticalRateLeft: return "rail_offsets[0].vertical_rate (left)";
+    case QueryField::kRailRollRateLeft: return "rail_offsets[0].roll_rate (left)";
+    case QueryField::kRailLateralRight: return "rail_offsets[1].lateral (right)";
+    case QueryField::kRailVerticalRight: return "rail_offsets[1].vertical (right)";
+    case QueryField::kRailRollRight: return "rail_offsets[1].roll (right)";
+    case QueryField::kRailLateralRateRight: return "rail_offsets[1].lateral_rate (right)";
+    case QueryField::kRailVerticalRateRight: return "rail_offsets[1].vertical_rate (right)";
+    case QueryField::kRailRollRateRight: return "rail_offsets[1].roll_rate (right)";
   }
   return "?";
 }

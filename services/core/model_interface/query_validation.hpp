@@ -52,6 +52,9 @@ enum class QueryField {
   kNormalLoadLeft, kNormalLoadRight, kSecondNormalLoadLeft, kSecondNormalLoadRight,
   kTrackedSWheelLeft, kTrackedSWheelRight, kSecondTrackedSWheelLeft, kSecondTrackedSWheelRight,
   kFormulation, kShearModulus, kPoissonRatio, kFriction, kFastsimElements, kFastsimStrips,
+  kRailLateralLeft, kRailVerticalLeft, kRailRollLeft, kRailLateralRateLeft, kRailVerticalRateLeft,
+  kRailRollRateLeft, kRailLateralRight, kRailVerticalRight, kRailRollRight, kRailLateralRateRight,
+  kRailVerticalRateRight, kRailRollRateRight,
 };
 
 /// What a field's value must be.
@@ -99,7 +102,8 @@ std::string query_rule_breach(const QueryViolation& violation);
 /// kMaxNormalLoad; a tracked coordinate infinite or beyond kMaxTrackedProfileCoordinate; G not in
 /// (0, kMaxShearModulus]; nu not in (kMinPoissonRatio, kMaxPoissonRatio); mu not in
 /// [0, kMaxFriction]; a FASTSIM count outside kMinFastsimGrid..kMaxFastsimGrid; a formulation that
-/// is neither kRigid nor kElastic. Loads are checked in both formulations.
+/// is neither kRigid nor kElastic; a rail offset beyond kMaxRailOffset, kMaxRailRoll or
+/// kMaxRailOffsetRate (rail_offset.hpp). Loads are checked in both formulations.
 void validate_contact_query(const ContactQuery& query);
 
 }  // namespace wrc

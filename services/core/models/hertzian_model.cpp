@@ -4,6 +4,7 @@
 
 #include "core/contact/hertz.hpp"
 #include "core/model_interface/query_validation.hpp"
+#include "core/model_interface/rail_frame.hpp"
 #include "core/model_interface/wheelset_motion.hpp"
 #include "core/models/contact_range.hpp"
 #include "core/models/flange_climb.hpp"
@@ -26,11 +27,39 @@ ContactResult HertzianContactModel::evaluate(const ContactQuery& query) const {
   const PatchContext context{query, motion, fastsim_.get(query.fastsim_elements, query.fastsim_strips),
                              contact_modulus(query.material.shear_modulus, query.material.poisson_ratio)};
   ContactResult result;
-  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight})
-    result.wheels[static_cast<size_t>(side)] = add_wheel_patches(side, context, result);
+  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
+    const size_t wheel = static_cast<size_t>(side);
+    if (query.rail_offsets[wheel].nominal()) {
+      result.wheels[wheel] = add_wheel_patches(side, context, result);
+    } else {
+      add_moved_rail_patches(side, context, result);
+    }
+  }
   check_contact_range(query, result);
   for (const ContactPatch& patch : result.patches) add_to_resultant(patch, motion.centre, result);
   return result;
+}
+
+void HertzianContactModel::add_moved_rail_patches(WheelSide side, const PatchContext& context,
+                                                  ContactResult& result) const {
+  // The wheel against its nominal rail in the moved rail's coordinates, the answer carried back
+  // into the track frame (rail_frame.hpp).
+  const size_t wheel = static_cast<size_t>(side);
+  const double pivot_y = (side == WheelSide::kLeft ? 1.0 : -1.0) * geometry_->track().taping_half_distance();
+  const RailFrame frame(context.query.rail_offsets[wheel], pivot_y);
+  ContactQuery query = context.query;
+  query.pose = frame.relative_pose(context.query.pose);
+  const WheelsetMotion motion = frame.to_rail(context.motion);
+  const PatchContext rail_context{query, motion, context.fastsim, context.contact_modulus};
+  ContactResult in_rail;
+  const WheelConstraint constraint = add_wheel_patches(side, rail_context, in_rail);
+  result.wheels[wheel] = frame.to_track(constraint, context.query.pose, side);
+  if (in_rail.second_wheels[wheel])
+    result.second_wheels[wheel] = frame.to_track(*in_rail.second_wheels[wheel], context.query.pose, side);
+  for (ContactPatch& patch : in_rail.patches) {
+    patch.point = frame.to_track(patch.point);
+    result.patches.push_back(std::move(patch));
+  }
 }
 
 ContactPoint HertzianContactModel::exact_common_point(WheelSide side, const WheelsetPose& pose) const {

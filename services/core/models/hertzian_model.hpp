@@ -36,6 +36,10 @@ class HertzianContactModel : public ContactModel {
   virtual WheelConstraint add_wheel_patches(WheelSide side, const PatchContext& context,
                                             ContactResult& result) const = 0;
 
+  /// add_wheel_patches() for a wheel whose rail the query moved (ContactQuery::rail_offsets): in
+  /// the rail's coordinates (RailFrame), patches and constraints carried back into the track frame.
+  void add_moved_rail_patches(WheelSide side, const PatchContext& context, ContactResult& result) const;
+
   /// The exact common point of one wheel at pose, checked (require_common_point()).
   ContactPoint exact_common_point(WheelSide side, const WheelsetPose& pose) const;
 

@@ -42,7 +42,10 @@ SplineProfile::SplineProfile(const ProfilePoints& points, ProfileSide side, std:
       name_(std::move(name)),
       built_in_cant_(built_in_cant) {}
 
-ProfileSample SplineProfile::evaluate(double s) const { return spline_.evaluate(s); }
+ProfileSample SplineProfile::evaluate(double s) const {
+  const CubicSplineSample sample = spline_.evaluate(s);
+  return {sample.value, sample.slope, sample.second_derivative};
+}
 double SplineProfile::lower() const { return points_.lateral.front(); }
 double SplineProfile::upper() const { return points_.lateral.back(); }
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/profile/cubic_spline.hpp"
+#include "core/numerics/cubic_spline.hpp"
 #include "core/profile/profile.hpp"
 #include "core/profile/profile_points.hpp"
 

@@ -1,9 +1,6 @@
 #include "core/track/track_layout_file.hpp"
 
-#include <sys/stat.h>
-
 #include <algorithm>
-#include <fstream>
 #include <iterator>
 #include <set>
 #include <sstream>
@@ -13,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/numerics/number_text.hpp"
+#include "core/numerics/regular_file.hpp"
 
 namespace wrc {
 namespace {
@@ -100,16 +98,7 @@ TrackLayout parse_track_layout(const std::string& json_text, const std::string& 
 }
 
 TrackLayout read_track_layout_file(const std::string& path) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw std::invalid_argument(path + ": cannot read the track layout");
-  if (!S_ISREG(st.st_mode)) throw std::invalid_argument(path + ": not a regular file");
-  if (static_cast<std::size_t>(st.st_size) > kMaxFileBytes)
-    throw std::invalid_argument(path + ": " + std::to_string(st.st_size) + " bytes, more than a track layout has");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) throw std::invalid_argument(path + ": read error");
-  return parse_track_layout(text.str(), path);
+  return parse_track_layout(read_regular_file(path, kMaxFileBytes), path);
 }
 
 std::string track_layout_text(const TrackLayout& layout) {

@@ -47,6 +47,18 @@ MessageField message_field(QueryField field) {
     case QueryField::kFriction: return {"friction", false};
     case QueryField::kFastsimElements: return {"fastsim_elements", false};
     case QueryField::kFastsimStrips: return {"fastsim_strips", false};
+    case QueryField::kRailLateralLeft: return {"rail_lateral[0]", true};
+    case QueryField::kRailVerticalLeft: return {"rail_vertical[0]", true};
+    case QueryField::kRailRollLeft: return {"rail_roll[0]", true};
+    case QueryField::kRailLateralRateLeft: return {"rail_lateral_rate[0]", true};
+    case QueryField::kRailVerticalRateLeft: return {"rail_vertical_rate[0]", true};
+    case QueryField::kRailRollRateLeft: return {"rail_roll_rate[0]", true};
+    case QueryField::kRailLateralRight: return {"rail_lateral[1]", true};
+    case QueryField::kRailVerticalRight: return {"rail_vertical[1]", true};
+    case QueryField::kRailRollRight: return {"rail_roll[1]", true};
+    case QueryField::kRailLateralRateRight: return {"rail_lateral_rate[1]", true};
+    case QueryField::kRailVerticalRateRight: return {"rail_vertical_rate[1]", true};
+    case QueryField::kRailRollRateRight: return {"rail_roll_rate[1]", true};
   }
   return {"?", false};
 }
@@ -58,6 +70,7 @@ void copy3(const Eigen::Vector3d& from, double to[3]) {
 void to_constraint_message(const WheelConstraint& w, wrc::wheel_constraint_t& m) {
   m.gap = w.gap;
   for (int k = 0; k < 4; ++k) m.gap_gradient[k] = w.gap_gradient[k];
+  m.gap_rate = w.gap_rate;
   m.normal_z = w.normal_z;
   m.s_wheel = w.s_wheel;
   m.contact_angle = w.contact_angle;
@@ -69,6 +82,7 @@ WheelConstraint from_constraint_message(const wrc::wheel_constraint_t& w) {
   WheelConstraint c;
   c.gap = w.gap;
   c.gap_gradient = Eigen::Vector4d(w.gap_gradient[0], w.gap_gradient[1], w.gap_gradient[2], w.gap_gradient[3]);
+  c.gap_rate = w.gap_rate;
   c.normal_z = w.normal_z;
   c.s_wheel = w.s_wheel;
   c.contact_angle = w.contact_angle;
@@ -129,6 +143,15 @@ ContactQuery to_contact_query(const wrc::contact_query_t& q, int index) {
   out.tracked_s_wheel = {c.tracked_s_wheel_left, c.tracked_s_wheel_right};
   out.second_tracked_s_wheel = {c.second_tracked_s_wheel_left, c.second_tracked_s_wheel_right};
   out.second_normal_load = {c.second_normal_load_left, c.second_normal_load_right};
+  for (std::size_t i = 0; i < 2; ++i) {
+    RailOffset& rail = out.rail_offsets[i];
+    rail.lateral = c.rail_lateral[i];
+    rail.vertical = c.rail_vertical[i];
+    rail.roll = c.rail_roll[i];
+    rail.lateral_rate = c.rail_lateral_rate[i];
+    rail.vertical_rate = c.rail_vertical_rate[i];
+    rail.roll_rate = c.rail_roll_rate[i];
+  }
   return out;
 }
 
@@ -150,6 +173,15 @@ void to_configuration_message(const ContactQuery& query, wrc::wheelset_configura
   c.second_tracked_s_wheel_right = query.second_tracked_s_wheel[1];
   c.second_normal_load_left = query.second_normal_load[0];
   c.second_normal_load_right = query.second_normal_load[1];
+  for (std::size_t i = 0; i < 2; ++i) {
+    const RailOffset& rail = query.rail_offsets[i];
+    c.rail_lateral[i] = rail.lateral;
+    c.rail_vertical[i] = rail.vertical;
+    c.rail_roll[i] = rail.roll;
+    c.rail_lateral_rate[i] = rail.lateral_rate;
+    c.rail_vertical_rate[i] = rail.vertical_rate;
+    c.rail_roll_rate[i] = rail.roll_rate;
+  }
 }
 
 void to_query_message(const std::vector<ContactQuery>& batch, wrc::contact_query_t& q) {

@@ -1,4 +1,4 @@
-#include "core/profile/cubic_spline.hpp"
+#include "core/numerics/cubic_spline.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -69,7 +69,7 @@ CubicSpline::CubicSpline(std::vector<double> x, const std::vector<double>& y) : 
   }
 }
 
-ProfileSample CubicSpline::evaluate(double x) const {
+CubicSplineSample CubicSpline::evaluate(double x) const {
   // Interval index: last knot <= x, clamped to the first and last interval. The cell table gives
   // the interval at the cell's left edge; scan forward over the (few) knots inside the cell.
   const double position = (x - x_[0]) * cell_scale_;

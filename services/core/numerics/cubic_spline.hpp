@@ -4,9 +4,15 @@
 
 #include <vector>
 
-#include "core/profile/profile.hpp"
 
 namespace wrc {
+
+/// Value and derivatives of a CubicSpline at one x.
+struct CubicSplineSample {
+  double value = 0;              ///< y(x) [unit of y]
+  double slope = 0;              ///< dy/dx [unit of y / unit of x]
+  double second_derivative = 0;  ///< d2y/dx2 [unit of y / unit of x^2]
+};
 
 /// Interpolating cubic spline through (x_i, y_i), x strictly increasing, at least 3 knots.
 /// End conditions: the second derivative at each end is set to that of the parabola through the
@@ -22,7 +28,7 @@ class CubicSpline {
 
   /// Value, first and second derivative at x; outside [x_0, x_{n-1}] the end polynomials are
   /// extrapolated.
-  ProfileSample evaluate(double x) const;
+  CubicSplineSample evaluate(double x) const;
 
   /// The knots.
   const std::vector<double>& knots() const { return x_; }

@@ -5,12 +5,16 @@
 #include <algorithm>
 #include <sstream>
 
+#include "bus/auth/message_auth.hpp"
+#include "bus/transport/guarded_subscription.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/service_starter.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "core/track/track_irregularity_file.hpp"
 #include "core/track/track_layout_file.hpp"
 #include "options/parameter_options.hpp"
+#include "protocol/run/run_command_codec.hpp"
 #include "protocol/run/run_request_table.hpp"
 
 namespace wrc::cli {
@@ -52,6 +56,10 @@ std::vector<OptionSpec> run_option_specs() {
       {"--in-process", false, "the dynamics evaluates the contact model itself (comparison only)", ""},
       {"--track", true, "track layout file (JSON: straights, transitions, curves with cant; docs/track.md)",
        "straight, level track"},
+      {"--irregularities", true,
+       "track irregularities file (CSV: s [m] and alignment, vertical_level, cross_level, gauge in m or mm; "
+       "wrc irregularities writes one from a published spectrum; docs/track.md)",
+       "none"},
       {"--run-id", true, "name of the run", "run-<pid>"},
   };
   for (auto& spec : parameter_option_specs(protocol::run_request_table(), protocol::RunRequest{})) specs.push_back(spec);
@@ -74,10 +82,18 @@ protocol::RunRequest run_request_from(const Options& o) {
   apply_parameter_options(protocol::run_request_table(), o, request);
   spec.validate();  // the rules between parameters (the total vertical load)
   if (o.has("--track")) spec.track = read_track_layout_file(o.text("--track"));
+  if (o.has("--irregularities")) spec.irregularity = read_track_irregularity_file(o.text("--irregularities"));
   if (o.has("--swap-at")) request.swaps = parse_swaps(o.text("--swap-at"), spec.integrator.t_end);
   request.in_process = o.has("--in-process");
   request.run_id = o.text("--run-id", "run-" + std::to_string(::getpid()));
   request.geometry = geometry_spec_from_options(o);
+  // The run command carries the layout and the irregularities: it must fit what a service accepts.
+  const std::size_t bytes =
+      static_cast<std::size_t>(protocol::to_message(request).getEncodedSize()) + bus::MessageAuth::kTrailerBytes;
+  if (bytes > bus::kDefaultMaxMessageBytes)
+    throw UsageError("the run command would be " + std::to_string(bytes) + " bytes, more than the " +
+                     std::to_string(bus::kDefaultMaxMessageBytes) +
+                     " a service accepts: use fewer track layout segments or irregularity samples");
   return request;
 }
 

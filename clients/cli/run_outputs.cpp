@@ -7,6 +7,7 @@
 #include "cli/table_json.hpp"
 #include "core/dynamics/run_counter_table.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
+#include "core/track/track_irregularity.hpp"
 #include "core/track/track_layout.hpp"
 #include "protocol/run/run_output_codec.hpp"
 
@@ -35,6 +36,19 @@ nlohmann::json layout_json(const TrackLayout& layout, double speed, double g, do
     s += segment.length;
   }
   j["curves"] = curves;
+  return j;
+}
+
+// The irregularities the run went over: their range and, per channel, rms and largest |value|
+// (null without irregularities).
+nlohmann::json irregularity_json(const TrackIrregularity& irregularity) {
+  if (irregularity.empty()) return nullptr;
+  nlohmann::json j;
+  j["s_start"] = irregularity.distances().front();
+  j["s_end"] = irregularity.distances().back();
+  j["samples"] = irregularity.distances().size();
+  for (IrregularityChannel c : kIrregularityChannels)
+    j[irregularity_channel_name(c)] = {{"rms", irregularity.rms(c)}, {"max_abs", irregularity.max_abs(c)}};
   return j;
 }
 
@@ -73,6 +87,7 @@ nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& 
   j["parameters"] = table_json(run_parameter_table(), request.spec);
   j["track_layout"] = layout_json(request.spec.track, request.spec.wheelset.speed, request.spec.wheelset.gravity,
                                   s.t_end);
+  j["irregularities"] = irregularity_json(request.spec.irregularity);
   return j;
 }
 

@@ -7,6 +7,7 @@
 #include "protocol/geometry/track_codec.hpp"
 #include "protocol/message_fields.hpp"
 #include "protocol/run/run_request_table.hpp"
+#include "protocol/run/irregularity_codec.hpp"
 #include "protocol/run/track_layout_codec.hpp"
 #include "wrc/run_status_t.hpp"
 
@@ -58,6 +59,7 @@ run_command_t to_message(const RunRequest& r) {
   m.in_process = r.in_process ? 1 : 0;
   to_message_fields(run_request_table(), r, run_command_fields(), m);
   to_layout_fields(r.spec.track, m);
+  to_irregularity_fields(r.spec.irregularity, m);
   m.num_scheduled_swaps = static_cast<std::int32_t>(r.swaps.size());
   for (const ScheduledSwap& swap : r.swaps) {
     m.scheduled_swap_times.push_back(swap.t);
@@ -76,6 +78,7 @@ RunRequest from_message(const run_command_t& m) {
   r.in_process = m.in_process != 0;
   from_message_fields(run_request_table(), m, run_command_fields(), r);
   r.spec.track = layout_from_fields(m);
+  r.spec.irregularity = irregularity_from_fields(m);
   r.spec.validate();  // the rules between parameters
   const IntegratorSettings& g = r.spec.integrator;
   const std::string swaps = "num_scheduled_swaps = " + std::to_string(m.num_scheduled_swaps);

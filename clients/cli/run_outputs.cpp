@@ -83,6 +83,9 @@ struct HistoryColumn {
 
 #define WRC_HISTORY_COLUMN(name, unit, expression) \
   HistoryColumn { name, unit, [](const wheelset_state_t& m) -> double { return expression; } }
+// The left [0] and right [1] entries of a per-wheel field, "<name>_left" and "<name>_right".
+#define WRC_WHEEL_COLUMNS(name, unit, field) \
+  WRC_HISTORY_COLUMN(name "_left", unit, m.field[0]), WRC_HISTORY_COLUMN(name "_right", unit, m.field[1])
 
 // Every numeric column, in file order (the model's name follows them).
 const std::vector<HistoryColumn>& history_columns() {
@@ -97,34 +100,26 @@ const std::vector<HistoryColumn>& history_columns() {
       WRC_HISTORY_COLUMN("roll_dot", "rad/s", m.roll_dot),
       WRC_HISTORY_COLUMN("yaw_dot", "rad/s", m.yaw_dot),
       WRC_HISTORY_COLUMN("spin_rate", "rad/s", m.spin_rate),
-      WRC_HISTORY_COLUMN("s_left", "m", m.s_wheel[0]),
-      WRC_HISTORY_COLUMN("s_right", "m", m.s_wheel[1]),
-      WRC_HISTORY_COLUMN("angle_left", "rad", m.contact_angle[0]),
-      WRC_HISTORY_COLUMN("angle_right", "rad", m.contact_angle[1]),
-      WRC_HISTORY_COLUMN("normal_force_left", "N", m.normal_force[0]),
-      WRC_HISTORY_COLUMN("normal_force_right", "N", m.normal_force[1]),
+      WRC_WHEEL_COLUMNS("s", "m", s_wheel),
+      WRC_WHEEL_COLUMNS("angle", "rad", contact_angle),
+      WRC_WHEEL_COLUMNS("normal_force", "N", normal_force),
       WRC_HISTORY_COLUMN("distance", "m", m.x),
-      WRC_HISTORY_COLUMN("lateral_force_left", "N", m.lateral_force[0]),
-      WRC_HISTORY_COLUMN("lateral_force_right", "N", m.lateral_force[1]),
-      WRC_HISTORY_COLUMN("vertical_force_left", "N", m.vertical_force[0]),
-      WRC_HISTORY_COLUMN("vertical_force_right", "N", m.vertical_force[1]),
+      WRC_WHEEL_COLUMNS("lateral_force", "N", lateral_force),
+      WRC_WHEEL_COLUMNS("vertical_force", "N", vertical_force),
       WRC_HISTORY_COLUMN("y_over_q_left", "-", y_over_q(m.lateral_force[0], m.vertical_force[0])),
       WRC_HISTORY_COLUMN("y_over_q_right", "-", y_over_q(m.lateral_force[1], m.vertical_force[1])),
       WRC_HISTORY_COLUMN("nadal_limit", "-", m.nadal_limit),
       WRC_HISTORY_COLUMN("track_shift_force", "N", track_shift_force(m.lateral_force[0], m.lateral_force[1])),
       WRC_HISTORY_COLUMN("prudhomme_limit", "N", m.prudhomme_limit),
-      WRC_HISTORY_COLUMN("creep_force_x_left", "N", m.creep_force_x[0]),
-      WRC_HISTORY_COLUMN("creep_force_x_right", "N", m.creep_force_x[1]),
-      WRC_HISTORY_COLUMN("creep_force_y_left", "N", m.creep_force_y[0]),
-      WRC_HISTORY_COLUMN("creep_force_y_right", "N", m.creep_force_y[1]),
-      WRC_HISTORY_COLUMN("wear_number_left", "N", m.wear_number[0]),
-      WRC_HISTORY_COLUMN("wear_number_right", "N", m.wear_number[1]),
-      WRC_HISTORY_COLUMN("max_pressure_left", "Pa", m.max_pressure[0]),
-      WRC_HISTORY_COLUMN("max_pressure_right", "Pa", m.max_pressure[1]),
+      WRC_WHEEL_COLUMNS("creep_force_x", "N", creep_force_x),
+      WRC_WHEEL_COLUMNS("creep_force_y", "N", creep_force_y),
+      WRC_WHEEL_COLUMNS("wear_number", "N", wear_number),
+      WRC_WHEEL_COLUMNS("max_pressure", "Pa", max_pressure),
   };
   return columns;
 }
 
+#undef WRC_WHEEL_COLUMNS
 #undef WRC_HISTORY_COLUMN
 
 }  // namespace

@@ -3,10 +3,12 @@
 #include <fstream>
 #include <iomanip>
 #include <stdexcept>
+#include <vector>
 
 #include "cli/table_json.hpp"
 #include "core/dynamics/run_counter_table.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
+#include "core/dynamics/wheel_output.hpp"
 #include "core/track/track_irregularity.hpp"
 #include "core/track/track_layout.hpp"
 #include "protocol/run/run_output_codec.hpp"
@@ -52,6 +54,88 @@ nlohmann::json irregularity_json(const TrackIrregularity& irregularity) {
   return j;
 }
 
+// {"max", "t", "distance"} of one maximum.
+nlohmann::json maximum_json(const run_maximum_t& m) { return {{"max", m.value}, {"t", m.t}, {"distance", m.distance}}; }
+
+nlohmann::json per_wheel_json(const run_maximum_t (&m)[2]) {
+  return {{"left", maximum_json(m[0])}, {"right", maximum_json(m[1])}};
+}
+
+// The maxima of what engineers read off the run, where they occurred and their limits
+// (docs/run-quantities.md), with the unit of every key.
+nlohmann::json run_quantities_json(const run_summary_t& s, double friction) {
+  nlohmann::json j;
+  j["units"] = {{"t", "s"},
+                {"distance", "m"},
+                {"y_over_q", "-"},
+                {"nadal_limit", "-"},
+                {"flange_angle", "rad"},
+                {"friction", "-"},
+                {"track_shift_force", "N"},
+                {"prudhomme_limit", "N"},
+                {"axle_load", "N"},
+                {"wear_number", "N"},
+                {"max_pressure", "Pa"}};
+  j["y_over_q"] = per_wheel_json(s.max_y_over_q);
+  j["nadal_limit"] = s.nadal_limit;
+  j["flange_angle"] = s.flange_angle;
+  j["friction"] = friction;
+  j["track_shift_force"] = maximum_json(s.max_track_shift_force);
+  j["prudhomme_limit"] = s.prudhomme_limit;
+  j["axle_load"] = s.axle_load;
+  j["wear_number"] = per_wheel_json(s.max_wear_number);
+  j["max_pressure"] = per_wheel_json(s.max_pressure);
+  return j;
+}
+
+// One column of the history CSV: its name, unit and value in a state message.
+struct HistoryColumn {
+  const char* name;
+  const char* unit;
+  double (*value)(const wheelset_state_t&);
+};
+
+#define WRC_HISTORY_COLUMN(name, unit, expression) \
+  HistoryColumn { name, unit, [](const wheelset_state_t& m) -> double { return expression; } }
+// The left [0] and right [1] entries of a per-wheel field, "<name>_left" and "<name>_right".
+#define WRC_WHEEL_COLUMNS(name, unit, field) \
+  WRC_HISTORY_COLUMN(name "_left", unit, m.field[0]), WRC_HISTORY_COLUMN(name "_right", unit, m.field[1])
+
+// Every numeric column, in file order (the model's name follows them).
+const std::vector<HistoryColumn>& history_columns() {
+  static const std::vector<HistoryColumn> columns{
+      WRC_HISTORY_COLUMN("t", "s", m.t),
+      WRC_HISTORY_COLUMN("y", "m", m.y),
+      WRC_HISTORY_COLUMN("z", "m", m.z),
+      WRC_HISTORY_COLUMN("roll", "rad", m.roll),
+      WRC_HISTORY_COLUMN("yaw", "rad", m.yaw),
+      WRC_HISTORY_COLUMN("y_dot", "m/s", m.y_dot),
+      WRC_HISTORY_COLUMN("z_dot", "m/s", m.z_dot),
+      WRC_HISTORY_COLUMN("roll_dot", "rad/s", m.roll_dot),
+      WRC_HISTORY_COLUMN("yaw_dot", "rad/s", m.yaw_dot),
+      WRC_HISTORY_COLUMN("spin_rate", "rad/s", m.spin_rate),
+      WRC_WHEEL_COLUMNS("s", "m", s_wheel),
+      WRC_WHEEL_COLUMNS("angle", "rad", contact_angle),
+      WRC_WHEEL_COLUMNS("normal_force", "N", normal_force),
+      WRC_HISTORY_COLUMN("distance", "m", m.x),
+      WRC_WHEEL_COLUMNS("lateral_force", "N", lateral_force),
+      WRC_WHEEL_COLUMNS("vertical_force", "N", vertical_force),
+      WRC_HISTORY_COLUMN("y_over_q_left", "-", y_over_q(m.lateral_force[0], m.vertical_force[0])),
+      WRC_HISTORY_COLUMN("y_over_q_right", "-", y_over_q(m.lateral_force[1], m.vertical_force[1])),
+      WRC_HISTORY_COLUMN("nadal_limit", "-", m.nadal_limit),
+      WRC_HISTORY_COLUMN("track_shift_force", "N", track_shift_force(m.lateral_force[0], m.lateral_force[1])),
+      WRC_HISTORY_COLUMN("prudhomme_limit", "N", m.prudhomme_limit),
+      WRC_WHEEL_COLUMNS("creep_force_x", "N", creep_force_x),
+      WRC_WHEEL_COLUMNS("creep_force_y", "N", creep_force_y),
+      WRC_WHEEL_COLUMNS("wear_number", "N", wear_number),
+      WRC_WHEEL_COLUMNS("max_pressure", "Pa", max_pressure),
+  };
+  return columns;
+}
+
+#undef WRC_WHEEL_COLUMNS
+#undef WRC_HISTORY_COLUMN
+
 }  // namespace
 
 nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& request, const std::string& key) {
@@ -85,6 +169,7 @@ nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& 
     swaps.push_back({{"t", s.swap_times[k]}, {"model", s.swap_models[k]}});
   j["swaps"] = swaps;
   j["parameters"] = table_json(run_parameter_table(), request.spec);
+  j["run_quantities"] = run_quantities_json(s, request.spec.wheelset.material.friction);
   j["track_layout"] = layout_json(request.spec.track, request.spec.wheelset.speed, request.spec.wheelset.gravity,
                                   s.t_end);
   j["irregularities"] = irregularity_json(request.spec.irregularity);
@@ -101,14 +186,12 @@ void write_summary(const std::string& path, const nlohmann::json& summary) {
 void write_history(const std::string& path, const std::map<double, wheelset_state_t>& history) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot write the history");
-  out << "t,y,z,roll,yaw,y_dot,z_dot,roll_dot,yaw_dot,spin_rate,s_left,s_right,angle_left,angle_right,"
-         "normal_force_left,normal_force_right,model\n";
+  for (const HistoryColumn& c : history_columns()) out << c.name << " [" << c.unit << "],";
+  out << "model [-]\n";
   out << std::setprecision(17);
   for (const auto& [t, m] : history) {
-    out << m.t << ',' << m.y << ',' << m.z << ',' << m.roll << ',' << m.yaw << ',' << m.y_dot << ',' << m.z_dot << ','
-        << m.roll_dot << ',' << m.yaw_dot << ',' << m.spin_rate << ',' << m.s_wheel[0] << ',' << m.s_wheel[1] << ','
-        << m.contact_angle[0] << ',' << m.contact_angle[1] << ',' << m.normal_force[0] << ',' << m.normal_force[1]
-        << ',' << m.model << '\n';
+    for (const HistoryColumn& c : history_columns()) out << c.value(m) << ',';
+    out << m.model << '\n';
   }
   if (!out) throw std::runtime_error(path + ": write error");
 }

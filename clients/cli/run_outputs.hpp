@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// What `wrc run` writes: the summary as JSON (final state, counters of run_counter_table(),
-/// swaps, the parameters of run_parameter_table()) and the state history as CSV.
+/// swaps, the parameters of run_parameter_table(), the maxima of docs/run-quantities.md) and the
+/// state history as CSV.
 
 #include <map>
 #include <string>
@@ -20,7 +21,8 @@ nlohmann::json summary_json(const run_summary_t& summary, const protocol::RunReq
 /// Writes the summary JSON to path. @throws std::runtime_error when it cannot.
 void write_summary(const std::string& path, const nlohmann::json& summary);
 
-/// Writes the states by simulated time [s] as CSV (SI units). @throws std::runtime_error when it cannot.
+/// Writes the states by simulated time [s] as CSV (SI units), every header "name [unit]" (README lists
+/// the columns). @throws std::runtime_error when it cannot.
 void write_history(const std::string& path, const std::map<double, wheelset_state_t>& history);
 
 }  // namespace wrc::cli

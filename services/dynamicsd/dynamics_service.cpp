@@ -114,9 +114,9 @@ void DynamicsService::start(const run_command_t& command) {
     simulation_ = std::make_unique<WheelsetSimulation>(request_.spec, make_contact(request_.model), r0);
     for (const protocol::ScheduledSwap& swap : request_.swaps) simulation_->schedule_swap(swap.t, make_contact(swap.model));
     const std::string run_id = request_.run_id;
-    const double speed = request_.spec.wheelset.speed;
-    simulation_->on_output([this, run_id, speed](const WheelsetSnapshot& s) {
-      wheelset_state_t m = protocol::to_state_message(s, run_id, speed);
+    const WheelsetParameters wheelset = request_.spec.wheelset;
+    simulation_->on_output([this, run_id, wheelset](const WheelsetSnapshot& s) {
+      wheelset_state_t m = protocol::to_state_message(s, run_id, wheelset);
       publish(bus::channel::kWheelsetState, m);
     });
     wall_start_ = bus::monotonic_seconds();

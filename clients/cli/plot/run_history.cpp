@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -10,6 +11,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "core/dynamics/wheel_output.hpp"
 #include "core/numerics/number_text.hpp"
 #include "wrc/wheelset_state_t.hpp"
 
@@ -53,12 +55,21 @@ RunHistory read_log_history(const std::string& path) {
   }
   if (states.empty()) throw std::runtime_error("'" + path + "' holds no wheelset states (WHEELSET_STATE)");
   RunHistory history;
+  RunHistory::Forces& f = history.forces;
   for (const auto& [t, m] : states) {
     history.t.push_back(t);
     history.y.push_back(m.y);
     history.s_right.push_back(m.s_wheel[1]);
     history.normal_force_right.push_back(m.normal_force[1]);
     if (history.models.empty() || history.models.back() != m.model) history.models.push_back(m.model);
+    f.distance.push_back(m.x);
+    f.y_over_q_left.push_back(y_over_q(m.lateral_force[0], m.vertical_force[0]));
+    f.y_over_q_right.push_back(y_over_q(m.lateral_force[1], m.vertical_force[1]));
+    f.nadal_limit.push_back(m.nadal_limit);
+    f.track_shift_force.push_back(track_shift_force(m.lateral_force[0], m.lateral_force[1]));
+    f.prudhomme_limit.push_back(m.prudhomme_limit);
+    f.wear_number_left.push_back(m.wear_number[0]);
+    f.wear_number_right.push_back(m.wear_number[1]);
   }
   return history;
 }
@@ -71,7 +82,11 @@ RunHistory read_run_history(const std::string& path) {
   if (!in) throw std::runtime_error("cannot read the run history '" + path + "'");
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error("'" + path + "' is empty (expected a wrc run --history file)");
-  const std::vector<std::string> header = split(line);
+  std::vector<std::string> header = split(line);
+  // "name [unit]" -> "name" (files before the units: "name").
+  for (std::string& name : header)
+    if (const std::size_t bracket = name.find(" ["); bracket != std::string::npos && name.back() == ']')
+      name.erase(bracket);
   auto column = [&](const std::string& name, bool required) -> int {
     const auto it = std::find(header.begin(), header.end(), name);
     if (it == header.end()) {
@@ -82,6 +97,20 @@ RunHistory read_run_history(const std::string& path) {
   };
   const int t = column("t", true), y = column("y", true), s = column("s_right", true),
             force = column("normal_force_right", true), model = column("model", false);
+  // The force columns, all or none (a file written before they existed has none).
+  const std::vector<std::pair<const char*, std::vector<double> RunHistory::Forces::*>> force_columns{
+      {"distance", &RunHistory::Forces::distance},
+      {"y_over_q_left", &RunHistory::Forces::y_over_q_left},
+      {"y_over_q_right", &RunHistory::Forces::y_over_q_right},
+      {"nadal_limit", &RunHistory::Forces::nadal_limit},
+      {"track_shift_force", &RunHistory::Forces::track_shift_force},
+      {"prudhomme_limit", &RunHistory::Forces::prudhomme_limit},
+      {"wear_number_left", &RunHistory::Forces::wear_number_left},
+      {"wear_number_right", &RunHistory::Forces::wear_number_right},
+  };
+  const bool has_forces = column(force_columns.front().first, false) >= 0;
+  std::vector<int> force_index;
+  for (const auto& [name, member] : force_columns) force_index.push_back(column(name, has_forces));
   RunHistory history;
   for (int number = 2; std::getline(in, line); ++number) {
     if (line.empty()) continue;
@@ -90,6 +119,8 @@ RunHistory read_run_history(const std::string& path) {
       if (index >= static_cast<int>(fields.size()))
         throw std::runtime_error(path + ":" + std::to_string(number) + ": missing column '" + header[index] + "'");
       const std::string& text = fields[index];
+      // Y/Q of an unloaded wheel is written as nan (std::ostream), and read back as NaN.
+      if (text == "nan" || text == "-nan") return std::numeric_limits<double>::quiet_NaN();
       const std::optional<double> v = whole_number(text);
       if (!v)
         throw std::runtime_error(path + ":" + std::to_string(number) + ": '" + text + "' in column '" + header[index] +
@@ -100,6 +131,9 @@ RunHistory read_run_history(const std::string& path) {
     history.y.push_back(value(y));
     history.s_right.push_back(value(s));
     history.normal_force_right.push_back(value(force));
+    if (has_forces)
+      for (std::size_t k = 0; k < force_columns.size(); ++k)
+        (history.forces.*force_columns[k].second).push_back(value(force_index[k]));
     if (model >= 0 && model < static_cast<int>(fields.size()) &&
         (history.models.empty() || history.models.back() != fields[model]))
       history.models.push_back(fields[model]);

@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// A wheelset run's time history as `wrc run --history FILE.csv` writes it (header line
-/// t,y,z,roll,yaw,...,s_left,s_right,...,normal_force_left,normal_force_right,model), or from the
-/// wheelset states in an LCM log that `wrc record` wrote during the run.
+/// "t [s],y [m],...,s_right [m],...,normal_force_right [N],...,model [-]"; headers without the
+/// " [unit]" of older files are read too), or from the wheelset states in an LCM log that
+/// `wrc record` wrote during the run.
 
 #include <string>
 #include <vector>
@@ -16,6 +17,18 @@ struct RunHistory {
   std::vector<double> s_right;             ///< right contact point, wheel profile coordinate [m]
   std::vector<double> normal_force_right;  ///< right normal force [N]
   std::vector<std::string> models;         ///< the contact models of the run, in order of appearance
+  /// What engineers read off the run (docs/run-quantities.md), one entry per row; empty when the
+  /// file has no such columns (a history written before they existed).
+  struct Forces {
+    std::vector<double> distance;           ///< distance travelled [m]
+    std::vector<double> y_over_q_left;      ///< Y/Q of the left wheel [-]
+    std::vector<double> y_over_q_right;     ///< Y/Q of the right wheel [-]
+    std::vector<double> nadal_limit;        ///< Nadal's limit of Y/Q [-]
+    std::vector<double> track_shift_force;  ///< sum Y of the axle [N]
+    std::vector<double> prudhomme_limit;    ///< Prud'homme's limit of sum Y [N]
+    std::vector<double> wear_number_left;   ///< T gamma of the left wheel [N]
+    std::vector<double> wear_number_right;  ///< T gamma of the right wheel [N]
+  } forces;
 };
 
 /// Reads a history file or an LCM log (the states of its first run); throws std::runtime_error

@@ -54,11 +54,23 @@ HertzContact finish(const HertzShape& s, double contact_modulus, double minor, d
   c.normal_force = normal_force;
   c.penetration = penetration;
   c.stiffness = hertz_stiffness(s, contact_modulus);
-  c.max_pressure = normal_force > 0.0 ? 3.0 * normal_force / (2.0 * kPi * c.a * c.b) : 0.0;
+  c.max_pressure = hertz_max_pressure(normal_force, c.a, c.b);
   return c;
 }
 
 }  // namespace
+
+double hertz_max_pressure(double normal_force, double a, double b) {
+  const bool bad_force = !(normal_force >= 0.0) || !std::isfinite(normal_force);
+  const bool bad_axes = normal_force > 0.0 && !(a > 0.0 && b > 0.0 && std::isfinite(a) && std::isfinite(b));
+  if (bad_force || bad_axes) {
+    std::ostringstream msg;
+    msg << "hertz_max_pressure: need N >= 0 and, for N > 0, semi-axes a, b > 0, got N = " << normal_force
+        << " N, a = " << a << " m, b = " << b << " m";
+    fail(msg.str());
+  }
+  return normal_force > 0.0 ? 3.0 * normal_force / (2.0 * kPi * a * b) : 0.0;
+}
 
 double contact_modulus(double shear_modulus, double poisson) {
   if (!(shear_modulus > 0.0) || !std::isfinite(shear_modulus) || !(poisson >= 0.0 && poisson < 0.5)) {

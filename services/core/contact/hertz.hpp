@@ -65,6 +65,14 @@ HertzContact hertz_from_force(const HertzShape& shape, double contact_modulus, d
 /// @throws std::invalid_argument naming the values when delta < 0, E* <= 0 or NaN.
 HertzContact hertz_from_penetration(const HertzShape& shape, double contact_modulus, double penetration);
 
+/// The maximum pressure at the centre of a Hertz ellipse, p0 = 3 N / (2 pi a b) [Pa] (the
+/// ellipsoidal pressure distribution p0 sqrt(1 - x^2/a^2 - y^2/b^2) integrated over the ellipse is
+/// N); 0 when N = 0. The one place of this rule (HertzContact::max_pressure and the run's p_max).
+/// @param normal_force N [N], >= 0.  @param a, b semi-axes [m], > 0 when N > 0.
+/// @throws std::invalid_argument naming the values when N < 0 or not finite, or N > 0 with a or b
+///         not positive and finite.
+double hertz_max_pressure(double normal_force, double a, double b);
+
 /// Convenience: hertz_from_force(hertz_shape(A, B), contact_modulus, normal_force).
 /// @param A [1/m] > 0.  @param B [1/m] > 0.  @param contact_modulus E* [Pa].  @param normal_force N [N] >= 0.
 HertzContact hertz_from_force(double A, double B, double contact_modulus, double normal_force);

@@ -75,6 +75,11 @@ const std::vector<Parameter<WheelsetParameters>>& wheelset_parameter_table() {
                                      ParameterKind::kInteger, grid}, &W::fastsim_elements));
     t.push_back(member_parameter<W>({"fastsim_strips", nullptr, "-", "FASTSIM strips", ParameterKind::kInteger, grid},
                                     &W::fastsim_strips));
+    // Open at both ends: Nadal's limit needs a flange between the tread (0) and vertical (pi/2).
+    t.push_back(member_parameter<W>({"flange_angle", nullptr, "rad",
+                                     "largest flange angle of the wheel, for Nadal's Y/Q limit (S1002: 70 deg)",
+                                     ParameterKind::kNumber, {0.0, Bound::kOpen, kMaxFlangeAngle, Bound::kOpen}},
+                                    &W::flange_angle));
     return t;
   }();
   return table;

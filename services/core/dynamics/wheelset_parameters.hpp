@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "core/dynamics/safety_limits.hpp"
 #include "core/model_interface/contact_model.hpp"
 #include "core/track/track_irregularity.hpp"
 #include "core/track/track_layout.hpp"
@@ -49,6 +50,9 @@ struct WheelsetParameters {
   ContactMaterial material;          ///< G, nu, mu of wheel and rail
   int fastsim_elements = 20;         ///< FASTSIM elements per strip [-]
   int fastsim_strips = 20;           ///< FASTSIM strips [-]
+  /// Largest flange angle of the wheel profile, for Nadal's Y/Q limit only [rad], in (0, pi/2)
+  /// (docs/run-quantities.md); the default is S1002's, 70 deg.
+  double flange_angle = kS1002FlangeAngle;
 
   /// Total downward load the contacts carry at rest: vertical_force (+ m g) [N].
   double total_vertical_load() const { return vertical_force + (include_gravity ? mass * gravity : 0.0); }

@@ -374,11 +374,13 @@ void WheelsetSimulation::start() {
   begin_segment(y, true);
   next_output_ = 0.0;
   output_index_ = 0;
+  extremes_ = RunExtremes{};
   record_step_contact(true);
   emit_outputs_until(0.0);
 }
 
-std::array<WheelOutput, 2> WheelsetSimulation::wheel_outputs(const std::vector<double>& y) {
+std::array<WheelOutput, 2> WheelsetSimulation::wheel_outputs(const std::vector<double>& y,
+                                                             std::array<WheelForces, 2>* forces) {
   const ContactResult& c = contact_at(y.data());
   std::array<WheelOutput, 2> out;
   for (int i = 0; i < 2; ++i) {
@@ -386,14 +388,19 @@ std::array<WheelOutput, 2> WheelsetSimulation::wheel_outputs(const std::vector<d
     w.s_wheel = c.wheels[static_cast<size_t>(i)].s_wheel;
     w.contact_angle = c.wheels[static_cast<size_t>(i)].contact_angle;
     w.normal_force = equations_.normal_force(formulation_, y.data(), c, i, branches_);
+    const WheelForces f = wheel_forces(c, i);
+    set_force_outputs(f, w.normal_force, i, w);
+    if (forces) (*forces)[static_cast<size_t>(i)] = f;
   }
   return out;
 }
 
 void WheelsetSimulation::record_step_contact(bool restart) {
-  const StepContact now{t_, wheel_outputs(current_state())};
+  StepContact now{t_, {}, {}};
+  now.wheels = wheel_outputs(current_state(), &now.forces);
   previous_step_ = restart ? now : current_step_;
   current_step_ = now;
+  extremes_.observe(t_, spec_.wheelset.speed * t_, now.wheels);
 }
 
 void WheelsetSimulation::emit_outputs_until(double t) {
@@ -415,7 +422,10 @@ void WheelsetSimulation::emit_outputs_until(double t) {
       wheels[i].normal_force = formulation_ == ContactFormulation::kRigid
                                    ? equations_.normal_force(formulation_, y.data(), ContactResult{}, static_cast<int>(i), branches_)
                                    : a.normal_force + w * (b.normal_force - a.normal_force);
+      set_force_outputs(interpolate(previous_step_.forces[i], current_step_.forces[i], w), wheels[i].normal_force,
+                        static_cast<int>(i), wheels[i]);
     }
+    extremes_.observe(next_output_, spec_.wheelset.speed * next_output_, wheels);
     if (on_output_) on_output_(snapshot_of(y, next_output_, wheels));
     if (next_output_ >= t_end) {
       next_output_ = std::numeric_limits<double>::infinity();

@@ -14,18 +14,14 @@
 #include "core/dynamics/consistent_initialisation.hpp"
 #include "core/dynamics/contact_evaluator.hpp"
 #include "core/dynamics/run_counters.hpp"
+#include "core/dynamics/run_extremes.hpp"
 #include "core/dynamics/sundials_support.hpp"
 #include "core/dynamics/wheelset_equations.hpp"
+#include "core/dynamics/wheel_forces.hpp"
+#include "core/dynamics/wheel_output.hpp"
 #include "core/dynamics/wheelset_parameters.hpp"
 
 namespace wrc {
-
-/// Contact of one wheel at an output time.
-struct WheelOutput {
-  double s_wheel = 0;        ///< wheel profile coordinate of the contact point [m]
-  double contact_angle = 0;  ///< [rad]
-  double normal_force = 0;   ///< [N] (elastic: sum over the wheel's patches)
-};
 
 /// The wheelset at one time, in the conventions of `wrc geometry` (z = height of the centre above
 /// the top-of-rail plane).
@@ -102,6 +98,9 @@ class WheelsetSimulation {
   RunCounters counters() const;
   const std::vector<SwapRecord>& swaps() const { return swaps_; }
   const std::vector<SwitchRecord>& switches() const { return switch_log_; }
+  /// The largest |Y/Q|, |sum Y|, T gamma and p_max so far, over every accepted step and output
+  /// sample, with their time and distance travelled (docs/run-quantities.md).
+  const RunExtremes& extremes() const { return extremes_; }
   const RunSpec& spec() const { return spec_; }
   const WheelsetEquations& equations() const { return equations_; }
 
@@ -144,8 +143,9 @@ class WheelsetSimulation {
   /// Projects y onto the constraints, switches every wheel whose followed point is not the lowest
   /// (at most kMaxSwitchesPerEvent times) and restarts the integrator there.
   void restart_on_right_branches(std::vector<double>& y);
-  /// The contact of each wheel at the state y (one contact evaluation, usually cached).
-  std::array<WheelOutput, 2> wheel_outputs(const std::vector<double>& y);
+  /// The contact of each wheel at the state y (one contact evaluation, usually cached); forces, when
+  /// given, receives each wheel's patch sums.
+  std::array<WheelOutput, 2> wheel_outputs(const std::vector<double>& y, std::array<WheelForces, 2>* forces = nullptr);
   /// Every output sample up to t: the state interpolated by IDA, the contact data linearly
   /// between the last two accepted steps (no contact evaluation per sample).
   void emit_outputs_until(double t);
@@ -154,6 +154,7 @@ class WheelsetSimulation {
   struct StepContact {
     double t = 0;
     std::array<WheelOutput, 2> wheels;
+    std::array<WheelForces, 2> forces;  // each wheel's patch sums (Y and Q at an output apply its normal force)
   };
   void record_step_contact(bool restart);
   RunCounters ida_counters() const;
@@ -187,6 +188,7 @@ class WheelsetSimulation {
   StepContact previous_step_, current_step_;
   std::vector<SwapRecord> swaps_;
   std::vector<SwitchRecord> switch_log_;
+  RunExtremes extremes_;
 };
 
 }  // namespace wrc

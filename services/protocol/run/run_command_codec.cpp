@@ -25,7 +25,7 @@ const std::vector<MessageField<run_command_t>>& run_command_fields() {
       WRC_MESSAGE_FIELD(M, vertical_stiffness), WRC_MESSAGE_FIELD(M, longitudinal_damping),
       WRC_MESSAGE_FIELD(M, lateral_damping), WRC_MESSAGE_FIELD(M, vertical_damping), WRC_MESSAGE_FIELD(M, half_spacing),
       WRC_MESSAGE_FIELD(M, shear_modulus), WRC_MESSAGE_FIELD(M, poisson_ratio), WRC_MESSAGE_FIELD(M, friction),
-      WRC_MESSAGE_FIELD(M, fastsim_elements), WRC_MESSAGE_FIELD(M, fastsim_strips), WRC_MESSAGE_FIELD(M, y0),
+      WRC_MESSAGE_FIELD(M, fastsim_elements), WRC_MESSAGE_FIELD(M, fastsim_strips), WRC_MESSAGE_FIELD(M, flange_angle), WRC_MESSAGE_FIELD(M, y0),
       WRC_MESSAGE_FIELD(M, yaw0), WRC_MESSAGE_FIELD(M, y_dot0), WRC_MESSAGE_FIELD(M, yaw_dot0),
       WRC_MESSAGE_FIELD(M, spin_rate_offset), WRC_MESSAGE_FIELD(M, t_end), WRC_MESSAGE_FIELD(M, rtol),
       WRC_MESSAGE_FIELD(M, position_tolerance), WRC_MESSAGE_FIELD(M, velocity_tolerance),

@@ -3,6 +3,7 @@
 #include <exception>
 
 #include "core/dynamics/run_counter_table.hpp"
+#include "core/dynamics/safety_limits.hpp"
 #include "protocol/message_fields.hpp"
 #include "wrc/run_status_t.hpp"
 
@@ -25,6 +26,30 @@ void copy_motion(const WheelsetSnapshot& s, Message& m) {
     m.s_wheel[i] = s.wheels[static_cast<std::size_t>(i)].s_wheel;
     m.normal_force[i] = s.wheels[static_cast<std::size_t>(i)].normal_force;
   }
+}
+
+run_maximum_t to_message(const RunMaximum& m) {
+  run_maximum_t out{};
+  out.value = m.value;
+  out.t = m.t;
+  out.distance = m.distance;
+  return out;
+}
+
+// The maxima of what engineers read off the run and the limits they are judged against.
+void copy_extremes(const WheelsetSimulation& sim, run_summary_t& m) {
+  const RunExtremes& e = sim.extremes();
+  const WheelsetParameters& p = sim.spec().wheelset;
+  for (std::size_t i = 0; i < 2; ++i) {
+    m.max_y_over_q[i] = to_message(e.y_over_q[i]);
+    m.max_wear_number[i] = to_message(e.wear_number[i]);
+    m.max_pressure[i] = to_message(e.max_pressure[i]);
+  }
+  m.max_track_shift_force = to_message(e.track_shift_force);
+  m.flange_angle = p.flange_angle;
+  m.nadal_limit = nadal_limit(p.flange_angle, p.material.friction);
+  m.axle_load = p.total_vertical_load();
+  m.prudhomme_limit = prudhomme_limit(m.axle_load);
 }
 
 // The field of each run_counter_table() name; three kept the message's older names.
@@ -62,14 +87,26 @@ const std::vector<MessageField<integrator_stats_t>>& stats_fields() {
 
 }  // namespace
 
-wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, double speed) {
+wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, const WheelsetParameters& w) {
+  const double speed = w.speed;
   wheelset_state_t m{};
   m.run_id = run_id;
   m.t = s.t;
   copy_motion(s, m);
   m.x = speed * s.t;
   m.speed = speed;
-  for (int i = 0; i < 2; ++i) m.contact_angle[i] = s.wheels[static_cast<std::size_t>(i)].contact_angle;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const WheelOutput& wheel = s.wheels[i];
+    m.contact_angle[i] = wheel.contact_angle;
+    m.lateral_force[i] = wheel.lateral_force;
+    m.vertical_force[i] = wheel.vertical_force;
+    m.creep_force_x[i] = wheel.creep_force_x;
+    m.creep_force_y[i] = wheel.creep_force_y;
+    m.wear_number[i] = wheel.wear_number;
+    m.max_pressure[i] = wheel.max_pressure;
+  }
+  m.nadal_limit = nadal_limit(w.flange_angle, w.material.friction);
+  m.prudhomme_limit = prudhomme_limit(w.total_vertical_load());
   m.model = s.model;
   return m;
 }
@@ -111,6 +148,7 @@ run_summary_t to_summary_message(WheelsetSimulation& sim, const std::string& run
     if (m.message.empty()) m.message = std::string("final state unavailable: ") + e.what();
   }
   m.stats = to_stats_message(sim.counters(), run_id, sim.time(), wall_time);
+  copy_extremes(sim, m);
   m.num_swaps = static_cast<std::int32_t>(sim.swaps().size());
   for (const SwapRecord& s : sim.swaps()) {
     m.swap_times.push_back(s.t);

@@ -13,8 +13,9 @@
 
 namespace wrc::protocol {
 
-/// The state message of a snapshot at speed V (x = V t).
-wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, double speed);
+/// The state message of a snapshot of a run of wheelset w (x = V t; Nadal's and Prud'homme's limits
+/// from its flange angle, friction and load).
+wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, const WheelsetParameters& w);
 /// The counters message (every counter of run_counter_table(); t [s] and wall_time [s] as given).
 integrator_stats_t to_stats_message(const RunCounters& c, const std::string& run_id, double t, double wall_time);
 /// The counters of a counters message.

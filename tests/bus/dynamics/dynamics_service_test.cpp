@@ -8,6 +8,7 @@
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -145,6 +146,78 @@ TEST_F(DynamicsServiceTest, ARunFollowsATrackLayout) {
   EXPECT_NEAR(curve["balanced_speed"].get<double>(), std::sqrt(9.81 * 600 * 0.13 / std::sqrt(1.5 * 1.5 - 0.13 * 0.13)),
               1e-9);
   EXPECT_NEAR(curve["cant_deficiency"].get<double>(), 1.5 * 30.0 * 30.0 / (9.81 * 600) - 0.13, 1e-12);
+}
+
+// What engineers read off a run (docs/run-quantities.md), over the bus with a flange angle and a
+// friction of the test's own (so the parameter crosses run_command_t): the summary JSON has, under
+// run_quantities, the maxima of |Y/Q| per wheel, |sum Y|, T gamma and p_max each with t and the
+// distance, the limits computed from the run's values (Nadal: (tan d - mu) / (1 + mu tan d);
+// Prud'homme: 1e4 N + P/3) and a unit for every key; the history CSV has "name [unit]" in every
+// header, the new columns with their units, and no row above the summary's maxima.
+TEST_F(DynamicsServiceTest, RunQuantitiesInSummaryAndHistory) {
+  std::vector<std::string> args = run_args("spline", 0.3, temp_path("quantities.json"));
+  const std::string csv = temp_path("quantities.csv");
+  args.insert(args.end(), {"--history", csv, "--flange-angle", "1.2", "--friction", "0.25"});
+  const nlohmann::json s = run(args, "quantities");
+  ASSERT_EQ(s["state"], "finished") << s.dump();
+  ASSERT_TRUE(s.contains("run_quantities")) << s.dump();
+  const nlohmann::json& q = s["run_quantities"];
+  const std::map<std::string, std::string> units{
+      {"t", "s"},           {"distance", "m"},          {"y_over_q", "-"},          {"nadal_limit", "-"},
+      {"flange_angle", "rad"}, {"friction", "-"},        {"track_shift_force", "N"}, {"prudhomme_limit", "N"},
+      {"axle_load", "N"},   {"wear_number", "N"},       {"max_pressure", "Pa"}};
+  for (const auto& [key, unit] : units) EXPECT_EQ(q["units"][key], unit) << key;
+  for (const auto& item : q.items())
+    EXPECT_TRUE(item.key() == "units" || q["units"].contains(item.key())) << item.key() << " has no unit";
+  EXPECT_DOUBLE_EQ(q["flange_angle"].get<double>(), 1.2);
+  EXPECT_DOUBLE_EQ(s["parameters"]["flange_angle"].get<double>(), 1.2);
+  EXPECT_DOUBLE_EQ(q["friction"].get<double>(), 0.25);
+  EXPECT_NEAR(q["nadal_limit"].get<double>(), (std::tan(1.2) - 0.25) / (1.0 + 0.25 * std::tan(1.2)), 1e-14);
+  const double axle_load = 154715.0 + 1813.0 * 9.81;
+  EXPECT_NEAR(q["axle_load"].get<double>(), axle_load, 1e-9);
+  EXPECT_NEAR(q["prudhomme_limit"].get<double>(), 1e4 + axle_load / 3.0, 1e-9);
+  auto expect_where = [&](const nlohmann::json& m, const std::string& what) {
+    ASSERT_TRUE(m.contains("max") && m.contains("t") && m.contains("distance")) << what << ": " << m.dump();
+    EXPECT_GT(m["max"].get<double>(), 0.0) << what;
+    EXPECT_GE(m["t"].get<double>(), 0.0) << what;
+    EXPECT_LE(m["t"].get<double>(), 0.3) << what;
+    EXPECT_DOUBLE_EQ(m["distance"].get<double>(), 30.0 * m["t"].get<double>()) << what;
+  };
+  for (const char* key : {"y_over_q", "wear_number", "max_pressure"})
+    for (const char* side : {"left", "right"}) expect_where(q[key][side], std::string(key) + " " + side);
+  expect_where(q["track_shift_force"], "track_shift_force");
+  // The history: every header "name [unit]", the new columns among them.
+  std::ifstream in(csv);
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line)) << csv;
+  std::vector<std::string> header;
+  for (std::stringstream cells(line); std::getline(cells, line, ',');) header.push_back(line);
+  for (const std::string& h : header) EXPECT_EQ(h.back(), ']') << "no unit in '" << h << "'";
+  const std::vector<std::string> wanted{
+      "t [s]", "distance [m]", "lateral_force_left [N]", "lateral_force_right [N]", "vertical_force_left [N]",
+      "vertical_force_right [N]", "y_over_q_left [-]", "y_over_q_right [-]", "nadal_limit [-]",
+      "track_shift_force [N]", "prudhomme_limit [N]", "creep_force_x_left [N]", "creep_force_y_right [N]",
+      "wear_number_left [N]", "wear_number_right [N]", "max_pressure_left [Pa]", "max_pressure_right [Pa]"};
+  std::map<std::string, size_t> at;
+  for (const std::string& w : wanted) {
+    const auto it = std::find(header.begin(), header.end(), w);
+    ASSERT_NE(it, header.end()) << "no column '" << w << "' in the history";
+    at[w] = static_cast<size_t>(it - header.begin());
+  }
+  long rows = 0;
+  for (std::string row; std::getline(in, row); ++rows) {
+    std::vector<std::string> cells;
+    for (std::stringstream c(row); std::getline(c, line, ',');) cells.push_back(line);
+    ASSERT_EQ(cells.size(), header.size()) << row;
+    auto value = [&](const std::string& column) { return std::stod(cells[at[column]]); };
+    EXPECT_LE(std::abs(value("y_over_q_right [-]")), q["y_over_q"]["right"]["max"].get<double>());
+    EXPECT_LE(std::abs(value("track_shift_force [N]")), q["track_shift_force"]["max"].get<double>());
+    EXPECT_LE(value("wear_number_right [N]"), q["wear_number"]["right"]["max"].get<double>());
+    EXPECT_LE(value("max_pressure_right [Pa]"), q["max_pressure"]["right"]["max"].get<double>());
+    EXPECT_EQ(value("nadal_limit [-]"), q["nadal_limit"].get<double>());
+    EXPECT_DOUBLE_EQ(value("distance [m]"), 30.0 * value("t [s]"));
+  }
+  EXPECT_EQ(rows, 301);  // 0.3 s at the default 1 ms, both ends
 }
 
 // A swap from onepoint to spline made with `wrc swap spline` while the run integrates is acted on

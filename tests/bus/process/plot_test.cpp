@@ -121,6 +121,32 @@ TEST_F(PlotTest, Run) {
   expect_png("run " + (dir_ / "onepoint.csv").string() + " " + (dir_ / "spline.csv").string(), "run.png");
 }
 
+// --forces from a history with units in its headers and the force columns (as `wrc run --history`
+// writes it now): Y/Q with Nadal's limit, sum Y with Prud'homme's, T gamma against the distance. A
+// history without the force columns (the file of PlotTest.Run's format) is refused in one line.
+TEST_F(PlotTest, RunForces) {
+  std::ofstream out(dir_ / "forces.csv");
+  out << "t [s],y [m],s_right [m],normal_force_right [N],distance [m],y_over_q_left [-],y_over_q_right [-],"
+         "nadal_limit [-],track_shift_force [N],prudhomme_limit [N],wear_number_left [N],wear_number_right [N],"
+         "model [-]\n";
+  for (int i = 0; i <= 50; ++i) {
+    const double t = 0.02 * i, y = 0.004 * std::exp(-t) * std::cos(8 * t);
+    out << t << "," << y << "," << -2 * y << ",86000," << 30 * t << "," << -0.05 + y << "," << 0.1 - 20 * y
+        << ",1.3416,-20000," << 67500 << "," << 30 + 1e3 * y << "," << 40 - 1e3 * y << ",spline\n";
+  }
+  out.close();
+  expect_png("run " + (dir_ / "forces.csv").string() + " --forces", "forces.png");
+  std::ofstream old(dir_ / "old.csv");
+  old << "t,y,s_right,normal_force_right,model\n0,0,0,86000,spline\n";
+  old.close();
+  int status = -1;
+  const std::string text =
+      run_command(kCli + " plot run " + (dir_ / "old.csv").string() + " --forces 2>&1 >/dev/null", &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(text.find("has no force columns"), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+}
+
 TEST_F(PlotTest, Conicity) { expect_png("conicity --a-from 0.001 --a-to 0.008 --a-step 0.001 --samples 64", "conicity.png"); }
 
 TEST_F(PlotTest, Profiles) { expect_png("profiles --y 0.005", "profiles.png"); }

@@ -91,6 +91,27 @@ if [ "$ready" = 1 ]; then
     awk -v o="$(wall onepoint)" -v s="$(wall spline)" \
       'BEGIN { printf "Wall time one-point / spline: %.1f (the paper: the spline model is several times faster)\n", o / s }'
   fi
+  section "A curve with transitions on irregular track (wrc irregularities, wrc run --track --irregularities)"
+  echo "parameters/track-curve-R600.json: 100 m straight, 90 m transition, R = 600 m with 130 mm cant;"
+  echo "irregularities generated from the ERRI low-level spectrum (3-70 m, seed 1); 30 m/s (cant"
+  echo "deficiency 99 mm), 8 s = 240 m: into the curve. What engineers read off each run, with limits:"
+  wrc irregularities --spectrum erri-low --length 300 --wavelengths 3:70 --seed 1 \
+    --out "$report_dir/irregularities.csv" 2>&1 | sed 's/^/  /'
+  printf '%-10s %9s %9s %10s %11s %10s %9s %9s\n' model y[mm] Y/Q_max Nadal sumY[kN] limit[kN] Tg[N] restarts
+  for model in spline onepoint; do
+    summary="$report_dir/curve-$model.json"
+    if wrc run --model "$model" --t-end 8 --track parameters/track-curve-R600.json \
+        --irregularities "$report_dir/irregularities.csv" --summary "$summary" \
+        --history "$report_dir/curve-$model.csv" --output-period 0.005 2>"$report_dir/curve-$model.log"; then
+      jq -r --arg m "$model" '.run_quantities as $q | [$m, .final_state.y * 1e3,
+          ([$q.y_over_q.left.max, $q.y_over_q.right.max] | max), $q.nadal_limit,
+          $q.track_shift_force.max / 1e3, $q.prudhomme_limit / 1e3,
+          ([$q.wear_number.left.max, $q.wear_number.right.max] | max), .counters.restarts] | @tsv' "$summary" |
+        awk -F'\t' '{ printf "%-10s %9.3f %9.3f %10.3f %11.1f %10.1f %9.1f %9d\n", $1, $2, $3, $4, $5, $6, $7, $8 }'
+    else
+      echo "$model: curve run failed:"; tail -3 "$report_dir/curve-$model.log"
+    fi
+  done
 else
   echo "the contact services did not report READY; launcher log:"; cat "$log"
 fi
@@ -110,6 +131,13 @@ plot fig4-displacement displacement
 runs=()
 for model in onepoint spline; do [ -s "$report_dir/run-$model.csv" ] && runs+=("$report_dir/run-$model.csv"); done
 [ "${#runs[@]}" -gt 0 ] && plot fig5-6-run run "${runs[@]}"
+curves=()
+for model in onepoint spline; do [ -s "$report_dir/curve-$model.csv" ] && curves+=("$report_dir/curve-$model.csv"); done
+if [ "${#curves[@]}" -gt 0 ]; then
+  plot curve-run run "${curves[@]}"
+  plot curve-forces run --forces "${curves[@]}"
+fi
+[ -s "$report_dir/irregularities.csv" ] && plot irregularities irregularities "$report_dir/irregularities.csv"
 plot geometry geometry --y-from -0.008 --y-to 0.008
 plot conicity conicity --a-to 0.008
 plot profiles profiles --y 0.005

@@ -14,6 +14,7 @@ WRC_PACKAGES=(
   libgtest-dev libbenchmark-dev   # unit tests and benchmarks
   iproute2 nftables util-linux    # private network namespaces and packet-loss injection in bus tests
   gnuplot-nox                 # `wrc plot`: PNG/SVG pictures through its cairo terminals (pngcairo, svg), no X11
+  jq                          # the demo reads values out of nested run summaries (JSON) in the shell
 )
 
 wrc_missing_packages() {

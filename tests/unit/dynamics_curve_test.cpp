@@ -17,6 +17,7 @@
 #include "core/track/track_layout_file.hpp"
 #include <initializer_list>
 #include <string>
+#include "expect_invalid.hpp"
 #include "run_to_end.hpp"
 #include "spline_test_model.hpp"
 
@@ -31,16 +32,7 @@ TrackSegment curve(double length, double radius, bool left, double cant) {
   return {TrackSegmentKind::kCurve, length, radius, left, cant};
 }
 
-// fn() throws std::invalid_argument whose message holds every one of texts.
-template <class F>
-void expect_invalid(F fn, std::initializer_list<const char*> texts) {
-  try {
-    fn();
-    ADD_FAILURE() << "no exception, expected one mentioning '" << *texts.begin() << "'";
-  } catch (const std::invalid_argument& e) {
-    for (const char* text : texts) EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-  }
-}
+using test::expect_invalid;
 
 std::shared_ptr<ContactEvaluator> interp_contact() {
   static const std::shared_ptr<const ContactModel> model = make_contact_model("interp", test::s1002_uic60_geometry());

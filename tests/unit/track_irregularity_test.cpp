@@ -20,6 +20,7 @@
 #include "core/models/contact_model_factory.hpp"
 #include "core/track/irregularity_spectrum.hpp"
 #include "core/track/track_irregularity_file.hpp"
+#include "expect_invalid.hpp"
 #include "run_to_end.hpp"
 #include "spline_test_model.hpp"
 
@@ -29,16 +30,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kR0 = 0.46;
 
-// fn() throws std::invalid_argument whose message holds every one of texts.
-template <class F>
-void expect_invalid(F fn, std::initializer_list<const char*> texts) {
-  try {
-    fn();
-    ADD_FAILURE() << "no exception, expected one mentioning '" << *texts.begin() << "'";
-  } catch (const std::invalid_argument& e) {
-    for (const char* text : texts) EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
-  }
-}
+using test::expect_invalid;
 
 Eigen::Vector4d as_vector(const WheelsetPose& p) { return {p.y, p.z, p.roll, p.yaw}; }
 WheelsetPose as_pose(const Eigen::Vector4d& v) { return {v[0], v[1], v[2], v[3], 0.0}; }

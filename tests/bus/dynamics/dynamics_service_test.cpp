@@ -148,6 +148,46 @@ TEST_F(DynamicsServiceTest, ARunFollowsATrackLayout) {
   EXPECT_NEAR(curve["cant_deficiency"].get<double>(), 1.5 * 30.0 * 30.0 / (9.81 * 600) - 0.13, 1e-12);
 }
 
+// `wrc irregularities` then `wrc run --track FILE --irregularities FILE` with every model: ERRI
+// low-level irregularities (3-70 m, seed 1, 300 m) over the shipped layout at 30 m/s for 7 s, through
+// the straight and the transition into the curve (210 m). The samples cross run_command_t (the
+// summary's range and sample count are the file's), every run finishes, in the curve pushed
+// outwards (y < -2 mm: the cant deficiency of 99 mm on the outer flange root, as without
+// irregularities), with Y/Q below Nadal's limit; the spline model without a restart.
+TEST_F(DynamicsServiceTest, EveryModelRunsACurveOverIrregularTrack) {
+  const std::string csv = temp_path("erri.csv");
+  {
+    const std::string log = temp_path("irregularities.log");
+    ChildProcess cli(WRC_CLI_PATH,
+                     {"irregularities", "--spectrum", "erri-low", "--length", "300", "--wavelengths", "3:70",
+                      "--seed", "1", "--out", csv},
+                     log);
+    int status = -1;
+    ASSERT_TRUE(cli.wait(60.0, &status)) << read_text(log);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(log);
+  }
+  for (const char* model : {"spline", "interp", "onepoint", "multipoint"}) {
+    std::vector<std::string> args = run_args(model, 7.0, temp_path(std::string("irregular-") + model + ".json"));
+    args.insert(args.end(), {"--track", std::string(WRC_SOURCE_DIR) + "/parameters/track-curve-R600.json",
+                             "--irregularities", csv, "--lateral-force", "0", "--output-period", "0.01"});
+    const nlohmann::json s = run(args, std::string("irregular-") + model);
+    ASSERT_EQ(s["state"], "finished") << model << ": " << s.dump();
+    const nlohmann::json& irregularities = s["irregularities"];
+    EXPECT_DOUBLE_EQ(irregularities["s_end"].get<double>(), 300.0) << model;
+    EXPECT_EQ(irregularities["samples"].get<long>(), 1201) << model;
+    EXPECT_GT(irregularities["alignment"]["rms"].get<double>(), 5e-4) << model;
+    EXPECT_LT(s["final_state"]["y"].get<double>(), -2e-3) << model;
+    const nlohmann::json& q = s["run_quantities"];
+    for (const char* side : {"left", "right"})
+      EXPECT_LT(q["y_over_q"][side]["max"].get<double>(), q["nadal_limit"].get<double>()) << model << " " << side;
+    std::cout << "[ measured ] " << model << " over ERRI low into R 600 m: y = "
+              << s["final_state"]["y"].get<double>() * 1e3 << " mm, max Y/Q "
+              << std::max(q["y_over_q"]["left"]["max"].get<double>(), q["y_over_q"]["right"]["max"].get<double>())
+              << ", restarts " << s["counters"]["restarts"] << ", wall " << s["wall_time"] << " s\n";
+    if (std::string(model) == "spline") EXPECT_EQ(s["counters"]["restarts"].get<long>(), 0);
+  }
+}
+
 // What engineers read off a run (docs/run-quantities.md), over the bus with a flange angle and a
 // friction of the test's own (so the parameter crosses run_command_t): the summary JSON has, under
 // run_quantities, the maxima of |Y/Q| per wheel, |sum Y|, T gamma and p_max each with t and the

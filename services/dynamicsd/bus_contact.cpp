@@ -17,6 +17,25 @@ BusContact::BusContact(bus::RequestClient<contact_query_t, contact_reply_t>& cli
       settings_(std::move(settings)) {}
 
 std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>& batch) {
+  // A message carries formulation, material, grid and speed once: a batch whose queries differ in
+  // them (on a curve the Jacobian's column in y has the forward speed V (1 - kappa y) of its own)
+  // goes as one message per run of queries that share them.
+  std::vector<ContactResult> out;
+  out.reserve(batch.size());
+  for (std::size_t begin = 0; begin < batch.size();) {
+    std::size_t end = begin + 1;
+    while (end < batch.size() && protocol::shares_query_fields(batch[begin], batch[end])) ++end;
+    if (begin == 0 && end == batch.size()) return evaluate_message(batch);
+    std::vector<ContactResult> part =
+        evaluate_message(std::vector<ContactQuery>(batch.begin() + static_cast<std::ptrdiff_t>(begin),
+                                                   batch.begin() + static_cast<std::ptrdiff_t>(end)));
+    for (ContactResult& r : part) out.push_back(std::move(r));
+    begin = end;
+  }
+  return out;
+}
+
+std::vector<ContactResult> BusContact::evaluate_message(const std::vector<ContactQuery>& batch) {
   contact_query_t query{};
   protocol::to_query_message(batch, query);
   query.model = settings_.model;

@@ -58,6 +58,9 @@ class BusContact final : public ContactEvaluator {
   const std::string& addressed_instance() const { return addressed_; }
 
  private:
+  /// One message for queries that share formulation, material, grid and speed.
+  std::vector<ContactResult> evaluate_message(const std::vector<ContactQuery>& batch);
+
   bus::RequestClient<contact_query_t, contact_reply_t>& client_;
   const bus::HeartbeatMonitor& monitor_;
   std::string request_channel_;

@@ -181,7 +181,11 @@ void consistent_derivatives(const InitialisationContext& context, std::vector<do
   const double eps = kGradientRateStep;
   std::vector<double> ahead = y;
   for (int k = 0; k < kPoseUnknowns; ++k) ahead[k] += eps * y[kPoseUnknowns + k];
-  const ContactResult c_ahead = context.contact_at(ahead.data());
+  // Ahead along the motion: the pose moved by eps v and, where the rails move under the wheelset,
+  // the rails eps later (the constraints' explicit change with time, d(G)/dt v and d(gap_rate)/dt:
+  // V^2 times the irregularity's curvature, up to tenths of g).
+  const ContactResult c_ahead =
+      context.contact_later ? context.contact_later(ahead.data(), eps) : context.contact_at(ahead.data());
   const Eigen::Vector4d m = equations.mass_diagonal();
   const int count = static_cast<int>(active.size());
   for (int iteration = 0; iteration < kMaxNormalForceIterations; ++iteration) {
@@ -198,9 +202,7 @@ void consistent_derivatives(const InitialisationContext& context, std::vector<do
     for (int i = 0; i < count; ++i) {
       const WheelConstraint& w = active[static_cast<size_t>(i)].of(c);
       const WheelConstraint& w_ahead = active[static_cast<size_t>(i)].of(c_ahead);
-      // The gap rates' change along v too; their change with the track position at a fixed pose
-      // (the rails' curvature under the wheelset, V^2 times the irregularity's second derivative)
-      // is left out of these start values: IDA's first steps absorb it.
+      // The gap rates' change along the motion too (the rails moving under the wheelset).
       double g_dot_v = (w_ahead.gap_rate - w.gap_rate) / eps;
       for (int k = 0; k < 4; ++k) {
         // r holds the forces of the current N; the unknown is the change of N (scaled).

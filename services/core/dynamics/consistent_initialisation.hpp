@@ -37,6 +37,10 @@ struct InitialisationContext {
   std::function<const ContactResult&(const double* y)> contact_at;
   /// The contact of a batch of queries in one evaluation, one result per query in order.
   std::function<std::vector<ContactResult>(const std::vector<ContactQuery>&)> evaluate;
+  /// The contact at the state y with the rails as they lie dt [s] later under the travelling
+  /// wheelset (irregularities); empty when the rails do not move (the constraints do not depend on
+  /// time).
+  std::function<ContactResult(const double* y, double dt)> contact_later;
 };
 
 /// Rigid: moves the pose of y onto the active constraints (every |gap| below 1e-13 m): in

@@ -220,9 +220,24 @@ int WheelsetSimulation::root_callback(const double* y, double* g) {
 }
 
 InitialisationContext WheelsetSimulation::initialisation() {
-  return {equations_, formulation_, branches_,
-          [this](const double* y) -> const ContactResult& { return contact_at(y); },
-          [this](const std::vector<ContactQuery>& batch) { return evaluate(batch); }};
+  InitialisationContext context{equations_, formulation_, branches_,
+                                [this](const double* y) -> const ContactResult& { return contact_at(y); },
+                                [this](const std::vector<ContactQuery>& batch) { return evaluate(batch); },
+                                {}};
+  if (!spec_.irregularity.empty()) {
+    context.contact_later = [this](const double* y, double dt) {
+      place_on_track(t_ + dt);
+      try {
+        ContactResult later = evaluate({equations_.query(formulation_, y, branches_)}).front();
+        place_on_track(t_);
+        return later;
+      } catch (...) {
+        place_on_track(t_);
+        throw;
+      }
+    };
+  }
+  return context;
 }
 
 RunCounters WheelsetSimulation::ida_counters() const {

@@ -184,9 +184,19 @@ void to_configuration_message(const ContactQuery& query, wrc::wheelset_configura
   }
 }
 
+bool shares_query_fields(const ContactQuery& a, const ContactQuery& b) {
+  return a.formulation == b.formulation && a.material.shear_modulus == b.material.shear_modulus &&
+         a.material.poisson_ratio == b.material.poisson_ratio && a.material.friction == b.material.friction &&
+         a.fastsim_elements == b.fastsim_elements && a.fastsim_strips == b.fastsim_strips && a.speed == b.speed;
+}
+
 void to_query_message(const std::vector<ContactQuery>& batch, wrc::contact_query_t& q) {
   if (batch.empty()) throw std::invalid_argument("to_query_message: empty batch");
   const ContactQuery& first = batch.front();
+  for (std::size_t i = 1; i < batch.size(); ++i)
+    if (!shares_query_fields(first, batch[i]))
+      throw std::invalid_argument("to_query_message: query " + std::to_string(i) +
+                                  " differs from the first in formulation, material, grid or speed");
   q.formulation = first.formulation == ContactFormulation::kElastic ? wrc::contact_query_t::ELASTIC
                                                                     : wrc::contact_query_t::RIGID;
   q.shear_modulus = first.material.shear_modulus;

@@ -184,7 +184,9 @@ TEST_F(DynamicsServiceTest, EveryModelRunsACurveOverIrregularTrack) {
               << s["final_state"]["y"].get<double>() * 1e3 << " mm, max Y/Q "
               << std::max(q["y_over_q"]["left"]["max"].get<double>(), q["y_over_q"]["right"]["max"].get<double>())
               << ", restarts " << s["counters"]["restarts"] << ", wall " << s["wall_time"] << " s\n";
-    if (std::string(model) == "spline") EXPECT_EQ(s["counters"]["restarts"].get<long>(), 0);
+    if (std::string(model) == "spline") {
+      EXPECT_EQ(s["counters"]["restarts"].get<long>(), 0);
+    }
   }
 }
 

@@ -82,6 +82,8 @@ std::vector<ContactQuery> distinct_batch(Distinct& d, ContactFormulation formula
     q.tracked_s_wheel = {d.next(1e-3), i == 2 ? std::numeric_limits<double>::quiet_NaN() : d.next(-2e-3)};
     q.second_tracked_s_wheel = {d.next(-0.03), i == 2 ? std::numeric_limits<double>::quiet_NaN() : d.next(0.031)};
     q.second_normal_load = {d.next(1.2e3), i == 2 ? 0.0 : d.next(2.3e3)};
+    for (RailOffset& r : q.rail_offsets)
+      r = {d.next(1.1e-3), d.next(-0.7e-3), d.next(2.1e-3), d.next(0.013), d.next(-0.021), d.next(0.0031)};
   }
   return batch;
 }
@@ -121,6 +123,14 @@ void expect_same_query(const ContactQuery& got, const ContactQuery& want, const 
     expect_same(got.tracked_s_wheel[w], want.tracked_s_wheel[w], at + "tracked_s_wheel" + side);
     expect_same(got.second_tracked_s_wheel[w], want.second_tracked_s_wheel[w], at + "second_tracked_s_wheel" + side);
     expect_same(got.second_normal_load[w], want.second_normal_load[w], at + "second_normal_load" + side);
+    const RailOffset& g = got.rail_offsets[w];
+    const RailOffset& r = want.rail_offsets[w];
+    expect_same(g.lateral, r.lateral, at + "rail_offsets.lateral" + side);
+    expect_same(g.vertical, r.vertical, at + "rail_offsets.vertical" + side);
+    expect_same(g.roll, r.roll, at + "rail_offsets.roll" + side);
+    expect_same(g.lateral_rate, r.lateral_rate, at + "rail_offsets.lateral_rate" + side);
+    expect_same(g.vertical_rate, r.vertical_rate, at + "rail_offsets.vertical_rate" + side);
+    expect_same(g.roll_rate, r.roll_rate, at + "rail_offsets.roll_rate" + side);
   }
 }
 
@@ -194,10 +204,18 @@ TEST(ContactCodecRoundTrip, QueryBatchThereAndBack) {
   }
 }
 
-// A batch is never empty: to_query_message refuses one.
-TEST(ContactCodecRoundTrip, EmptyBatchIsRefused) {
+// A batch is never empty, and its queries share what the message carries once: to_query_message
+// refuses an empty batch and one whose speed differs (a curve's Jacobian column in y; BusContact
+// sends such a batch as one message per run of queries that share them).
+TEST(ContactCodecRoundTrip, EmptyOrMixedBatchIsRefused) {
   wrc::contact_query_t m{};
   EXPECT_THROW(to_query_message({}, m), std::invalid_argument);
+  Distinct d;
+  std::vector<ContactQuery> batch = distinct_batch(d, ContactFormulation::kRigid);
+  EXPECT_TRUE(shares_query_fields(batch[0], batch[2]));
+  batch[2].speed *= 1.0 + 1e-15;
+  EXPECT_FALSE(shares_query_fields(batch[0], batch[2]));
+  EXPECT_THROW(to_query_message(batch, m), std::invalid_argument);
 }
 
 WheelConstraint distinct_constraint(Distinct& d) {
@@ -205,6 +223,7 @@ WheelConstraint distinct_constraint(Distinct& d) {
   w.gap = d.next(-1.3e-5);
   w.gap_gradient = {d.next(0.11), d.next(1.01), d.next(0.75), d.next(-0.012)};
   w.normal_z = d.next(0.97);
+  w.gap_rate = d.next(-2.7e-4);
   w.s_wheel = d.next(2.1e-3);
   w.contact_angle = d.next(0.043);
   w.switch_function = d.next(4.4e-4);
@@ -238,6 +257,7 @@ void expect_same_constraint(const WheelConstraint& got, const WheelConstraint& w
   EXPECT_EQ(got.gap, want.gap) << at << ".gap";
   for (int k = 0; k < 4; ++k) EXPECT_EQ(got.gap_gradient[k], want.gap_gradient[k]) << at << ".gap_gradient[" << k << "]";
   EXPECT_EQ(got.normal_z, want.normal_z) << at << ".normal_z";
+  EXPECT_EQ(got.gap_rate, want.gap_rate) << at << ".gap_rate";
   EXPECT_EQ(got.s_wheel, want.s_wheel) << at << ".s_wheel";
   EXPECT_EQ(got.contact_angle, want.contact_angle) << at << ".contact_angle";
   EXPECT_EQ(got.switch_function, want.switch_function) << at << ".switch_function";

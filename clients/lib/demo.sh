@@ -94,13 +94,14 @@ if [ "$ready" = 1 ]; then
   section "A curve with transitions on irregular track (wrc irregularities, wrc run --track --irregularities)"
   echo "parameters/track-curve-R600.json: 100 m straight, 90 m transition, R = 600 m with 130 mm cant;"
   echo "irregularities generated from the ERRI low-level spectrum (3-70 m, seed 1); 30 m/s (cant"
-  echo "deficiency 99 mm), 8 s = 240 m: into the curve. What engineers read off each run, with limits:"
+  echo "deficiency 99 mm), no lateral load, 8 s = 240 m: into the curve. What engineers read off each"
+  echo "run, with its limits:"
   wrc irregularities --spectrum erri-low --length 300 --wavelengths 3:70 --seed 1 \
     --out "$report_dir/irregularities.csv" 2>&1 | sed 's/^/  /'
   printf '%-10s %9s %9s %10s %11s %10s %9s %9s\n' model y[mm] Y/Q_max Nadal sumY[kN] limit[kN] Tg[N] restarts
   for model in spline onepoint; do
     summary="$report_dir/curve-$model.json"
-    if wrc run --model "$model" --t-end 8 --track parameters/track-curve-R600.json \
+    if wrc run --model "$model" --t-end 8 --lateral-force 0 --track parameters/track-curve-R600.json \
         --irregularities "$report_dir/irregularities.csv" --summary "$summary" \
         --history "$report_dir/curve-$model.csv" --output-period 0.005 2>"$report_dir/curve-$model.log"; then
       jq -r --arg m "$model" '.run_quantities as $q | [$m, .final_state.y * 1e3,

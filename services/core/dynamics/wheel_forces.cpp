@@ -5,9 +5,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/contact/creepage.hpp"
 #include "core/contact/hertz.hpp"
 #include "core/geometry/wheel_side.hpp"
+#include "core/model_interface/patch_builder.hpp"
 
 namespace wrc {
 namespace {
@@ -26,10 +26,10 @@ WheelForces wheel_forces(const ContactResult& contact, int wheel) {
   Eigen::Vector3d normal_sum = Eigen::Vector3d::Zero();
   for (const ContactPatch& patch : contact.patches) {
     if (patch.point.side != side) continue;
-    const ContactFrame frame = contact_frame(patch.point.normal);
-    normal_sum += patch.normal_force * frame.n;
+    const PatchForces forces = patch_forces(patch);
+    normal_sum += forces.normal;
     f.normal_force += patch.normal_force;
-    f.creep_force += patch.forces.fx * frame.t1 + patch.forces.fy * frame.t2;
+    f.creep_force += forces.creep;
     f.creep_force_x += patch.forces.fx;
     f.creep_force_y += patch.forces.fy;
     f.wear_number += std::abs(patch.forces.fx * patch.creepages.longitudinal) +

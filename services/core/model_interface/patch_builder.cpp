@@ -105,16 +105,19 @@ std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const Pat
 
 double normal_penetration(const ContactPoint& point) { return -point.distance * std::cos(point.contact_angle); }
 
-void add_to_resultant(const ContactPatch& patch, const Eigen::Vector3d& centre, ContactResult& result) {
+PatchForces patch_forces(const ContactPatch& patch) {
   const ContactFrame frame = contact_frame(patch.point.normal);
+  return {frame.n, patch.normal_force * frame.n, patch.forces.fx * frame.t1 + patch.forces.fy * frame.t2};
+}
+
+void add_to_resultant(const ContactPatch& patch, const Eigen::Vector3d& centre, ContactResult& result) {
+  const PatchForces f = patch_forces(patch);
   const Eigen::Vector3d lever = patch.point.wheel_point - centre;
-  const Eigen::Vector3d creep = patch.forces.fx * frame.t1 + patch.forces.fy * frame.t2;
-  const Eigen::Vector3d creep_moment = lever.cross(creep) + patch.forces.mz * frame.n;
-  const Eigen::Vector3d normal = patch.normal_force * frame.n;
-  result.creep_force += creep;
+  const Eigen::Vector3d creep_moment = lever.cross(f.creep) + patch.forces.mz * f.n;
+  result.creep_force += f.creep;
   result.creep_moment += creep_moment;
-  result.force += normal + creep;
-  result.moment += lever.cross(normal) + creep_moment;
+  result.force += f.normal + f.creep;
+  result.moment += lever.cross(f.normal) + creep_moment;
 }
 
 }  // namespace wrc

@@ -66,6 +66,14 @@ std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const Pat
 /// first order in the overlap (exact for flat surfaces, error O(delta^2 * curvature)).
 double normal_penetration(const ContactPoint& point);
 
+/// A patch's forces on the wheel in the track frame, in the contact frame of contact_frame(n).
+struct PatchForces {
+  Eigen::Vector3d n{0, 0, 1};         ///< unit contact normal [-]
+  Eigen::Vector3d normal{0, 0, 0};    ///< normal force N n [N]
+  Eigen::Vector3d creep{0, 0, 0};     ///< creep force fx t1 + fy t2 [N]
+};
+PatchForces patch_forces(const ContactPatch& patch);
+
 /// Adds a patch's normal force N n, creep forces fx t1 + fy t2 and spin moment mz n (contact
 /// frame of contact_frame(n)) to the resultant force on the wheelset and to its moment about the
 /// wheelset centre [m]; the lever arm is the wheel point minus the centre. The creep part alone

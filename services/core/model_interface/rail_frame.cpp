@@ -94,6 +94,12 @@ Eigen::Vector4d RailFrame::pose_rate(const WheelsetPose& pose) const {
   return Eigen::Vector4d(centre_rate.y(), centre_rate.z(), roll_change(a, a_rate), yaw_change(a, a_rate));
 }
 
+double RailFrame::track_angle(double angle, WheelSide side) const {
+  // The roll turns the left wheel's normal, (0, -sin a, cos a), to angle a + roll, the right one's
+  // to a - roll.
+  return angle + (side == WheelSide::kLeft ? offset_.roll : -offset_.roll);
+}
+
 WheelsetMotion RailFrame::to_rail(const WheelsetMotion& motion) const {
   WheelsetMotion m;
   m.centre = to_rail_point(motion.centre);
@@ -106,7 +112,7 @@ ContactPoint RailFrame::to_track(ContactPoint point) const {
   point.wheel_point = rotation_ * (point.wheel_point - pivot_) + pivot_ + shift_;
   point.rail_point = rotation_ * (point.rail_point - pivot_) + pivot_ + shift_;
   point.normal = rotation_ * point.normal;
-  point.contact_angle += point.side == WheelSide::kLeft ? offset_.roll : -offset_.roll;
+  point.contact_angle = track_angle(point.contact_angle, point.side);
   return point;
 }
 
@@ -114,7 +120,7 @@ WheelConstraint RailFrame::to_track(WheelConstraint constraint, const WheelsetPo
   const Eigen::Vector4d gradient = constraint.gap_gradient;
   constraint.gap_gradient = pose_jacobian(pose).transpose() * gradient;
   constraint.gap_rate += gradient.dot(pose_rate(pose));
-  constraint.contact_angle += side == WheelSide::kLeft ? offset_.roll : -offset_.roll;
+  constraint.contact_angle = track_angle(constraint.contact_angle, side);
   return constraint;
 }
 

@@ -49,6 +49,8 @@ class RailFrame {
 
  private:
   Eigen::Vector3d to_rail_point(const Eigen::Vector3d& x) const;
+  /// A contact angle of the rail frame in the track frame [rad].
+  double track_angle(double angle, WheelSide side) const;
   RailOffset offset_;
   Eigen::Matrix3d rotation_;  // R
   Eigen::Vector3d pivot_;     // p

@@ -5,11 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "core/numerics/trim.hpp"
+
 namespace wrc {
 namespace profile_text {
 
-/// The string without leading and trailing white space.
-std::string trim(const std::string& text);
+/// The string without leading and trailing white space (core/numerics/trim.hpp).
+using ::wrc::trim;
 
 /// Lower-case copy (ASCII).
 std::string lower(std::string text);

@@ -38,10 +38,10 @@ TrackIrregularity::TrackIrregularity(std::vector<double> distances,
   for (std::size_t i = 0; i < n; ++i) {
     const double s = distances_[i];
     if (!std::isfinite(s))
-      throw std::invalid_argument("irregularities: sample " + std::to_string(i) + ": s = " + number_text(s) +
+      throw IrregularitySampleError(i, "irregularities: sample " + std::to_string(i) + ": s = " + number_text(s) +
                                   " m is not a finite number");
     if (i > 0 && !(s - distances_[i - 1] >= kMinIrregularitySpacing))
-      throw std::invalid_argument("irregularities: sample " + std::to_string(i) + ": s = " + number_text(s) +
+      throw IrregularitySampleError(i, "irregularities: sample " + std::to_string(i) + ": s = " + number_text(s) +
                                   " m does not follow s = " + number_text(distances_[i - 1]) + " m by at least " +
                                   number_text(kMinIrregularitySpacing) + " m");
   }
@@ -53,7 +53,7 @@ TrackIrregularity::TrackIrregularity(std::vector<double> distances,
                                   std::to_string(n) + " distances");
     for (std::size_t i = 0; i < n; ++i)
       if (!(std::fabs(v[i]) <= kMaxIrregularity))
-        throw std::invalid_argument("irregularities: sample " + std::to_string(i) + " (s = " +
+        throw IrregularitySampleError(i, "irregularities: sample " + std::to_string(i) + " (s = " +
                                     number_text(distances_[i]) + " m): " + name + " = " + number_text(v[i]) +
                                     " m is outside [-" + number_text(kMaxIrregularity) + ", " +
                                     number_text(kMaxIrregularity) + "] m");

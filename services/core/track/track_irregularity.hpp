@@ -6,6 +6,8 @@
 /// rails under a travelling wheelset move smoothly (docs/track.md).
 
 #include <array>
+#include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,19 @@ inline constexpr double kMaxIrregularity = 0.03;
 inline constexpr std::size_t kMaxIrregularitySamples = 20000;
 /// Smallest spacing of two samples [m] (a measuring trolley samples every 0.25 m or more).
 inline constexpr double kMinIrregularitySpacing = 1e-3;
+
+/// A sample that breaks a rule of TrackIrregularity; what() names it ("irregularities: sample 12
+/// (s = 3 m): ...").
+class IrregularitySampleError : public std::invalid_argument {
+ public:
+  IrregularitySampleError(std::size_t sample, const std::string& message)
+      : std::invalid_argument(message), sample_(sample) {}
+  /// Index of the sample [-].
+  std::size_t sample() const { return sample_; }
+
+ private:
+  std::size_t sample_;
+};
 
 /// The channels at one distance s, with their slopes along the track. Rails: left at y > 0.
 struct IrregularityPoint {
@@ -60,7 +75,8 @@ class TrackIrregularity {
   /// @param distances s of the samples [m], strictly increasing by at least
   ///        kMinIrregularitySpacing, at least 3 and at most kMaxIrregularitySamples, finite.
   /// @param channels each channel's samples [m], as many as distances, |value| <= kMaxIrregularity.
-  /// @throws std::invalid_argument naming the sample, channel and value that break a rule.
+  /// @throws IrregularitySampleError naming the sample, channel and value that break a rule;
+  ///         std::invalid_argument for a count out of range or channels of another length.
   TrackIrregularity(std::vector<double> distances,
                     std::array<std::vector<double>, kIrregularityChannelCount> channels);
 

@@ -1,9 +1,6 @@
 #include "core/track/track_irregularity_file.hpp"
 
 #include <array>
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -11,17 +8,12 @@
 
 #include "core/numerics/number_text.hpp"
 #include "core/numerics/regular_file.hpp"
+#include "core/numerics/trim.hpp"
 
 namespace wrc {
 namespace {
 
 constexpr int kDistanceColumn = -1;  // the s column; channels are 0..3
-
-std::string trim(const std::string& text) {
-  const std::size_t first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
 
 std::vector<std::string> cells_of(const std::string& line) {
   std::vector<std::string> cells;
@@ -87,16 +79,6 @@ std::vector<Column> header_columns(const std::string& line, const std::string& w
   return columns;
 }
 
-double number_in(const std::string& cell, const std::string& where, const std::string& column) {
-  const char* begin = cell.c_str();
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(begin, &end);
-  if (cell.empty() || end != begin + cell.size() || errno == ERANGE || !std::isfinite(v))
-    throw std::invalid_argument(where + column + ": '" + cell + "' is not a finite number");
-  return v;
-}
-
 }  // namespace
 
 TrackIrregularity parse_track_irregularity(const std::string& csv_text, const std::string& source) {
@@ -124,7 +106,7 @@ TrackIrregularity parse_track_irregularity(const std::string& csv_text, const st
       throw std::invalid_argument(where + "more than " + std::to_string(kMaxIrregularitySamples) + " samples");
     for (std::size_t k = 0; k < cells.size(); ++k) {
       const Column& c = (*columns)[k];
-      const double v = number_in(cells[k], where, c.name);
+      const double v = parse_finite_number(cells[k], where + c.name);
       if (c.what == kDistanceColumn) {
         distances.push_back(v);
       } else {
@@ -136,16 +118,13 @@ TrackIrregularity parse_track_irregularity(const std::string& csv_text, const st
   if (!columns) throw std::invalid_argument(source + ": no header line (s [m],alignment [mm],...)");
   try {
     return TrackIrregularity(std::move(distances), std::move(channels));
+  } catch (const IrregularitySampleError& e) {
+    // Name the line of the sample the library names.
+    if (e.sample() < sample_lines.size())
+      throw std::invalid_argument(source + ":" + std::to_string(sample_lines[e.sample()]) + ": " + e.what());
+    throw std::invalid_argument(source + ": " + e.what());
   } catch (const std::invalid_argument& e) {
-    // Name the line of the sample the library names ("sample 12 ...").
-    const std::string what = e.what();
-    const std::string tag = "irregularities: sample ";
-    if (what.rfind(tag, 0) == 0) {
-      const std::size_t index = std::strtoul(what.c_str() + tag.size(), nullptr, 10);
-      if (index < sample_lines.size())
-        throw std::invalid_argument(source + ":" + std::to_string(sample_lines[index]) + ": " + what);
-    }
-    throw std::invalid_argument(source + ": " + what);
+    throw std::invalid_argument(source + ": " + e.what());
   }
 }
 

@@ -38,8 +38,8 @@ TEST(ProfileSpline, InterpolatesAndIsC2) {
   const CubicSpline s(x, y);
   for (std::size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(s.evaluate(x[i]).value, y[i], 1e-13);
   for (std::size_t i = 1; i + 1 < x.size(); ++i) {
-    const CubicSplineSample l = s.evaluate(x[i] - 1e-12);
-    const CubicSplineSample r = s.evaluate(x[i] + 1e-12);
+    const SplineSample l = s.evaluate(x[i] - 1e-12);
+    const SplineSample r = s.evaluate(x[i] + 1e-12);
     EXPECT_NEAR(l.value, r.value, 1e-10);
     EXPECT_NEAR(l.slope, r.slope, 1e-9);
     EXPECT_NEAR(l.second_derivative, r.second_derivative, 1e-8);

@@ -58,31 +58,11 @@ CubicSpline::CubicSpline(std::vector<double> x, const std::vector<double>& y) : 
     c[2] = 0.5 * m[i];
     c[3] = (m[i + 1] - m[i]) / (6.0 * h);
   }
-  const std::size_t cells = 4 * n;
-  cell_scale_ = static_cast<double>(cells) / (x_[n - 1] - x_[0]);
-  cell_start_.resize(cells + 1);
-  std::size_t interval = 0;
-  for (std::size_t k = 0; k <= cells; ++k) {
-    const double left = x_[0] + static_cast<double>(k) / cell_scale_;
-    while (interval + 2 < n && x_[interval + 1] <= left) ++interval;
-    cell_start_[k] = static_cast<unsigned>(interval);
-  }
+  lookup_ = IntervalLookup(x_);
 }
 
-CubicSplineSample CubicSpline::evaluate(double x) const {
-  // Interval index: last knot <= x, clamped to the first and last interval. The cell table gives
-  // the interval at the cell's left edge; scan forward over the (few) knots inside the cell.
-  const double position = (x - x_[0]) * cell_scale_;
-  std::size_t i = 0;
-  if (position > 0.0) {
-    const std::size_t last_cell = cell_start_.size() - 1;
-    const std::size_t cell = position < static_cast<double>(last_cell)
-                                 ? static_cast<std::size_t>(position)
-                                 : last_cell;
-    i = cell_start_[cell];
-    const std::size_t last_interval = x_.size() - 2;
-    while (i < last_interval && x_[i + 1] <= x) ++i;
-  }
+SplineSample CubicSpline::evaluate(double x) const {
+  const std::size_t i = lookup_.find(x_, x);
   const double* c = &coefficients_[4 * i];
   const double t = x - x_[i];
   return {c[0] + t * (c[1] + t * (c[2] + t * c[3])), c[1] + t * (2.0 * c[2] + t * 3.0 * c[3]),

@@ -43,7 +43,7 @@ SplineProfile::SplineProfile(const ProfilePoints& points, ProfileSide side, std:
       built_in_cant_(built_in_cant) {}
 
 ProfileSample SplineProfile::evaluate(double s) const {
-  const CubicSplineSample sample = spline_.evaluate(s);
+  const SplineSample sample = spline_.evaluate(s);
   return {sample.value, sample.slope, sample.second_derivative};
 }
 double SplineProfile::lower() const { return points_.lateral.front(); }

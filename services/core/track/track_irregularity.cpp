@@ -32,8 +32,9 @@ TrackIrregularity::TrackIrregularity(std::vector<double> distances,
                                      std::array<std::vector<double>, kIrregularityChannelCount> channels)
     : distances_(std::move(distances)), channels_(std::move(channels)) {
   const std::size_t n = distances_.size();
-  if (n < 3 || n > kMaxIrregularitySamples)
-    throw std::invalid_argument("irregularities: " + std::to_string(n) + " samples, must be 3 to " +
+  if (n < kMinIrregularitySamples || n > kMaxIrregularitySamples)
+    throw std::invalid_argument("irregularities: " + std::to_string(n) + " samples, must be " +
+                                std::to_string(kMinIrregularitySamples) + " to " +
                                 std::to_string(kMaxIrregularitySamples));
   for (std::size_t i = 0; i < n; ++i) {
     const double s = distances_[i];
@@ -57,7 +58,7 @@ TrackIrregularity::TrackIrregularity(std::vector<double> distances,
                                     number_text(distances_[i]) + " m): " + name + " = " + number_text(v[i]) +
                                     " m is outside [-" + number_text(kMaxIrregularity) + ", " +
                                     number_text(kMaxIrregularity) + "] m");
-    splines_.emplace_back(distances_, v);
+    splines_.emplace_back(kIrregularitySplineDegree, distances_, v);
   }
 }
 
@@ -69,7 +70,7 @@ IrregularityPoint TrackIrregularity::at(double s) const {
   const double at_s = inside ? s : (s < distances_.front() ? distances_.front() : distances_.back());
   std::array<double, kIrregularityChannelCount> value{};
   for (std::size_t k = 0; k < splines_.size(); ++k) {
-    const CubicSplineSample sample = splines_[k].evaluate(at_s);
+    const SplineSample sample = splines_[k].evaluate(at_s);
     value[k] = sample.value;
     p.slope[k] = inside ? sample.slope : 0.0;
   }

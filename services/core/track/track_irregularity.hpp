@@ -2,8 +2,8 @@
 /// @file
 /// Track irregularities along the distance travelled: the four channels of a track's geometric
 /// quality (EN 13848-1's alignment, longitudinal level, cross-level and gauge), sampled (from a
-/// measured-track file or a generated spectrum) and interpolated by a C2 cubic spline, so that the
-/// rails under a travelling wheelset move smoothly (docs/track.md).
+/// measured-track file or a generated spectrum) and interpolated by the natural spline of degree 7,
+/// so that the rails under a travelling wheelset move smoothly (docs/track.md).
 
 #include <array>
 #include <cstddef>
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/numerics/cubic_spline.hpp"
+#include "core/numerics/natural_spline.hpp"
 
 namespace wrc {
 
@@ -34,6 +34,14 @@ inline constexpr double kMaxIrregularity = 0.03;
 inline constexpr std::size_t kMaxIrregularitySamples = 20000;
 /// Smallest spacing of two samples [m] (a measuring trolley samples every 0.25 m or more).
 inline constexpr double kMinIrregularitySpacing = 1e-3;
+/// Degree of the spline between samples [-]: 7, C6 across the samples. The rails' rates enter the
+/// constraints, so a wheelset's velocities follow the channels' first derivative; IDA's BDF of
+/// order up to 5 estimates its error from the sixth time derivative of the velocities, which a
+/// cubic spline's jumping third derivative (every 8 ms at 0.25 m and 30 m/s) made a train of
+/// spikes: three quarters of the steps of a 1 km run went to them (docs/track.md).
+inline constexpr int kIrregularitySplineDegree = 7;
+/// Fewest samples [-]: what the natural spline of degree 7 needs to be unique.
+inline constexpr std::size_t kMinIrregularitySamples = (kIrregularitySplineDegree + 1) / 2;
 
 /// A sample that breaks a rule of TrackIrregularity; what() names it ("irregularities: sample 12
 /// (s = 3 m): ...").
@@ -65,15 +73,15 @@ struct IrregularityPoint {
   double value(IrregularityChannel channel) const;
 };
 
-/// The irregularities along a track: samples at strictly increasing distances, each channel a C2
-/// cubic spline through its samples. Before the first and after the last sample the channels keep
+/// The irregularities along a track: samples at strictly increasing distances, each channel the
+/// natural spline of degree kIrregularitySplineDegree through its samples. Before the first and after the last sample the channels keep
 /// their end values (slope 0 there: the rails run on parallel to the nominal track).
 class TrackIrregularity {
  public:
   /// No irregularities: every channel 0 everywhere.
   TrackIrregularity() = default;
   /// @param distances s of the samples [m], strictly increasing by at least
-  ///        kMinIrregularitySpacing, at least 3 and at most kMaxIrregularitySamples, finite.
+  ///        kMinIrregularitySpacing, kMinIrregularitySamples to kMaxIrregularitySamples, finite.
   /// @param channels each channel's samples [m], as many as distances, |value| <= kMaxIrregularity.
   /// @throws IrregularitySampleError naming the sample, channel and value that break a rule;
   ///         std::invalid_argument for a count out of range or channels of another length.
@@ -97,7 +105,7 @@ class TrackIrregularity {
  private:
   std::vector<double> distances_;
   std::array<std::vector<double>, kIrregularityChannelCount> channels_;
-  std::vector<CubicSpline> splines_;  // one per channel, when not empty
+  std::vector<NaturalSpline> splines_;  // one per channel, when not empty
 };
 
 }  // namespace wrc

@@ -30,7 +30,7 @@ constexpr int kMaxSpinIterations = 20;
 
 std::string number(double v) {
   std::ostringstream s;
-  s.precision(17);
+  s.precision(10);
   s << v;
   return s.str();
 }
@@ -234,7 +234,7 @@ LinearisedWheelset LinearStability::linearise(double speed) {
   Eigen::MatrixXd velocity_of_state;  // the coordinates' velocities (4 rows) of a state vector
   Eigen::RowVectorXd spin_of_state;
   if (f == ContactFormulation::kElastic) {
-    a = -jyp.diagonal().cwiseInverse().asDiagonal() * jy;
+    a = -(jyp.diagonal().cwiseInverse().asDiagonal() * jy);
     out.state_names = {"y [m]",          "z [m]",         "roll [rad]",       "yaw [rad]",      "y_dot [m/s]",
                        "z_dot [m/s]",    "roll_dot [rad/s]", "yaw_dot [rad/s]", "spin_rate [rad/s]"};
     velocity_of_state = Eigen::MatrixXd::Zero(4, n);

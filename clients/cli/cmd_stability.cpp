@@ -1,0 +1,196 @@
+// wrc stability: linear stability of the wheelset on straight track (core/dynamics/
+// linear_stability.hpp, docs/stability.md), in-process with the chosen contact model: the
+// eigenvalues against speed, the least damped mode per speed, the linear critical speed with its
+// frequency, a CSV of every eigenvalue and the eigenvalue plot (root locus, largest real part
+// against speed), and the classical model (Wickens) built from the same contact for comparison.
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+#include "cli/command.hpp"
+#include "cli/options.hpp"
+#include "cli/output_paths.hpp"
+#include "cli/plot/gnuplot_job.hpp"
+#include "cli/plot/plot_options.hpp"
+#include "cli/profile_options.hpp"
+#include "core/dynamics/linear_stability.hpp"
+#include "core/dynamics/run_parameter_table.hpp"
+#include "core/dynamics/run_parameters_file.hpp"
+#include "core/dynamics/wickens_from_model.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "core/spline/spline_geometry_fit.hpp"
+#include "options/parameter_options.hpp"
+
+namespace wrc::cli {
+namespace {
+
+// --speeds FROM:TO:STEP [m/s] through the library's checks (each bad value named).
+std::vector<double> parse_speeds(const std::string& text) {
+  std::vector<double> parts;
+  std::stringstream list(text);
+  std::string item;
+  while (std::getline(list, item, ':')) parts.push_back(parse_finite(item, "--speeds"));
+  if (parts.size() != 3) throw UsageError("--speeds: '" + text + "' is not FROM:TO:STEP (m/s, e.g. 5:80:1)");
+  try {
+    return stability_speeds(parts[0], parts[1], parts[2]);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--speeds: ") + e.what());
+  }
+}
+
+std::shared_ptr<const ContactModel> build_model(const std::string& name, std::shared_ptr<const WheelsetGeometry> geometry) {
+  ContactModelData data;
+  if (contact_model_entry(name).needs_data) {
+    std::cerr << "fitting the spline model (in-process, as wrc run --in-process does) ...\n";
+    data.splines = fit_spline_geometry(*geometry, {}, {}).model;
+  }
+  return make_contact_model(name, std::move(geometry), {}, data);
+}
+
+void write_csv(const std::string& path, const std::vector<LinearisedWheelset>& scan) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path);
+  out.precision(10);
+  out << "speed [m/s],real [1/s],imag [rad/s],frequency [Hz],damping_ratio [-],kind [-],least_damped [-]\n";
+  for (const LinearisedWheelset& l : scan) {
+    for (size_t i = 0; i < l.modes.size(); ++i) {
+      const StabilityMode& m = l.modes[i];
+      out << l.speed << "," << m.eigenvalue.real() << "," << m.eigenvalue.imag() << "," << m.frequency() << ","
+          << m.damping_ratio() << "," << mode_kind_name(m.kind) << "," << (i == 0 ? 1 : 0) << "\n";
+    }
+  }
+}
+
+void draw(const std::string& path, const std::vector<LinearisedWheelset>& scan, const CriticalSpeed& critical,
+          const std::string& title) {
+  const plot::ImageRequest image = plot::image_request(path, 1400, 700);
+  plot::GnuplotJob job;
+  {
+    auto locus = job.open_data("locus.dat");
+    auto largest = job.open_data("largest.dat");
+    locus << "# real[1/s] frequency[Hz] speed[m/s]\n";
+    largest << "# speed[m/s] largest_real[1/s]\n";
+    for (const LinearisedWheelset& l : scan) {
+      // The spin mode's real eigenvalue lies far to the left (hundreds of 1/s): the locus shows
+      // the lateral (and vertical) modes, the CSV has every eigenvalue.
+      for (const StabilityMode& m : l.modes)
+        if (m.kind != ModeKind::kSpin) locus << m.eigenvalue.real() << " " << m.eigenvalue.imag() / (2 * M_PI) << " " << l.speed << "\n";
+      largest << l.speed << " " << l.least_damped().eigenvalue.real() << "\n";
+    }
+  }
+  std::string script = "set multiplot layout 1,2 title " + plot::quoted(title) + "\n";
+  script += "set grid\nset xlabel 'real part [1/s]'\nset ylabel 'imaginary part / 2 pi [Hz]'\n"
+            "set cblabel 'speed [m/s]'\nset palette rgb 33,13,10\nset xzeroaxis\nset arrow from 0, graph 0 to 0, graph 1 nohead dt 2\n"
+            "set title 'eigenvalues (root locus, spin mode left out)'\n";
+  script += "plot " + plot::quoted(job.data_path("locus.dat")) + " using 1:2:3 with points pt 7 ps 0.5 palette notitle\n";
+  script += "unset arrow\nset xlabel 'speed [m/s]'\nset ylabel 'largest real part [1/s]'\nunset cblabel\n"
+            "set title 'least damped mode'\nset yzeroaxis\n";
+  if (critical.found)
+    script += plot::format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 2 lc rgb 'red'\n"
+                           "set label %s at %.9g, graph 0.92 left offset 1,0\n",
+                           critical.speed, critical.speed,
+                           plot::quoted(plot::format("V_c = %.2f m/s, %.2f Hz", critical.speed, critical.frequency)).c_str(),
+                           critical.speed);
+  script += "plot " + plot::quoted(job.data_path("largest.dat")) + " using 1:2 with linespoints pt 7 ps 0.5 lw 1.5 notitle\n";
+  script += "unset multiplot\n";
+  job.render(script, image);
+}
+
+int run_stability(const std::vector<std::string>& args) {
+  std::vector<OptionSpec> specs{
+      {"--model", true, "contact model: onepoint, interp, multipoint or spline", ""},
+      {"--speeds", true, "speeds FROM:TO:STEP [m/s]", "5:80:1"},
+      {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
+      {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
+      {"--out", true, "every eigenvalue at every speed (CSV, units in the header)", "stability.csv"},
+      {"--plot", true, "the eigenvalue plot (.png or .svg)", "stability.png"},
+  };
+  for (auto& spec : parameter_option_specs(wheelset_parameter_table(), WheelsetParameters{})) specs.push_back(spec);
+  for (auto& spec : profile_option_specs()) specs.push_back(spec);
+  const Options o("stability", "--model M [--speeds 5:80:1] [--out FILE.csv] [--plot FILE.png] [options]", specs, args);
+  if (o.help_requested()) {
+    std::cout << o.help()
+              << "\nLinearises the wheelset's equations (those wrc run integrates, with contact model M, in-process)\n"
+                 "about the centred steady state on straight track at each speed, prints the least damped\n"
+                 "eigenvalue per speed and the linear critical speed (largest real part crossing 0) with its\n"
+                 "frequency, and the classical model (Wickens) built from the same contact. The lateral load is\n"
+                 "set to 0: a centred steady state has none (an explicit non-zero --lateral-force is refused).\n"
+                 "docs/stability.md.\n";
+    return 0;
+  }
+  const std::string model = o.choice("--model", contact_model_names());
+  if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
+  RunSpec spec;
+  if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
+  if (o.has("--suspension"))
+    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none" ? PrimarySuspension::none()
+                                                                                         : PrimarySuspension::benchmark();
+  const double file_lateral_force = spec.wheelset.lateral_force;
+  apply_parameter_options(wheelset_parameter_table(), o, spec.wheelset);
+  if (!o.has("--lateral-force") && spec.wheelset.lateral_force != 0.0) {
+    std::cout << "lateral load: " << file_lateral_force
+              << " N of the parameters set to 0 (a centred steady state has no lateral load)\n";
+    spec.wheelset.lateral_force = 0.0;
+  }
+  const std::vector<double> speeds = parse_speeds(o.text("--speeds", "5:80:1"));
+  const std::string csv = o.text("--out", "stability.csv");
+  const std::string picture = o.text("--plot", "stability.png");
+  check_output_path(csv, "--out");
+  plot::image_request(picture, 1400, 700);  // checks the extension and the path before the work
+
+  const GeometrySpec geometry_spec = geometry_spec_from_options(o);
+  const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(geometry_spec));
+  const double r0 = geometry_spec.track.nominal_radius;
+  LinearStability stability(spec.wheelset, std::make_shared<InProcessContact>(build_model(model, geometry)), r0);
+
+  std::printf("linear stability, %s contact (%s formulation), %s\n", model.c_str(),
+              stability.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic",
+              plot::geometry_title(geometry_spec).c_str());
+  std::printf("%10s %14s %12s %12s  %s\n", "V [m/s]", "real [1/s]", "freq [Hz]", "damping [-]", "mode");
+  std::vector<LinearisedWheelset> scan;
+  for (double v : speeds) {
+    scan.push_back(stability.linearise(v));
+    const StabilityMode& m = scan.back().least_damped();
+    std::printf("%10.4g %14.6g %12.5g %12.5g  %s\n", v, m.eigenvalue.real(), m.frequency(), m.damping_ratio(),
+                mode_kind_name(m.kind));
+  }
+  const CriticalSpeed critical = stability.critical_speed(scan);
+  if (critical.found)
+    std::printf("linear critical speed: %.4f m/s (%.1f km/h), frequency %.4f Hz (%s mode)\n", critical.speed,
+                critical.speed * 3.6, critical.frequency, mode_kind_name(critical.kind));
+  else
+    std::printf("linear critical speed: none in %g..%g m/s (largest real part %s 0 throughout)\n", speeds.front(),
+                speeds.back(), scan.front().least_damped().eigenvalue.real() < 0 ? "below" : "at or above");
+
+  // The classical model from the same contact (its centred patch, conicity, gravitational stiffness).
+  const WickensFromModel w = wickens_from_model(*geometry, spec.wheelset, scan.front().steady);
+  std::printf("classical model (Wickens; docs/stability.md) from this contact: lambda = %.5g, r0 = %.5g m, b0 = %.5g m,\n"
+              "  a = %.4g mm, b = %.4g mm, f11 = %.5g MN, f22 = %.5g MN per wheel, k_y = %.5g MN/m (gravitational %.5g),\n"
+              "  k_psi = %.5g MN m/rad (gravitational %.5g)\n",
+              w.model.conicity, w.model.rolling_radius, w.model.contact_half_distance, w.semi_axis_a * 1e3,
+              w.semi_axis_b * 1e3, w.model.f11 * 1e-6, w.model.f22 * 1e-6, w.model.lateral_stiffness * 1e-6,
+              w.gravitational_stiffness * 1e-6, w.model.yaw_stiffness * 1e-6, w.gravitational_yaw_stiffness * 1e-6);
+  if (const auto c = w.model.critical_point())
+    std::printf("  its critical speed without dampers: %.4f m/s, %.4f Hz%s\n", c->speed, c->frequency(),
+                w.model.lateral_damping > 0 || w.model.yaw_damping > 0 ? " (this wheelset has dampers)" : "");
+  else
+    std::printf("  its critical speed without dampers: none\n");
+
+  write_csv(csv, scan);
+  std::cout << "wrote " << csv << "\n";
+  draw(picture, scan, critical,
+       "wrc stability: " + model + " contact, " + plot::geometry_title(geometry_spec));
+  std::cout << "wrote " << picture << "\n";
+  return 0;
+}
+
+const CommandRegistrar registrar{{"stability",
+                                  "linear stability on straight track: eigenvalues against speed, critical speed, plot",
+                                  run_stability}};
+
+}  // namespace
+}  // namespace wrc::cli

@@ -17,9 +17,9 @@ BusContact::BusContact(bus::RequestClient<contact_query_t, contact_reply_t>& cli
       settings_(std::move(settings)) {}
 
 std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>& batch) {
-  // A message carries formulation, material, grid and speed once: a batch whose queries differ in
-  // them (on a curve the Jacobian's column in y has the forward speed V (1 - kappa y) of its own)
-  // goes as one message per run of queries that share them.
+  // A message carries formulation, material and grid once (each configuration its own speed, which
+  // on a curve depends on y): a batch whose queries differ in them goes as one message per run of
+  // queries that share them.
   std::vector<ContactResult> out;
   out.reserve(batch.size());
   for (std::size_t begin = 0; begin < batch.size();) {

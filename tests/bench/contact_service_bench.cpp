@@ -80,13 +80,13 @@ wrc::contact_query_t bench_query() {
   q.friction = 0.3;
   q.fastsim_elements = 20;
   q.fastsim_strips = 20;
-  q.speed = 30.0;
   wrc::wheelset_configuration_t c{};
   c.y = 0.002;
   c.z = 0.46;
   c.yaw = 0.0005;
   c.y_dot = 0.01;
   c.spin_rate = 30.0 / 0.46;
+  c.speed = 30.0;
   c.normal_load_left = 154715.0 / 2.0;
   c.normal_load_right = 154715.0 / 2.0;
   q.num_configurations = 1;
@@ -102,7 +102,7 @@ wrc::ContactQuery library_query(const wrc::contact_query_t& q) {
   out.pose.yaw = c.yaw;
   out.y_dot = c.y_dot;
   out.spin_rate = c.spin_rate;
-  out.speed = q.speed;
+  out.speed = c.speed;
   out.normal_load = {c.normal_load_left, c.normal_load_right};
   out.fastsim_elements = q.fastsim_elements;
   out.fastsim_strips = q.fastsim_strips;

@@ -31,6 +31,10 @@ const std::vector<RunCounter>& run_counter_table() {
       counter("root_evals", "-", "evaluations of the event functions", &C::root_evals),
       counter("root_returns", "-", "returns at an event (contact-point switch, flange contact)", &C::root_returns),
       counter("restarts", "-", "re-initialisations after an event or a model swap", &C::restarts),
+      counter("convergence_restarts", "-",
+              "of those, after the corrector failed at every step size (a wheel in two-point contact keeps its "
+              "more loaded point)",
+              &C::convergence_restarts),
       counter("contact_switches", "-", "contact-point switches located as events (both wheels)", &C::contact_switches),
       counter("missed_switches", "-", "of those, found by the branch check at an accepted step, not by root finding",
               &C::missed_switches),

@@ -17,6 +17,7 @@ struct RunCounters {
   long root_evals = 0;         ///< evaluations of the event functions [-]
   long root_returns = 0;       ///< returns at an event (contact-point switch, flange contact) [-]
   long restarts = 0;           ///< re-initialisations after an event or a model swap [-]
+  long convergence_restarts = 0;  ///< of those, after the corrector failed at every step size (rigid) [-]
   long contact_switches = 0;   ///< contact-point switches located as events (both wheels) [-]
   long missed_switches = 0;    ///< of those, found by the branch check at an accepted step, not by root finding [-]
   long two_point_entries = 0;  ///< switches into rigid two-point contact (sliding on a switching surface) [-]

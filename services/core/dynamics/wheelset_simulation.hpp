@@ -143,6 +143,9 @@ class WheelsetSimulation {
   /// Projects y onto the constraints, switches every wheel whose followed point is not the lowest
   /// (at most kMaxSwitchesPerEvent times) and restarts the integrator there.
   void restart_on_right_branches(std::vector<double>& y);
+  /// After IDA's corrector failed at every step size (rigid formulation): a wheel in two-point
+  /// contact keeps its more loaded point, and the run restarts on the right branches there.
+  void restart_after_convergence_failure();
   /// The contact of each wheel at the state y (one contact evaluation, usually cached); forces, when
   /// given, receives each wheel's patch sums.
   std::array<WheelOutput, 2> wheel_outputs(const std::vector<double>& y, std::array<WheelForces, 2>* forces = nullptr);
@@ -189,6 +192,7 @@ class WheelsetSimulation {
   std::vector<SwapRecord> swaps_;
   std::vector<SwitchRecord> switch_log_;
   RunExtremes extremes_;
+  int convergence_restarts_in_a_row_ = 0;  // without a step in between
 };
 
 }  // namespace wrc

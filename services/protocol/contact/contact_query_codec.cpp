@@ -14,7 +14,7 @@ namespace wrc::protocol {
 namespace {
 
 // The message field of a library query field: its name, and whether it belongs to the whole
-// query (material, speed, grid) rather than to each configuration.
+// query (material, grid) rather than to each configuration.
 struct MessageField {
   const char* name;
   bool per_configuration;
@@ -32,7 +32,7 @@ MessageField message_field(QueryField field) {
     case QueryField::kRollDot: return {"roll_dot", true};
     case QueryField::kYawDot: return {"yaw_dot", true};
     case QueryField::kSpinRate: return {"spin_rate", true};
-    case QueryField::kSpeed: return {"speed", false};
+    case QueryField::kSpeed: return {"speed", true};
     case QueryField::kNormalLoadLeft: return {"normal_load_left", true};
     case QueryField::kNormalLoadRight: return {"normal_load_right", true};
     case QueryField::kSecondNormalLoadLeft: return {"second_normal_load_left", true};
@@ -131,7 +131,7 @@ ContactQuery to_contact_query(const wrc::contact_query_t& q, int index) {
   out.roll_dot = c.roll_dot;
   out.yaw_dot = c.yaw_dot;
   out.spin_rate = c.spin_rate;
-  out.speed = q.speed;
+  out.speed = c.speed;
   out.normal_load = {c.normal_load_left, c.normal_load_right};
   out.formulation = q.formulation == wrc::contact_query_t::ELASTIC ? ContactFormulation::kElastic
                                                                    : ContactFormulation::kRigid;
@@ -165,6 +165,7 @@ void to_configuration_message(const ContactQuery& query, wrc::wheelset_configura
   c.roll_dot = query.roll_dot;
   c.yaw_dot = query.yaw_dot;
   c.spin_rate = query.spin_rate;
+  c.speed = query.speed;
   c.normal_load_left = query.normal_load[0];
   c.normal_load_right = query.normal_load[1];
   c.tracked_s_wheel_left = query.tracked_s_wheel[0];
@@ -187,7 +188,7 @@ void to_configuration_message(const ContactQuery& query, wrc::wheelset_configura
 bool shares_query_fields(const ContactQuery& a, const ContactQuery& b) {
   return a.formulation == b.formulation && a.material.shear_modulus == b.material.shear_modulus &&
          a.material.poisson_ratio == b.material.poisson_ratio && a.material.friction == b.material.friction &&
-         a.fastsim_elements == b.fastsim_elements && a.fastsim_strips == b.fastsim_strips && a.speed == b.speed;
+         a.fastsim_elements == b.fastsim_elements && a.fastsim_strips == b.fastsim_strips;
 }
 
 void to_query_message(const std::vector<ContactQuery>& batch, wrc::contact_query_t& q) {
@@ -196,7 +197,7 @@ void to_query_message(const std::vector<ContactQuery>& batch, wrc::contact_query
   for (std::size_t i = 1; i < batch.size(); ++i)
     if (!shares_query_fields(first, batch[i]))
       throw std::invalid_argument("to_query_message: query " + std::to_string(i) +
-                                  " differs from the first in formulation, material, grid or speed");
+                                  " differs from the first in formulation, material or grid");
   q.formulation = first.formulation == ContactFormulation::kElastic ? wrc::contact_query_t::ELASTIC
                                                                     : wrc::contact_query_t::RIGID;
   q.shear_modulus = first.material.shear_modulus;
@@ -204,7 +205,6 @@ void to_query_message(const std::vector<ContactQuery>& batch, wrc::contact_query
   q.friction = first.material.friction;
   q.fastsim_elements = static_cast<std::int16_t>(first.fastsim_elements);
   q.fastsim_strips = static_cast<std::int16_t>(first.fastsim_strips);
-  q.speed = first.speed;
   q.num_configurations = static_cast<std::int32_t>(batch.size());
   q.configurations.assign(batch.size(), wrc::wheelset_configuration_t{});
   for (std::size_t i = 0; i < batch.size(); ++i) to_configuration_message(batch[i], q.configurations[i]);

@@ -40,10 +40,10 @@ ContactResult from_result_message(const wrc::contact_result_t& message);
 void to_configuration_message(const ContactQuery& query, wrc::wheelset_configuration_t& configuration);
 
 /// Whether two library queries share what a bus query carries once for all its configurations:
-/// formulation, material, FASTSIM grid and speed (bit for bit).
+/// formulation, material and FASTSIM grid (bit for bit).
 bool shares_query_fields(const ContactQuery& a, const ContactQuery& b);
 
-/// A bus query for a batch of library queries that share formulation, material, grid and speed
+/// A bus query for a batch of library queries that share formulation, material and grid
 /// (shares_query_fields): every field but header, request id, client, channel, model, instance
 /// and geometry key. @throws std::invalid_argument for an empty batch or one whose queries do not
 /// share those fields (naming the first that differs).

@@ -67,6 +67,7 @@ const std::vector<MessageField<integrator_stats_t>>& stats_fields() {
       WRC_MESSAGE_FIELD(M, root_evals),
       WRC_MESSAGE_FIELD(M, root_returns),
       WRC_MESSAGE_FIELD(M, restarts),
+      WRC_MESSAGE_FIELD(M, convergence_restarts),
       WRC_MESSAGE_FIELD(M, contact_switches),
       WRC_MESSAGE_FIELD(M, missed_switches),
       WRC_MESSAGE_FIELD(M, two_point_entries),

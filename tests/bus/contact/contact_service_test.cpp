@@ -67,7 +67,6 @@ wrc::contact_query_t make_query(const std::string& model, const std::vector<Cont
   q.friction = first.material.friction;
   q.fastsim_elements = first.fastsim_elements;
   q.fastsim_strips = first.fastsim_strips;
-  q.speed = first.speed;
   q.num_configurations = static_cast<std::int32_t>(batch.size());
   for (const ContactQuery& l : batch) {
     wrc::wheelset_configuration_t c{};
@@ -80,6 +79,7 @@ wrc::contact_query_t make_query(const std::string& model, const std::vector<Cont
     c.roll_dot = l.roll_dot;
     c.yaw_dot = l.yaw_dot;
     c.spin_rate = l.spin_rate;
+    c.speed = l.speed;
     c.normal_load_left = l.normal_load[0];
     c.normal_load_right = l.normal_load[1];
     q.configurations.push_back(c);
@@ -276,7 +276,7 @@ TEST_F(ContactServiceTest, InvalidQueriesGetBadRequestNamingTheField) {
       {[&](auto& q) { q.configurations[1].spin_rate = nan; }, "configurations[1].spin_rate = nan"},
       {[&](auto& q) { q.configurations[0].yaw = 0.9; }, "configurations[0].yaw = 0.9 is outside"},
       {[&](auto& q) { q.configurations[1].normal_load_left = -5.0; }, "configurations[1].normal_load_left = -5"},
-      {[&](auto& q) { q.speed = 0.0; }, "speed = 0 is not positive"},
+      {[&](auto& q) { q.configurations[1].speed = 0.0; }, "configurations[1].speed = 0 is not positive"},
       {[&](auto& q) { q.poisson_ratio = nan; }, "poisson_ratio = nan"},
       {[&](auto& q) { q.fastsim_elements = 0; }, "fastsim_elements = 0"},
       {[&](auto& q) { q.formulation = 7; }, "formulation = 7 is neither RIGID (0) nor ELASTIC (1)"},

@@ -387,7 +387,6 @@ std::vector<Target> EveryChannelCampaign::targets(const std::string& dynamics_re
                           .number(WRC_FIELD(wrc::contact_query_t, shear_modulus))
                           .number(WRC_FIELD(wrc::contact_query_t, poisson_ratio))
                           .number(WRC_FIELD(wrc::contact_query_t, friction))
-                          .number(WRC_FIELD(wrc::contact_query_t, speed))
                           .count([](wrc::contact_query_t& m) {
                             ++m.num_configurations;
                             m.configurations.push_back(m.configurations[0]);
@@ -395,6 +394,7 @@ std::vector<Target> EveryChannelCampaign::targets(const std::string& dynamics_re
                           .number(WRC_FIELD(wrc::contact_query_t, configurations[0].y))
                           .number(WRC_FIELD(wrc::contact_query_t, configurations[0].yaw))
                           .number(WRC_FIELD(wrc::contact_query_t, configurations[0].spin_rate))
+                          .number(WRC_FIELD(wrc::contact_query_t, configurations[0].speed))
                           .number(WRC_FIELD(wrc::contact_query_t, configurations[0].normal_load_left))
                           .build());
   }

@@ -53,12 +53,12 @@ inline wrc::contact_query_t sample_query(int configurations) {
   q.friction = 0.3;
   q.fastsim_elements = 10;
   q.fastsim_strips = 10;
-  q.speed = 30.0;
   q.num_configurations = configurations;
   q.configurations.resize(static_cast<std::size_t>(configurations));
   for (auto& c : q.configurations) {
     c.z = 0.0;
     c.spin_rate = 65.0;
+    c.speed = 30.0;
     c.normal_load_left = c.normal_load_right = 1e5;
   }
   return q;

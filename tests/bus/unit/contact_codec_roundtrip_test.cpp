@@ -56,12 +56,12 @@ Message through_lcm(const Message& m) {
   return out;
 }
 
-// Three configurations of one batch: shared formulation, material, grid and speed; every
+// Three configurations of one batch: shared formulation, material and grid; every
 // per-configuration field distinct. Configuration 2 follows no branch on the right wheel and has
 // no second point (NaN, the "none" value).
 std::vector<ContactQuery> distinct_batch(Distinct& d, ContactFormulation formulation) {
   std::vector<ContactQuery> batch(3);
-  const double speed = d.next(27.0), g = d.next(7.9e10), nu = d.next(0.26), mu = d.next(0.31);
+  const double g = d.next(7.9e10), nu = d.next(0.26), mu = d.next(0.31);
   for (size_t i = 0; i < batch.size(); ++i) {
     ContactQuery& q = batch[i];
     q.pose.y = d.next(1e-3);
@@ -73,7 +73,7 @@ std::vector<ContactQuery> distinct_batch(Distinct& d, ContactFormulation formula
     q.roll_dot = d.next(0.004);
     q.yaw_dot = d.next(-0.005);
     q.spin_rate = d.next(-65.0);
-    q.speed = speed;
+    q.speed = d.next(27.0);  // per configuration (a curve's forward speed depends on y)
     q.normal_load = {d.next(7.1e4), d.next(6.9e4)};
     q.formulation = formulation;
     q.material = {g, nu, mu};
@@ -193,7 +193,7 @@ TEST(ContactCodecRoundTrip, QueryBatchThereAndBack) {
     EXPECT_EQ(m.friction, batch[0].material.friction);
     EXPECT_EQ(m.fastsim_elements, 23);
     EXPECT_EQ(m.fastsim_strips, 17);
-    EXPECT_EQ(m.speed, batch[0].speed);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(m.configurations[static_cast<size_t>(i)].speed, batch[static_cast<size_t>(i)].speed);
     ASSERT_EQ(m.num_configurations, 3);
     ASSERT_EQ(m.configurations.size(), 3u);
     EXPECT_EQ(m.configurations[1].y, batch[1].pose.y);  // in order
@@ -205,15 +205,16 @@ TEST(ContactCodecRoundTrip, QueryBatchThereAndBack) {
 }
 
 // A batch is never empty, and its queries share what the message carries once: to_query_message
-// refuses an empty batch and one whose speed differs (a curve's Jacobian column in y; BusContact
-// sends such a batch as one message per run of queries that share them).
+// refuses an empty batch and one whose friction differs (BusContact sends such a batch as one
+// message per run of queries that share them); speeds may differ (each configuration has its own).
 TEST(ContactCodecRoundTrip, EmptyOrMixedBatchIsRefused) {
   wrc::contact_query_t m{};
   EXPECT_THROW(to_query_message({}, m), std::invalid_argument);
   Distinct d;
   std::vector<ContactQuery> batch = distinct_batch(d, ContactFormulation::kRigid);
   EXPECT_TRUE(shares_query_fields(batch[0], batch[2]));
-  batch[2].speed *= 1.0 + 1e-15;
+  EXPECT_NE(batch[0].speed, batch[2].speed);
+  batch[2].material.friction *= 1.0 + 1e-15;
   EXPECT_FALSE(shares_query_fields(batch[0], batch[2]));
   EXPECT_THROW(to_query_message(batch, m), std::invalid_argument);
 }

@@ -38,7 +38,6 @@ wrc::contact_query_t distinct_query() {
   q.friction = 0.33;
   q.fastsim_elements = 23;
   q.fastsim_strips = 17;
-  q.speed = 31.5;
   q.num_configurations = 2;
   for (int i = 0; i < 2; ++i) {
     wrc::wheelset_configuration_t c{};
@@ -52,6 +51,7 @@ wrc::contact_query_t distinct_query() {
     c.roll_dot = 0.023 * k;
     c.yaw_dot = -0.029 * k;
     c.spin_rate = 68.3 * k;
+    c.speed = 31.5 * k;
     c.normal_load_left = 71000.0 * k;
     c.normal_load_right = 69000.0 * k;
     q.configurations.push_back(c);
@@ -76,7 +76,7 @@ TEST(QueryAdapter, EveryMessageFieldLandsInItsLibraryField) {
     EXPECT_EQ(l.spin_rate, 68.3 * k);
     EXPECT_EQ(l.normal_load[0], 71000.0 * k);
     EXPECT_EQ(l.normal_load[1], 69000.0 * k);
-    EXPECT_EQ(l.speed, 31.5);
+    EXPECT_EQ(l.speed, 31.5 * k);
     EXPECT_EQ(l.formulation, ContactFormulation::kElastic);
     EXPECT_EQ(l.material.shear_modulus, 8.1e10);
     EXPECT_EQ(l.material.poisson_ratio, 0.27);
@@ -168,8 +168,8 @@ TEST(QueryAdapter, EachInvalidFieldIsNamed) {
       {[](auto& q) { q.poisson_ratio = 0.0; }, "poisson_ratio = 0 is outside (0, 0.5) [-]"},
       {[&](auto& q) { q.poisson_ratio = nan; }, "poisson_ratio = nan is not a finite number"},
       {[](auto& q) { q.friction = -0.1; }, "friction = -0.1 is outside [0, 10] [-]"},
-      {[](auto& q) { q.speed = 0.0; }, "speed = 0 is not positive"},
-      {[](auto& q) { q.speed = 1500.0; }, "speed = 1500 is outside (0, 1000] m/s"},
+      {[](auto& q) { q.configurations[0].speed = 0.0; }, "configurations[0].speed = 0 is not positive"},
+      {[](auto& q) { q.configurations[1].speed = 1500.0; }, "configurations[1].speed = 1500 is outside (0, 1000] m/s"},
       {[](auto& q) { q.fastsim_elements = 1; }, "fastsim_elements = 1 is outside [2, 400]"},
       {[](auto& q) { q.fastsim_strips = 401; }, "fastsim_strips = 401 is outside [2, 400]"},
       {[](auto& q) { q.num_configurations = 0; }, "num_configurations = 0 is outside [1, 32]"},
@@ -213,8 +213,8 @@ bool library_accepts(const wrc::contact_query_t& q, int index) {
   }
 }
 
-// The adapter and the library (validate_contact_query) accept and reject the same material,
-// speed and grid values: both take their bounds from core/model_interface/query_validation.hpp.
+// The adapter and the library (validate_contact_query) accept and reject the same material and
+// grid values: both take their bounds from core/model_interface/query_validation.hpp.
 TEST(QueryAdapter, AcceptsWhatTheLibraryAccepts) {
   struct Probe {
     const char* what;
@@ -225,7 +225,6 @@ TEST(QueryAdapter, AcceptsWhatTheLibraryAccepts) {
       {"poisson_ratio", [](auto& q, double v) { q.poisson_ratio = v; }, {-0.01, 0.0, 1e-9, 0.25, 0.5 - 1e-12, 0.5}},
       {"shear_modulus", [](auto& q, double v) { q.shear_modulus = v; }, {-1.0, 0.0, 1.0, 8.2e10, 1e13, 1.0001e13}},
       {"friction", [](auto& q, double v) { q.friction = v; }, {-1e-9, 0.0, 0.3, 10.0, 10.0 + 1e-9, 20.0}},
-      {"speed", [](auto& q, double v) { q.speed = v; }, {-1.0, 0.0, 1e-6, 30.0, 1000.0, 1000.001}},
       {"fastsim_elements", [](auto& q, double v) { q.fastsim_elements = static_cast<std::int32_t>(v); }, {0, 1, 2, 20, 400, 401}},
       {"fastsim_strips", [](auto& q, double v) { q.fastsim_strips = static_cast<std::int32_t>(v); }, {0, 1, 2, 20, 400, 401}},
   };
@@ -258,6 +257,7 @@ TEST(QueryAdapter, AcceptsTheConfigurationsTheLibraryAccepts) {
       {"y_dot", &Config::y_dot, {nan, -100.0001, -100.0, 0.0, 100.0, 100.0001, inf}},
       {"roll_dot", &Config::roll_dot, {nan, -100.0001, -100.0, 0.0, 100.0, 100.0001, inf}},
       {"spin_rate", &Config::spin_rate, {nan, -10000.01, -1e4, 65.0, 1e4, 10000.01, inf}},
+      {"speed", &Config::speed, {nan, -1.0, 0.0, 1e-6, 30.0, 1000.0, 1000.001}},
       {"normal_load_left", &Config::normal_load_left, {nan, -1e-9, 0.0, 8e4, 1e8, 1.0000001e8, inf}},
       {"second_normal_load_right", &Config::second_normal_load_right, {nan, -1e-9, 0.0, 8e4, 1e8, 1.0000001e8, inf}},
       {"tracked_s_wheel_right", &Config::tracked_s_wheel_right, {nan, -1.0000001, -1.0, -0.02, 1.0, 1.0000001, -inf}},

@@ -29,11 +29,11 @@ wrc::contact_query_t rigid_query() {
   q.friction = 0.3;
   q.fastsim_elements = 20;
   q.fastsim_strips = 20;
-  q.speed = 30.0;
   q.num_configurations = 1;
   wrc::wheelset_configuration_t c{};
   c.z = 0.46;
   c.spin_rate = 30.0 / 0.46;
+  c.speed = 30.0;
   c.normal_load_left = 71000.0;
   c.normal_load_right = 69000.0;
   c.tracked_s_wheel_left = 0.0031;

@@ -5,8 +5,10 @@
 # The test starts its own cluster on loopback and stops exactly what it started (by pid): Debian's
 # munged with a key and socket of its own, slurmctld and slurmd in the foreground (-D) with a
 # slurm.conf for one node (this host, at 127.0.0.1, as many CPUs as it has), spool and state in a
-# temporary directory, SlurmUser root, proctrack/linuxproc, no cgroups, no accounting. ctest runs it
-# in a private network namespace (clients/lib/netns.sh): the daemons' ports exist only there.
+# temporary directory, SlurmUser root, proctrack/linuxproc, no cgroups, no accounting, both daemons
+# bound to 127.0.0.1 (CommunicationParameters=NoInAddrAny), on ports that were free. Not in a private
+# network namespace: with loopback alone there, getaddrinfo's AI_ADDRCONFIG finds no address and
+# Slurm 22.05 cannot open its ports.
 # Skips (exit 77) when slurm-wlm or munge are not installed or when not root (slurmd must be).
 set -euo pipefail
 cli=${1:?usage: slurm_sweep_test.sh WRC_CLI}
@@ -54,7 +56,7 @@ slurmd_port=$(free_port)
 dd if=/dev/urandom of="$dir/munge.key" bs=1024 count=1 status=none
 chmod 400 "$dir/munge.key"
 munged --foreground --force --socket="$dir/munge.socket" --key-file="$dir/munge.key" \
-  --pid-file="$dir/munged.pid" --log-file="$dir/munged.log" --seed-file="$dir/munged.seed" &
+  --pid-file="$dir/munged.pid" --log-file="$dir/munged.log" --seed-file="$dir/munged.seed" >"$dir/munged.out" 2>&1 &
 pids+=($!)
 
 host=$(hostname -s)
@@ -83,6 +85,7 @@ SchedulerParameters=sched_interval=1
 JobCompType=jobcomp/none
 AccountingStorageType=accounting_storage/none
 MpiDefault=none
+CommunicationParameters=NoInAddrAny
 ReturnToService=2
 MinJobAge=300
 KillWait=5
@@ -96,8 +99,9 @@ pids+=($!)
 slurmd -D -f "$SLURM_CONF" >"$dir/slurmd.out" 2>&1 &
 pids+=($!)
 state=
-for _ in $(seq 150); do
-  state=$(sinfo --noheader --format=%T 2>/dev/null || true)
+deadline=$(($(now_ms) + 30000))
+while [ "$(now_ms)" -lt "$deadline" ]; do
+  state=$(timeout 5 sinfo --noheader --format=%T 2>/dev/null || true)
   [ "$state" = idle ] && break
   sleep 0.2
 done
@@ -109,8 +113,8 @@ echo "slurm: node $host idle after $(seconds_since "$started") s (slurmctld port
 sweep=(--grid speed=20,30 --grid y0=0,0.002,0.03 --extract final,maxima,counters
        -- --model onepoint --t-end 0.1)
 cd "$dir"
-"$cli" sweep "${sweep[@]}" --out local.csv --jobs 2 2>local.err || { cat local.err; exit 1; }
-"$cli" sweep --slurm --array-limit 2 "${sweep[@]}" --out slurm.csv 2>slurm.err || { cat slurm.err; exit 1; }
+"$cli" sweep --out local.csv --jobs 2 "${sweep[@]}" 2>local.err || { cat local.err; exit 1; }
+"$cli" sweep --out slurm.csv --slurm --array-limit 2 "${sweep[@]}" 2>slurm.err || { cat slurm.err; exit 1; }
 grep -q "Slurm job" slurm.err || { echo "FAIL: no Slurm job submitted"; cat slurm.err; exit 1; }
 rows=$(($(wc -l <slurm.csv) - 1))
 [ "$rows" = 6 ] || { echo "FAIL: $rows rows in the Slurm CSV, expected 6"; cat slurm.csv; exit 1; }

@@ -19,6 +19,9 @@ run() {  # run JOBS OUT: prints the wall time [ms]
   echo $(($(now_ms) - start))
 }
 echo "wrc sweep: 16 runs (speed 10:40:10 m/s x friction 0.15,0.2,0.3,0.4), onepoint, t_end = $t_end s, $(nproc) cores"
+# Another busy process halves what two jobs can gain (the scheduler shares the cores between
+# sessions whatever their nice value): the load before, to read the ratio by.
+echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
 one=$(run 1 one.csv)
 two=$(run 2 two.csv)
 "$cli" sweep --compare "$dir/one.csv" "$dir/two.csv"
@@ -26,3 +29,4 @@ sum=$(awk -F, 'NR > 1 { s += $NF } END { printf "%.1f", s }' "$dir/one.csv")
 printf "jobs 1: %d.%03d s wall (the runs' own wall times add up to %s s)\n" $((one / 1000)) $((one % 1000)) "$sum"
 printf "jobs 2: %d.%03d s wall\n" $((two / 1000)) $((two % 1000))
 awk -v a="$one" -v b="$two" 'BEGIN { printf "ratio jobs 2 / jobs 1: %.3f\n", b / a }'
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -123,4 +123,13 @@ failed=$(grep -c ',failed,' slurm.csv || true)
 [ "$finished" = 4 ] && [ "$failed" = 2 ] || { echo "FAIL: $finished finished and $failed failed rows, expected 4 and 2"; cat slurm.csv; exit 1; }
 "$cli" sweep --compare local.csv slurm.csv || { echo "FAIL: the local and the Slurm CSV differ"; exit 1; }
 ls slurm.csv.work/logs/slurm-*_*.log >/dev/null || { echo "FAIL: no Slurm task logs"; exit 1; }
+# Submitted without waiting, gathered later from the work directory alone (exit 1 while rows are missing).
+"$cli" sweep --out later.csv --slurm --no-wait "${sweep[@]}" 2>later.err || { cat later.err; exit 1; }
+deadline=$(($(now_ms) + 60000))
+until "$cli" sweep --out later.csv --gather 2>gather.err; do
+  [ "$(now_ms)" -lt "$deadline" ] || { cat gather.err; echo "FAIL: --gather incomplete after 60 s"; exit 1; }
+  sleep 0.5
+done
+"$cli" sweep --compare local.csv later.csv || { echo "FAIL: the gathered CSV differs from the local one"; exit 1; }
+sed "s/^/  /" slurm.err
 echo "PASS: the Slurm sweep's CSV is the local one's ($rows rows, $finished finished, $failed failed); $(seconds_since "$started") s in all"

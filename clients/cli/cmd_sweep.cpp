@@ -192,6 +192,7 @@ int run_sweep(const std::vector<std::string>& all_args) {
                  "...), the profile and track options (wheel, rail, gauge, inclination, r0, ...), model, suspension,\n"
                  "params, track, irregularities, swap_at. A failed run is a row with its error. Run again with the\n"
                  "same --out to resume: rows already there are kept. --slurm submits the runs as a job array instead.\n"
+                 "`wrc sweep --compare A.csv B.csv` compares two sweep CSVs, every column but wall_time [s].\n"
                  "Example: wrc sweep --grid speed=10:40:10 --grid friction=0.2,0.3 -- --model onepoint --t-end 1\n"
                  "docs/sweep.md.\n";
     return 0;
@@ -318,7 +319,7 @@ int run_sweep(const std::vector<std::string>& all_args) {
   return 0;
 }
 
-// `wrc sweep --compare A.csv B.csv`: the same rows, every column but the wall time?
+// `wrc sweep --compare A.csv B.csv`: the same rows, every column but the wall time.
 int compare(const std::vector<std::string>& args) {
   if (args.size() != 3) throw UsageError("sweep --compare A.csv B.csv");
   const sweep::CsvTable a = sweep::read_csv_file(args[1]);

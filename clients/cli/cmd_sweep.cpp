@@ -94,7 +94,9 @@ sweep::SweepLayout checked_layout(const SweepDefinition& d, bool check_every_poi
   for (std::size_t p = 0; p < (check_every_point ? grid.size() : 1); ++p) {
     try {
       const protocol::RunRequest request = sweep_run_request(run_arguments(d, grid.point(p)), "check");
-      const std::string key = geometry_key(request.geometry);
+      // Built once per distinct geometry (its options as wrc-contactd would get them).
+      std::string key;
+      for (const std::string& a : geometry_arguments(request.geometry)) key += a + '\n';
       if (geometries.insert(key).second) make_geometry(request.geometry);
       if (p == 0) example = request;
     } catch (const std::exception& e) {

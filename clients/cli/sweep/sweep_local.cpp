@@ -66,6 +66,7 @@ pid_t start_point(const SweepWork& work, std::size_t point, const std::string& s
     ::execv(argv[0], argv.data());
     _exit(127);
   }
+  ::setpgid(pid, pid);  // here too: the group exists before the sweep may signal it
   return pid;
 }
 

@@ -15,6 +15,7 @@ WRC_PACKAGES=(
   iproute2 nftables util-linux    # private network namespaces and packet-loss injection in bus tests
   gnuplot-nox                 # `wrc plot`: PNG/SVG pictures through its cairo terminals (pngcairo, svg), no X11
   jq                          # the demo reads values out of nested run summaries (JSON) in the shell
+  slurm-wlm munge             # `wrc sweep --slurm`'s test: a single-node Slurm cluster of its own on loopback
 )
 
 wrc_missing_packages() {

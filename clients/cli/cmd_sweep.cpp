@@ -1,0 +1,349 @@
+// wrc sweep: a grid of runs (any keys of the run parameter table, profiles, models, ...) run in
+// processes of their own on this machine's cores, or as a Slurm job array, into one CSV with a
+// row per run (cli/sweep/: the definition, the runs, the work directory, local and Slurm;
+// core/sweep/: the grid and the CSV).
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <set>
+#include <thread>
+
+#include "cli/command.hpp"
+#include "cli/options.hpp"
+#include "cli/output_paths.hpp"
+#include "cli/plot/sweep_plot.hpp"
+#include "cli/progress_bar.hpp"
+#include "cli/sweep/sweep_definition.hpp"
+#include "cli/sweep/sweep_local.hpp"
+#include "cli/sweep/sweep_results.hpp"
+#include "cli/sweep/sweep_slurm.hpp"
+#include "cli/sweep/sweep_work.hpp"
+#include "core/identity/geometry_key.hpp"
+
+namespace wrc::cli {
+namespace {
+
+using RowMap = std::map<std::size_t, sweep::SweepRow>;
+
+constexpr double kSlurmPollPeriod = 1.0;  // [s] between looks at the rows and at squeue
+
+std::vector<OptionSpec> sweep_option_specs() {
+  return {
+      {"--extract", true,
+       "what each row holds: groups final, maxima, counters, critical_speed and paths of the run summary "
+       "(run_quantities.y_over_q.left.t), comma-separated",
+       "final,maxima,counters"},
+      {"--critical-speeds", true, "speeds of the critical-speed scan FROM:TO:STEP [m/s]", "5:80:1"},
+      {"--out", true, "the sweep's CSV; an existing one of the same sweep is resumed", "sweep.csv"},
+      {"--work-dir", true, "the runs' rows, logs and Slurm scripts (shared by the nodes with --slurm)", "OUT.work"},
+      {"--jobs", true, "runs at once on this machine", "the number of cores"},
+      {"--retry-failed", false, "run the failed rows of a resumed sweep again", ""},
+      {"--plot", true, "also draw --plot-y against --plot-x (.png or .svg)", "none"},
+      {"--plot-x", true, "grid key along the plot's x", "the first grid key"},
+      {"--plot-y", true, "result column of the plot", "the first result column"},
+      {"--plot-by", true, "grid key with one line per value in the plot", "the second grid key, if any"},
+      {"--slurm", false, "submit the runs as a Slurm job array (sbatch) and gather their rows", ""},
+      {"--partition", true, "Slurm partition", "the cluster's default"},
+      {"--time", true, "Slurm time limit per run (sbatch --time)", "the partition's default"},
+      {"--array-limit", true, "most Slurm tasks running at once (--array=...%N)", "no limit"},
+      {"--sbatch-args", true, "further sbatch options, space-separated (e.g. '--account=A --qos=Q')", "none"},
+      {"--no-wait", false, "with --slurm: submit and return; gather later with --gather", ""},
+      {"--gather", false, "gather the rows the work directory holds into --out (after --slurm --no-wait)", ""},
+      {"--run-point", true, "run one grid point of --work-dir's sweep into its row (what each run process runs)", ""},
+  };
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  for (char c : text + separator) {
+    if (c == separator) {
+      if (!part.empty()) parts.push_back(part);
+      part.clear();
+    } else {
+      part += c;
+    }
+  }
+  return parts;
+}
+
+std::string point_text(const SweepDefinition& d, const sweep::Grid& grid, std::size_t point) {
+  const auto values = grid.point(point);
+  std::string text;
+  for (std::size_t k = 0; k < values.size(); ++k) text += (k ? ", " : "") + d.axes[k].key + " = " + values[k];
+  return text;
+}
+
+// The sweep's layout: every point's run parsed by `wrc run`'s options (a bad value is one line naming
+// the point, before anything runs), every distinct geometry built once, the columns and units.
+sweep::SweepLayout checked_layout(const SweepDefinition& d, bool check_every_point) {
+  sweep::Grid grid;
+  try {
+    grid = sweep::Grid(d.axes);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  check_run_options(d.run_options, d.axes);
+  std::vector<std::string> units;
+  for (const sweep::GridAxis& a : d.axes) units.push_back(grid_key_unit(a.key));
+  protocol::RunRequest example;
+  std::set<std::string> geometries;
+  for (std::size_t p = 0; p < (check_every_point ? grid.size() : 1); ++p) {
+    try {
+      const protocol::RunRequest request = sweep_run_request(run_arguments(d, grid.point(p)), "check");
+      // Built once per distinct geometry (its options as wrc-contactd would get them).
+      std::string key;
+      for (const std::string& a : geometry_arguments(request.geometry)) key += a + '\n';
+      if (geometries.insert(key).second) make_geometry(request.geometry);
+      if (p == 0) example = request;
+    } catch (const std::exception& e) {
+      throw UsageError("grid point " + std::to_string(p) + " (" + point_text(d, grid, p) + "): " + e.what());
+    }
+  }
+  std::vector<std::string> names;
+  const std::vector<ResultColumn> columns = result_columns(d.extract, example);
+  bool critical = false;
+  for (const ResultColumn& c : columns) {
+    names.push_back(c.name());
+    critical = critical || c.path == "critical_speed";
+  }
+  if (critical) critical_speed_scan(d.critical_speeds);
+  return sweep::SweepLayout(grid, units, names);
+}
+
+std::vector<ResultColumn> columns_of(const SweepDefinition& d, const sweep::Grid& grid) {
+  return result_columns(d.extract, sweep_run_request(run_arguments(d, grid.point(0)), "check"));
+}
+
+// `wrc sweep --run-point I --work-dir DIR`: one run into its row file.
+int run_one_point(const Options& o) {
+  const SweepWork work(o.required_text("--work-dir"));
+  const SweepDefinition d = work.definition();
+  const sweep::Grid grid(d.axes);
+  const long point = std::stol(o.required_text("--run-point"));
+  if (point < 0 || static_cast<std::size_t>(point) >= grid.size())
+    throw UsageError("--run-point " + o.text("--run-point") + ": the grid has points 0 to " + std::to_string(grid.size() - 1));
+  const std::size_t p = static_cast<std::size_t>(point);
+  std::cerr << "sweep point " << p << ": " << point_text(d, grid, p) << "\n";
+  const sweep::SweepRow row = run_sweep_point(d, columns_of(d, grid), p, grid.point(p));
+  work.write_row(row, grid);
+  std::cerr << "sweep point " << p << ": " << row.status << (row.error.empty() ? "" : " (" + row.error + ")") << " in "
+            << row.wall_time << " s\n";
+  return 0;
+}
+
+void report(const RowMap& rows, std::size_t total, const std::string& out, double wall) {
+  std::size_t failed = 0;
+  for (const auto& [p, r] : rows) failed += r.status != "finished";
+  std::cerr << "sweep: " << rows.size() << " of " << total << " runs in " << out << " (" << rows.size() - failed
+            << " finished, " << failed << " failed), " << wall << " s wall\n";
+  std::size_t shown = 0;
+  for (const auto& [p, r] : rows)
+    if (r.status != "finished" && shown++ < 5) std::cerr << "  point " << p << " " << r.status << ": " << r.error << "\n";
+}
+
+void draw(const Options& o, const sweep::SweepLayout& layout, const std::string& out) {
+  if (!o.has("--plot")) return;
+  const sweep::CsvTable table = sweep::read_csv_file(out);
+  const std::size_t keys = layout.grid().axes().size();
+  const std::size_t x = plot::sweep_column(table, o.text("--plot-x", table.header[1]), "--plot-x");
+  const std::size_t y = plot::sweep_column(table, o.text("--plot-y", table.header[keys + 2]), "--plot-y");
+  const std::size_t by = o.has("--plot-by") ? plot::sweep_column(table, o.text("--plot-by"), "--plot-by")
+                         : keys >= 2 && x != 2 ? 2 : keys >= 2 ? 1 : table.header.size();
+  draw_sweep(table, x, y, by, plot::image_request(o.text("--plot"), 1200, 800), "wrc sweep: " + out);
+  std::cerr << "sweep: wrote " << o.text("--plot") << "\n";
+}
+
+int run_sweep(const std::vector<std::string>& all_args) {
+  // --grid may come many times and everything after `--` is the runs' own: taken out first.
+  std::vector<std::string> args, run_options;
+  std::vector<sweep::GridAxis> axes;
+  for (std::size_t i = 0; i < all_args.size(); ++i) {
+    const std::string& a = all_args[i];
+    if (a == "--") {
+      run_options.assign(all_args.begin() + static_cast<long>(i) + 1, all_args.end());
+      break;
+    }
+    std::string grid;
+    if (a == "--grid") {
+      if (i + 1 >= all_args.size()) throw UsageError("--grid needs KEY=VALUES");
+      grid = all_args[++i];
+    } else if (a.rfind("--grid=", 0) == 0) {
+      grid = a.substr(7);
+    } else {
+      args.push_back(a);
+      continue;
+    }
+    try {
+      axes.push_back(sweep::parse_grid_axis(grid));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--") + e.what());
+    }
+  }
+  std::vector<OptionSpec> specs = sweep_option_specs();
+  specs.insert(specs.begin(), {"--grid", true, "KEY=VALUES, repeated per key: a list 0.2,0.3, a range FROM:TO:STEP, or both", ""});
+  const Options o("sweep", "--grid KEY=VALUES [--grid ...] [options] -- [wrc run options for every run]", specs, args);
+  if (o.help_requested()) {
+    std::cout << o.help()
+              << "\nRuns `wrc run` at every point of the grid (the first key varies slowest), each in a process of its\n"
+                 "own with the contact model in-process, and writes one CSV row per run in grid order: point, the\n"
+                 "keys, status, what --extract names, error, wall_time. Keys: any run parameter (speed, friction, y0,\n"
+                 "...), the profile and track options (wheel, rail, gauge, inclination, r0, ...), model, suspension,\n"
+                 "params, track, irregularities, swap_at. A failed run is a row with its error. Run again with the\n"
+                 "same --out to resume: rows already there are kept. --slurm submits the runs as a job array instead.\n"
+                 "`wrc sweep --compare A.csv B.csv` compares two sweep CSVs, every column but wall_time [s].\n"
+                 "Example: wrc sweep --grid speed=10:40:10 --grid friction=0.2,0.3 -- --model onepoint --t-end 1\n"
+                 "docs/sweep.md.\n";
+    return 0;
+  }
+  if (o.has("--run-point")) return run_one_point(o);
+
+  const std::string out = o.text("--out", "sweep.csv");
+  const SweepWork work(o.text("--work-dir", out + ".work"));
+  SweepDefinition d;
+  if (o.has("--gather") && axes.empty()) {
+    d = work.definition();
+  } else {
+    d.axes = axes;
+    d.run_options = run_options;
+    d.extract = split(o.text("--extract", "final,maxima,counters"), ',');
+    d.critical_speeds = o.text("--critical-speeds", "5:80:1");
+  }
+  const sweep::SweepLayout layout = checked_layout(d, !o.has("--gather"));
+  check_output_path(out, "--out");
+  if (o.has("--plot")) plot::image_request(o.text("--plot"), 1200, 800);
+  work.prepare(d);
+
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  RowMap rows;
+  if (std::filesystem::exists(out)) {
+    try {
+      rows = layout.rows_of(sweep::read_csv_file(out), out);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
+  const std::size_t in_csv = rows.size();
+  const std::size_t gathered = work.gather(layout, rows);
+  if (o.has("--retry-failed")) {
+    for (auto it = rows.begin(); it != rows.end();) {
+      if (it->second.status != "finished") {
+        work.forget(it->first);
+        it = rows.erase(it);
+      } else {
+        ++it;
+      }
+    }
+  }
+  auto write = [&] { sweep::write_csv_file(out, layout.table(rows)); };
+  write();
+  std::vector<std::size_t> pending;
+  for (std::size_t p = 0; p < layout.grid().size(); ++p)
+    if (!rows.count(p)) pending.push_back(p);
+  std::cerr << "sweep: " << layout.grid().size() << " runs";
+  if (in_csv + gathered > 0)
+    std::cerr << ", " << rows.size() << " already done (" << in_csv << " in " << out << ", " << gathered
+              << " more in " << work.directory() << ")";
+  std::cerr << ", " << pending.size() << " to run\n";
+
+  if (o.has("--gather")) {
+    report(rows, layout.grid().size(), out, elapsed());
+    draw(o, layout, out);
+    return pending.empty() ? 0 : 1;
+  }
+  bool complete = true;
+  if (pending.empty()) {
+  } else if (!o.has("--slurm")) {
+    const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int jobs = o.has("--jobs") ? o.integer("--jobs", {1, 4096}) : cores;
+    std::cerr << "sweep: " << std::min<std::size_t>(static_cast<std::size_t>(jobs), pending.size())
+              << " at once on this machine (" << cores << " cores)\n";
+    complete = run_points_locally(work, layout, pending, jobs, [&](const sweep::SweepRow& row) {
+      rows[row.point] = row;
+      write();
+    });
+  } else {
+    SlurmSubmission s;
+    s.partition = o.text("--partition");
+    s.time = o.text("--time");
+    s.sbatch_args = split(o.text("--sbatch-args"), ' ');
+    s.array_limit = o.has("--array-limit") ? o.integer("--array-limit", {1, 1000000}) : 0;
+    const std::string job = submit_to_slurm(work, pending, s);
+    std::cerr << "sweep: Slurm job " << job << ", an array of " << pending.size() << " tasks (script and list in "
+              << work.slurm_directory() << ")\n";
+    if (o.has("--no-wait")) {
+      std::cerr << "sweep: gather its rows with the same command and --gather (or run it again to resume)\n";
+      return 0;
+    }
+    ProgressBar bar("sweep (Slurm job " + job + ")");
+    const std::set<std::size_t> submitted(pending.begin(), pending.end());
+    auto done = [&] {
+      std::size_t n = 0, failed = 0;
+      for (std::size_t p : submitted)
+        if (rows.count(p)) {
+          ++n;
+          failed += rows[p].status != "finished";
+        }
+      return std::make_pair(n, failed);
+    };
+    bool active = true;
+    while (active) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(kSlurmPollPeriod));
+      active = slurm_job_active(job);
+      if (work.gather(layout, rows) > 0) write();
+      const auto [n, failed] = done();
+      bar.update(static_cast<long>(n), static_cast<long>(submitted.size()),
+                 std::to_string(n) + "/" + std::to_string(submitted.size()) + " runs, " + std::to_string(failed) + " failed");
+    }
+    bar.finish();
+    for (std::size_t p : submitted) {
+      if (rows.count(p)) continue;
+      sweep::SweepRow row;
+      row.point = p;
+      row.status = "failed";
+      row.results.assign(layout.result_count(), "");
+      row.error = "the Slurm task of this point (job " + job + ") ended without a result; its log: " +
+                  work.logs_directory() + "/slurm-" + job + "_<task>.log";
+      rows[p] = row;
+    }
+    write();
+  }
+  report(rows, layout.grid().size(), out, elapsed());
+  if (!complete) {
+    std::cerr << "sweep: run the same command again to resume\n";
+    return 130;
+  }
+  draw(o, layout, out);
+  return 0;
+}
+
+// `wrc sweep --compare A.csv B.csv`: the same rows, every column but the wall time.
+int compare(const std::vector<std::string>& args) {
+  if (args.size() != 3) throw UsageError("sweep --compare A.csv B.csv");
+  const sweep::CsvTable a = sweep::read_csv_file(args[1]);
+  const sweep::CsvTable b = sweep::read_csv_file(args[2]);
+  const std::vector<std::string> differences = sweep::compare_sweep_tables(a, b);
+  if (differences.empty()) {
+    std::cout << "same: " << a.rows.size() << " rows, " << a.header.size() - 1 << " columns compared ("
+              << sweep::kWallTimeColumn << " left out)\n";
+    return 0;
+  }
+  for (const std::string& d : differences) std::cout << d << "\n";
+  return 1;
+}
+
+int sweep_command(const std::vector<std::string>& args) {
+  if (!args.empty() && args[0] == "--compare") return compare(args);
+  return run_sweep(args);
+}
+
+const CommandRegistrar registrar{
+    {"sweep", "a grid of runs on this machine's cores or a Slurm cluster, one CSV row per run (docs/sweep.md)",
+     sweep_command}};
+
+}  // namespace
+}  // namespace wrc::cli

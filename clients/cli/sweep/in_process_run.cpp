@@ -1,0 +1,32 @@
+#include "cli/sweep/in_process_run.hpp"
+
+#include <chrono>
+
+#include "core/dynamics/wheelset_simulation.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "core/spline/spline_geometry_fit.hpp"
+#include "protocol/run/run_output_codec.hpp"
+
+namespace wrc::cli {
+
+std::shared_ptr<ContactEvaluator> in_process_contact(const std::string& model,
+                                                     std::shared_ptr<const WheelsetGeometry> geometry) {
+  ContactModelData data;
+  if (contact_model_entry(model).needs_data) data.splines = fit_spline_geometry(*geometry, {}, {}).model;
+  return std::make_shared<InProcessContact>(make_contact_model(model, std::move(geometry), {}, data));
+}
+
+run_summary_t run_in_process(const protocol::RunRequest& request) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(request.geometry));
+  WheelsetSimulation simulation(request.spec, in_process_contact(request.model, geometry),
+                                request.geometry.track.nominal_radius);
+  for (const protocol::ScheduledSwap& swap : request.swaps)
+    simulation.schedule_swap(swap.t, in_process_contact(swap.model, geometry));
+  simulation.start();  // throws when no consistent initial state exists: the run never started
+  simulation.run();    // a failure on the way ends the run (state failed, its message)
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return protocol::to_summary_message(simulation, request.run_id, 0, wall);
+}
+
+}  // namespace wrc::cli

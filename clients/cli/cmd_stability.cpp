@@ -12,44 +12,22 @@
 #include <sstream>
 
 #include "cli/command.hpp"
+#include "cli/in_process_contact.hpp"
 #include "cli/options.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/plot/gnuplot_job.hpp"
 #include "cli/plot/plot_options.hpp"
 #include "cli/profile_options.hpp"
+#include "cli/speed_scan_option.hpp"
 #include "core/dynamics/linear_stability.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
 #include "core/dynamics/wickens_from_model.hpp"
 #include "core/models/contact_model_factory.hpp"
-#include "core/spline/spline_geometry_fit.hpp"
 #include "options/parameter_options.hpp"
 
 namespace wrc::cli {
 namespace {
-
-// --speeds FROM:TO:STEP [m/s] through the library's checks (each bad value named).
-std::vector<double> parse_speeds(const std::string& text) {
-  std::vector<double> parts;
-  std::stringstream list(text);
-  std::string item;
-  while (std::getline(list, item, ':')) parts.push_back(parse_finite(item, "--speeds"));
-  if (parts.size() != 3) throw UsageError("--speeds: '" + text + "' is not FROM:TO:STEP (m/s, e.g. 5:80:1)");
-  try {
-    return stability_speeds(parts[0], parts[1], parts[2]);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--speeds: ") + e.what());
-  }
-}
-
-std::shared_ptr<const ContactModel> build_model(const std::string& name, std::shared_ptr<const WheelsetGeometry> geometry) {
-  ContactModelData data;
-  if (contact_model_entry(name).needs_data) {
-    std::cerr << "fitting the spline model (in-process, as wrc run --in-process does) ...\n";
-    data.splines = fit_spline_geometry(*geometry, {}, {}).model;
-  }
-  return make_contact_model(name, std::move(geometry), {}, data);
-}
 
 void write_csv(const std::string& path, const std::vector<LinearisedWheelset>& scan) {
   std::ofstream out(path);
@@ -136,7 +114,7 @@ int run_stability(const std::vector<std::string>& args) {
               << " N of the parameters set to 0 (a centred steady state has no lateral load)\n";
     spec.wheelset.lateral_force = 0.0;
   }
-  const std::vector<double> speeds = parse_speeds(o.text("--speeds", "5:80:1"));
+  const std::vector<double> speeds = parse_speed_scan(o.text("--speeds", "5:80:1"), "--speeds");
   const std::string csv = o.text("--out", "stability.csv");
   const std::string picture = o.text("--plot", "stability.png");
   check_output_path(csv, "--out");
@@ -145,7 +123,9 @@ int run_stability(const std::vector<std::string>& args) {
   const GeometrySpec geometry_spec = geometry_spec_from_options(o);
   const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(geometry_spec));
   const double r0 = geometry_spec.track.nominal_radius;
-  LinearStability stability(spec.wheelset, std::make_shared<InProcessContact>(build_model(model, geometry)), r0);
+  if (contact_model_entry(model).needs_data)
+    std::cerr << "fitting the spline model (in-process, as wrc run --in-process does) ...\n";
+  LinearStability stability(spec.wheelset, in_process_contact(model, geometry), r0);
 
   std::printf("linear stability, %s contact (%s formulation), %s\n", model.c_str(),
               stability.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic",

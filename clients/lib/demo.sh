@@ -121,6 +121,21 @@ wait $launcher 2>/dev/null || true
 section "Launcher log"
 cat "$log"
 
+section "Hunting stability: linear critical speed (wrc stability; docs/stability.md)"
+echo "The benchmark wheelset's yaw springs (1.5e7 N/m per box) keep it stable at every speed; with"
+echo "soft ones (--longitudinal-stiffness 1e6) it hunts above the linear critical speed:"
+mkdir -p "$report_dir/figures"
+wrc stability --model onepoint --speeds 10:120:10 --longitudinal-stiffness 1e6 \
+  --out "$report_dir/stability.csv" --plot "$report_dir/figures/stability.png" 2>&1 | tail -4 | sed 's/^/  /'
+
+section "A small sweep on both cores (wrc sweep; docs/sweep.md)"
+echo "Speed x model, 1 s each from y0 = 3 mm with the soft yaw springs, every run a process of its own:"
+wrc sweep --grid model=onepoint,spline --grid speed=40,60,80 --extract final,counters \
+  --out "$report_dir/sweep.csv" --plot "$report_dir/figures/sweep.png" --plot-x speed --plot-y y --plot-by model \
+  -- --t-end 1 --lateral-force 0 --y0 0.003 --longitudinal-stiffness 1e6 2>"$report_dir/sweep.log" |
+  sed 's/^/  /' || { echo "sweep failed:"; tail -3 "$report_dir/sweep.log"; }
+[ -s "$report_dir/sweep.csv" ] && cut -d, -f1-9 "$report_dir/sweep.csv" | column -t -s, | sed 's/^/  /'
+
 section "The paper's figures and the contact-geometry plots (wrc plot)"
 figures="$report_dir/figures"
 mkdir -p "$figures"
@@ -144,5 +159,5 @@ plot conicity conicity --a-to 0.008
 plot profiles profiles --y 0.005
 echo
 echo "The spline model's accuracy report: $report_dir/fit-10x2x2.json"
-echo "Run summaries: $report_dir/run-<model>.json"
+echo "Run summaries: $report_dir/run-<model>.json; stability and sweep: $report_dir/stability.csv, $report_dir/sweep.csv"
 echo "Figures: $figures"

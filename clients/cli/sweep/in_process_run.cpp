@@ -3,18 +3,9 @@
 #include <chrono>
 
 #include "core/dynamics/wheelset_simulation.hpp"
-#include "core/models/contact_model_factory.hpp"
-#include "core/spline/spline_geometry_fit.hpp"
 #include "protocol/run/run_output_codec.hpp"
 
 namespace wrc::cli {
-
-std::shared_ptr<ContactEvaluator> in_process_contact(const std::string& model,
-                                                     std::shared_ptr<const WheelsetGeometry> geometry) {
-  ContactModelData data;
-  if (contact_model_entry(model).needs_data) data.splines = fit_spline_geometry(*geometry, {}, {}).model;
-  return std::make_shared<InProcessContact>(make_contact_model(model, std::move(geometry), {}, data));
-}
 
 run_summary_t run_in_process(const protocol::RunRequest& request) {
   const auto start = std::chrono::steady_clock::now();

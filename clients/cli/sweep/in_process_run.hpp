@@ -9,17 +9,11 @@
 #include <memory>
 #include <string>
 
-#include "core/dynamics/contact_evaluator.hpp"
-#include "core/geometry/wheelset_geometry.hpp"
+#include "cli/in_process_contact.hpp"
 #include "protocol/run/run_command_codec.hpp"
 #include "wrc/run_summary_t.hpp"
 
 namespace wrc::cli {
-
-/// The contact model name evaluated in this process on geometry (the spline model fitted first).
-/// @throws std::invalid_argument for an unknown model, std::runtime_error when it cannot be built.
-std::shared_ptr<ContactEvaluator> in_process_contact(const std::string& model,
-                                                     std::shared_ptr<const WheelsetGeometry> geometry);
 
 /// Runs request to its end (finished, or failed with the simulation's message) and returns its
 /// summary, wall_time the run's own [s]. @throws what building the geometry, the contact or the

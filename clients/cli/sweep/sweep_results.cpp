@@ -6,6 +6,7 @@
 
 #include "cli/options.hpp"
 #include "cli/run_outputs.hpp"
+#include "cli/speed_scan_option.hpp"
 #include "cli/sweep/in_process_run.hpp"
 #include "core/dynamics/linear_stability.hpp"
 #include "core/dynamics/run_counter_table.hpp"
@@ -124,18 +125,7 @@ std::pair<std::string, std::string> critical_speed_of(const protocol::RunRequest
 
 }  // namespace
 
-std::vector<double> critical_speed_scan(const std::string& text) {
-  std::vector<double> parts;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ':')) parts.push_back(parse_finite(item, "--critical-speeds"));
-  if (parts.size() != 3) throw UsageError("--critical-speeds: '" + text + "' is not FROM:TO:STEP [m/s]");
-  try {
-    return stability_speeds(parts[0], parts[1], parts[2]);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(std::string("--critical-speeds: ") + e.what());
-  }
-}
+std::vector<double> critical_speed_scan(const std::string& text) { return parse_speed_scan(text, "--critical-speeds"); }
 
 const std::vector<std::string>& extract_groups() {
   static const std::vector<std::string> groups{"final", "maxima", "counters", "critical_speed"};

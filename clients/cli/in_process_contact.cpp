@@ -1,0 +1,15 @@
+#include "cli/in_process_contact.hpp"
+
+#include "core/models/contact_model_factory.hpp"
+#include "core/spline/spline_geometry_fit.hpp"
+
+namespace wrc::cli {
+
+std::shared_ptr<ContactEvaluator> in_process_contact(const std::string& model,
+                                                     std::shared_ptr<const WheelsetGeometry> geometry) {
+  ContactModelData data;
+  if (contact_model_entry(model).needs_data) data.splines = fit_spline_geometry(*geometry, {}, {}).model;
+  return std::make_shared<InProcessContact>(make_contact_model(model, std::move(geometry), {}, data));
+}
+
+}  // namespace wrc::cli

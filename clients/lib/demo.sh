@@ -126,7 +126,8 @@ echo "The benchmark wheelset's yaw springs (1.5e7 N/m per box) keep it stable at
 echo "soft ones (--longitudinal-stiffness 1e6) it hunts above the linear critical speed:"
 mkdir -p "$report_dir/figures"
 wrc stability --model onepoint --speeds 10:120:10 --longitudinal-stiffness 1e6 \
-  --out "$report_dir/stability.csv" --plot "$report_dir/figures/stability.png" 2>&1 | tail -4 | sed 's/^/  /'
+  --out "$report_dir/stability.csv" --plot "$report_dir/figures/stability.png" 2>&1 |
+  sed -n '/V \[m\/s\]/,/linear critical speed/p' | sed 's/^/  /'
 
 section "A small sweep on both cores (wrc sweep; docs/sweep.md)"
 echo "Speed x model, 1 s each from y0 = 3 mm with the soft yaw springs, every run a process of its own."

@@ -1,0 +1,93 @@
+#include "cli/plot/bifurcation_plot.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <map>
+#include <stdexcept>
+
+#include "cli/plot/plot_options.hpp"
+
+namespace wrc::cli::plot {
+
+const std::vector<std::string>& bifurcation_csv_header() {
+  static const std::vector<std::string> header{
+      "branch [-]",           "speed [m/s]",        "state [-]",          "amplitude [m]",
+      "mean [m]",             "yaw_amplitude [rad]", "frequency [Hz]",    "growth [-]",
+      "largest_contact_angle [rad]", "flange_contact [-]", "start_y [m]", "simulated_time [s]",
+      "wall_time [s]",        "message [-]"};
+  return header;
+}
+
+void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, const std::string& title) {
+  if (table.header != bifurcation_csv_header())
+    throw std::runtime_error("not a CSV of wrc bifurcation (its header differs from: branch [-], speed [m/s], ...)");
+  // Column indices by the header above.
+  constexpr std::size_t kBranch = 0, kSpeed = 1, kState = 2, kAmplitude = 3, kFrequency = 6;
+  std::map<std::string, std::vector<std::pair<double, double>>> points;  // by branch
+  double linear = -1, linear_f = 0, nonlinear = -1;
+  for (const auto& row : table.rows) {
+    const std::string& branch = row[kBranch];
+    const double v = std::strtod(row[kSpeed].c_str(), nullptr);
+    if (branch == "linear-critical") {
+      linear = v;
+      linear_f = std::strtod(row[kFrequency].c_str(), nullptr);
+      continue;
+    }
+    if (branch == "nonlinear-critical") {
+      nonlinear = v;
+      continue;
+    }
+    if (row[kState] == "failed") {
+      points["failed"].push_back({v, std::strtod(row[kAmplitude].c_str(), nullptr)});
+      continue;
+    }
+    const double a = std::strtod(row[kAmplitude].c_str(), nullptr);
+    const bool settled = row[kState] == "limit-cycle" || row[kState] == "centred";
+    const std::string key = branch == "centred" ? (settled ? "centred" : "centred-unsettled")
+                                                : (settled ? "cycle" : "cycle-unsettled");
+    points[key].push_back({v, row[kState] == "centred" ? 0.0 : a});
+  }
+  std::size_t total = 0;
+  for (auto& [key, pts] : points) total += pts.size();
+  if (total == 0) throw std::runtime_error("no run to draw");
+  GnuplotJob job;
+  struct Style {
+    const char* key;
+    const char* with;
+    const char* title;
+  };
+  const Style styles[] = {
+      {"centred", "linespoints lw 2 pt 7 ps 0.8 lc rgb '#1f77b4'", "from a small disturbance (settled)"},
+      {"centred-unsettled", "points pt 6 ps 1.2 lc rgb '#1f77b4'", "from a small disturbance (not settled at the end)"},
+      {"cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#d62728'", "ramp-down: stable limit cycle"},
+      {"cycle-unsettled", "points pt 4 ps 1.2 lc rgb '#d62728'", "ramp-down: not settled (collapsing or growing)"},
+      {"failed", "points pt 2 ps 1.5 lc rgb 'black'", "failed (amplitude when it stopped)"},
+  };
+  std::string plots;
+  for (const Style& s : styles) {
+    auto it = points.find(s.key);
+    if (it == points.end() || it->second.empty()) continue;
+    std::sort(it->second.begin(), it->second.end());
+    const std::string data = std::string(s.key) + ".dat";
+    {
+      auto out = job.open_data(data);
+      out << "# speed[m/s] amplitude[mm]\n";
+      for (const auto& [v, a] : it->second) out << v << " " << a * 1e3 << "\n";
+    }
+    plots += std::string(plots.empty() ? "plot " : ", ") + quoted(job.data_path(data)) + " using 1:2 with " + s.with +
+             " title " + quoted(s.title);
+  }
+  std::string script = "set title " + quoted(title) + " noenhanced\nset grid\nset key top left noenhanced box opaque\n";
+  script += "set xlabel 'speed [m/s]'\nset ylabel 'amplitude of y, half peak-to-peak [mm]'\nset yrange [0:*]\n";
+  if (linear > 0)
+    script += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 2 lw 1.5 lc rgb '#1f77b4'\n"
+                     "set label %s at %.9g, graph 0.5 right rotate by 90 offset -0.5,0 tc rgb '#1f77b4'\n",
+                     linear, linear, quoted(format("linear V_c = %.2f m/s, %.2f Hz", linear, linear_f)).c_str(), linear);
+  if (nonlinear > 0)
+    script += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lw 1.5 lc rgb '#d62728'\n"
+                     "set label %s at %.9g, graph 0.5 right rotate by 90 offset -0.5,0 tc rgb '#d62728'\n",
+                     nonlinear, nonlinear, quoted(format("nonlinear V_nl = %.2f m/s", nonlinear)).c_str(), nonlinear);
+  job.render(script + plots + "\n", image);
+}
+
+}  // namespace wrc::cli::plot

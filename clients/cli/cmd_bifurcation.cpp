@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "cli/command.hpp"
+#include "cli/fit_options.hpp"
 #include "cli/in_process_contact.hpp"
 #include "cli/options.hpp"
 #include "cli/output_paths.hpp"
@@ -33,6 +34,12 @@ std::string number(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.9g", v);
   return text;
+}
+
+// The integrator settings a hunting run takes from the command line (t_end and the output period
+// are the run's own).
+bool is_integrator_option(const std::string& key) {
+  return key == "rtol" || key == "position_tolerance" || key == "velocity_tolerance" || key == "max_step";
 }
 
 std::vector<std::string> csv_row(const std::string& branch, const HuntingRun& r, double wall) {
@@ -75,12 +82,13 @@ int run_bifurcation(const std::vector<std::string>& args) {
       {"--plot", true, "the bifurcation diagram (.png or .svg)", "bifurcation.png"},
   };
   for (auto& spec : parameter_option_specs(wheelset_parameter_table(), WheelsetParameters{})) specs.push_back(spec);
-  for (const auto& p : integrator_settings_table()) {
-    const std::string key = p.key;
-    if (key == "rtol" || key == "position_tolerance" || key == "velocity_tolerance" || key == "max_step")
-      specs.push_back(parameter_option_spec(p, p.get(IntegratorSettings{})));
-  }
+  for (const auto& p : integrator_settings_table())
+    if (is_integrator_option(p.key)) specs.push_back(parameter_option_spec(p, p.get(IntegratorSettings{})));
   for (auto& spec : profile_option_specs()) specs.push_back(spec);
+  for (auto& spec : fit_option_specs()) {
+    spec.help = "spline model only: " + spec.help;
+    specs.push_back(spec);
+  }
   const Options o("bifurcation", "--model M [--speeds 30:90:5] [--out FILE.csv] [--plot FILE.png] [options]", specs,
                   args);
   if (o.help_requested()) {
@@ -103,10 +111,9 @@ int run_bifurcation(const std::vector<std::string>& args) {
                                                                                          : PrimarySuspension::benchmark();
   const double file_lateral_force = spec.wheelset.lateral_force;
   apply_parameter_options(wheelset_parameter_table(), o, spec.wheelset);
-  for (const auto& p : integrator_settings_table()) {
-    const std::string name = p.option_name();
-    if (o.has(name)) p.set(spec.integrator, parameter_option_value(p, o.text(name)));
-  }
+  for (const auto& p : integrator_settings_table())
+    if (is_integrator_option(p.key) && o.has(p.option_name()))
+      p.set(spec.integrator, parameter_option_value(p, o.text(p.option_name())));
   if (!o.has("--lateral-force") && spec.wheelset.lateral_force != 0.0) {
     std::cout << "lateral load: " << file_lateral_force
               << " N of the parameters set to 0 (hunting about the centred state on straight track)\n";
@@ -138,7 +145,7 @@ int run_bifurcation(const std::vector<std::string>& args) {
   const double r0 = geometry_spec.track.nominal_radius;
   if (contact_model_entry(model).needs_data)
     std::cerr << "fitting the spline model (in-process, as wrc run --in-process does) ...\n";
-  const auto contact = in_process_contact(model, geometry);
+  const auto contact = in_process_contact(model, geometry, fit_options_from(o));
 
   // The linear critical speed over the same speeds (docs/stability.md).
   LinearStability stability(spec.wheelset, contact, r0);

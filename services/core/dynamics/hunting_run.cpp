@@ -35,7 +35,8 @@ HuntingState judge(const CycleMeasurement& c, const HuntingSettings& s) {
 void HuntingSettings::validate() const {
   require(std::isfinite(settle_time) && settle_time > 0, "settle_time", settle_time, "> 0 [s]");
   require(std::isfinite(max_time) && max_time >= settle_time, "max_time", max_time, ">= settle_time [s]");
-  require(std::isfinite(window) && window > 0 && window <= max_time, "window", window, "in (0, max_time] [s]");
+  require(std::isfinite(window) && window > 0 && window <= settle_time, "window", window,
+          "in (0, settle_time] [s] (the start is no part of a cycle)");
   require(std::isfinite(check_period) && check_period > 0, "check_period", check_period, "> 0 [s]");
   require(std::isfinite(centred_amplitude) && centred_amplitude > 0, "centred_amplitude", centred_amplitude, "> 0 [m]");
   require(growth_tolerance > 0 && growth_tolerance < 1, "growth_tolerance", growth_tolerance, "in (0, 1)");

@@ -72,8 +72,12 @@ CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<d
     m.amplitude = amplitudes.back();
     m.mean = means.back();
   }
-  if (amplitudes.size() >= 2 && amplitudes[amplitudes.size() - 2] > 0)
-    m.growth = amplitudes.back() / amplitudes[amplitudes.size() - 2];
+  // The mean ratio of successive cycles over the last up to `periods` + 1 cycles.
+  if (amplitudes.size() >= 2) {
+    const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(periods), amplitudes.size() - 1);
+    const double first = amplitudes[amplitudes.size() - 1 - n];
+    if (first > 0) m.growth = std::pow(amplitudes.back() / first, 1.0 / static_cast<double>(n));
+  }
   if (peak_times.size() >= 2) {
     const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(periods), peak_times.size() - 1);
     m.period = (peak_times.back() - peak_times[peak_times.size() - 1 - n]) / static_cast<double>(n);

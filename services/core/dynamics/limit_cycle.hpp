@@ -14,8 +14,8 @@ struct CycleMeasurement {
   double amplitude = 0;    ///< half peak-to-peak of the last cycle [signal unit]; 0 without a cycle
   double mean = 0;         ///< (peak + trough) / 2 of the last cycle [signal unit]
   double period = 0;       ///< mean time between the last peaks [s]; 0 with fewer than 2 peaks
-  /// Amplitude of the last cycle over the one before, per cycle [-]: 1 a converged limit cycle,
-  /// < 1 decaying, > 1 growing; 0 with fewer than 2 cycles.
+  /// Amplitude ratio of successive cycles, the geometric mean over the last up to `periods` + 1
+  /// cycles [-]: 1 a converged limit cycle, < 1 decaying, > 1 growing; 0 with fewer than 2 cycles.
   double growth = 0;
   double largest = 0;      ///< largest |x| of the measured samples [signal unit]
 
@@ -26,7 +26,7 @@ struct CycleMeasurement {
 /// Measures the oscillation of x(t) over the samples with t >= from [s]. Peaks and troughs are the
 /// samples larger (smaller) than both neighbours, their value and time refined by the parabola
 /// through the three samples; the period is the mean spacing of the last up to `periods` + 1
-/// peaks. @throws std::invalid_argument when t and x differ in size, t is not increasing, or
+/// peaks, the growth the mean ratio of the last up to `periods` + 1 cycles. @throws std::invalid_argument when t and x differ in size, t is not increasing, or
 /// periods < 1.
 CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<double>& x, double from,
                                int periods = 3);

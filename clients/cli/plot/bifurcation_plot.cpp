@@ -42,10 +42,14 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
       continue;
     }
     const double a = std::strtod(row[kAmplitude].c_str(), nullptr);
-    const bool settled = row[kState] == "limit-cycle" || row[kState] == "centred";
-    const std::string key = branch == "centred" ? (settled ? "centred" : "centred-unsettled")
-                                                : (settled ? "cycle" : "cycle-unsettled");
-    points[key].push_back({v, row[kState] == "centred" ? 0.0 : a});
+    const std::string& state = row[kState];
+    const bool oscillating = state == "limit-cycle" || state == "growing";
+    std::string key;
+    if (branch == "centred")
+      key = state == "centred" ? "centred" : oscillating ? "grown" : "centred-unsettled";
+    else
+      key = state == "limit-cycle" ? "cycle" : oscillating ? "cycle-unsettled" : "collapsed";
+    points[key].push_back({v, state == "centred" ? 0.0 : a});
   }
   std::size_t total = 0;
   for (auto& [key, pts] : points) total += pts.size();
@@ -57,10 +61,12 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
     const char* title;
   };
   const Style styles[] = {
-      {"centred", "linespoints lw 2 pt 7 ps 0.8 lc rgb '#1f77b4'", "from a small disturbance (settled)"},
-      {"centred-unsettled", "points pt 6 ps 1.2 lc rgb '#1f77b4'", "from a small disturbance (not settled at the end)"},
+      {"centred", "linespoints lw 2 pt 7 ps 0.8 lc rgb '#1f77b4'", "small start: decays to the centred state"},
+      {"centred-unsettled", "points pt 6 ps 1.2 lc rgb '#1f77b4'", "small start: still decaying at the end"},
+      {"grown", "points pt 9 ps 1.5 lc rgb '#1f77b4'", "small start: grew into the cycle (centred state unstable)"},
       {"cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#d62728'", "ramp-down: stable limit cycle"},
-      {"cycle-unsettled", "points pt 4 ps 1.2 lc rgb '#d62728'", "ramp-down: not settled (collapsing or growing)"},
+      {"cycle-unsettled", "points pt 4 ps 1.2 lc rgb '#d62728'", "ramp-down: still growing at the end"},
+      {"collapsed", "points pt 4 ps 1.5 lc rgb '#2ca02c'", "ramp-down: cycle collapsed (centred or decaying)"},
       {"failed", "points pt 2 ps 1.5 lc rgb 'black'", "failed (amplitude when it stopped)"},
   };
   std::string plots;
@@ -81,11 +87,11 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
   script += "set xlabel 'speed [m/s]'\nset ylabel 'amplitude of y, half peak-to-peak [mm]'\nset yrange [0:*]\n";
   if (linear > 0)
     script += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 2 lw 1.5 lc rgb '#1f77b4'\n"
-                     "set label %s at %.9g, graph 0.5 right rotate by 90 offset -0.5,0 tc rgb '#1f77b4'\n",
+                     "set label %s at %.9g, graph 0.55 left rotate by 90 offset -0.8,0 tc rgb '#1f77b4' noenhanced\n",
                      linear, linear, quoted(format("linear V_c = %.2f m/s, %.2f Hz", linear, linear_f)).c_str(), linear);
   if (nonlinear > 0)
     script += format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 3 lw 1.5 lc rgb '#d62728'\n"
-                     "set label %s at %.9g, graph 0.5 right rotate by 90 offset -0.5,0 tc rgb '#d62728'\n",
+                     "set label %s at %.9g, graph 0.25 left rotate by 90 offset -0.8,0 tc rgb '#d62728' noenhanced\n",
                      nonlinear, nonlinear, quoted(format("nonlinear V_nl = %.2f m/s", nonlinear)).c_str(), nonlinear);
   job.render(script + plots + "\n", image);
 }

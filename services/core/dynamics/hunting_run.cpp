@@ -97,15 +97,29 @@ HuntingRun run_hunting(const RunSpec& base, double speed, const InitialState& st
     result.message = std::string("no consistent initial state: ") + e.what();
     return result;
   }
+  // Settled: centred, or a constant amplitude at two successive judgements whose amplitudes agree
+  // within the growth tolerance (a slow decay or growth of less than the tolerance per cycle
+  // shows over the check period's cycles).
   double next_check = settings.settle_time;
   bool settled = false;
+  double previous_amplitude = -1;
   while (simulation.advance()) {
     if (simulation.time() + 1e-12 < next_check) continue;
     next_check += settings.check_period;
     measure();
-    if (result.state == HuntingState::kCentred || result.state == HuntingState::kLimitCycle) {
+    if (result.state == HuntingState::kCentred) {
       settled = true;
       break;
+    }
+    if (result.state == HuntingState::kLimitCycle) {
+      if (previous_amplitude > 0 &&
+          std::abs(result.cycle.amplitude / previous_amplitude - 1.0) < settings.growth_tolerance) {
+        settled = true;
+        break;
+      }
+      previous_amplitude = result.cycle.amplitude;
+    } else {
+      previous_amplitude = -1;
     }
   }
   result.simulated_time = simulation.time();

@@ -2,7 +2,8 @@
 /// @file
 /// One hunting run (docs/bifurcation.md): the wheelset on straight track at one speed, from a given
 /// lateral state, integrated until its lateral oscillation has settled (a converged limit cycle or
-/// the centred state) or a time limit, and classified by the last cycles of y.
+/// the centred state) or a time limit, and classified by the last cycles of y. A run judged a
+/// limit cycle at max_time without a second judgement is reported as one.
 
 #include <memory>
 #include <string>
@@ -34,7 +35,7 @@ struct HuntingSettings {
 enum class HuntingState {
   kCentred,     ///< the oscillation decayed below centred_amplitude
   kDecaying,    ///< still decaying at max_time (growth < 1 - tolerance)
-  kLimitCycle,  ///< a converged oscillation of constant amplitude
+  kLimitCycle,  ///< constant amplitude (growth within tolerance) at two successive judgements
   kGrowing,     ///< still growing at max_time (growth > 1 + tolerance)
   kFailed,      ///< the run failed (message says why) before it settled
 };

@@ -87,6 +87,20 @@ TEST(LimitCycle, OnlyTheWindowCounts) {
   EXPECT_LT(m.largest, 1.0001e-3);
 }
 
+TEST(LimitCycle, NoiseNearThePeaksIsNoCycle) {
+  // 5 Hz, 3 mm, with a 60 Hz ripple of 0.3 % of it: near each peak and trough the ripple makes
+  // extra extrema (the main slope vanishes there), 0.6 % apart at most, below the 1 % hysteresis.
+  // Without it each would count as a cycle of 0.003 mm. The amplitude is then A within the
+  // ripple's 0.3 %, the cycles the true 2 s x 5 Hz (the last trough may fall after the end).
+  Signal s = oscillation(3e-3, 5.0, 0.0, 0.0, 4.0);
+  for (std::size_t i = 0; i < s.t.size(); ++i) s.x[i] += 0.003 * 3e-3 * std::sin(2 * M_PI * 60.0 * s.t[i]);
+  const CycleMeasurement m = measure_cycle(s.t, s.x, 2.0);
+  EXPECT_NEAR(m.amplitude, 3e-3, 0.0031 * 3e-3);
+  EXPECT_GE(m.cycles, 9);
+  EXPECT_LE(m.cycles, 10);
+  EXPECT_NEAR(m.period, 0.2, 0.2 * 0.01);
+}
+
 TEST(LimitCycle, Errors) {
   const std::vector<double> t{0.0, 1e-3, 2e-3}, x{0.0, 1.0};
   test::expect_invalid([&] { measure_cycle(t, x, 0.0); }, "3 times but 2 values");

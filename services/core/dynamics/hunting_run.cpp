@@ -24,7 +24,6 @@ struct Samples {
 HuntingState judge(const CycleMeasurement& c, const HuntingSettings& s) {
   if (c.largest < s.centred_amplitude) return HuntingState::kCentred;
   if (c.cycles < 2) return HuntingState::kDecaying;  // no oscillation to measure yet (an aperiodic decay)
-  if (c.amplitude < s.centred_amplitude) return HuntingState::kCentred;
   if (c.growth < 1.0 - s.growth_tolerance) return HuntingState::kDecaying;
   if (c.growth > 1.0 + s.growth_tolerance) return HuntingState::kGrowing;
   return HuntingState::kLimitCycle;

@@ -47,8 +47,20 @@ CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<d
     const bool trough = x[i] < x[i - 1] && x[i] <= x[i + 1];
     if (peak || trough) extremes.push_back(vertex(t[i - 1], x[i - 1], t[i], x[i], t[i + 1], x[i + 1], peak));
   }
-  // Cycles: a peak and the first trough after it (alternation is what a smooth signal gives; a
-  // repeated kind keeps the more extreme one).
+  // Cycles: a peak and the first trough after it. An extremum counts only when it differs from the
+  // last counted one of the other kind by more than kHysteresis of the window's range (a wiggle of
+  // the integrator's or the contact's noise on a flank is no cycle); of two of a kind in a row the
+  // more extreme one is kept.
+  constexpr double kHysteresis = 0.01;
+  double lo = 0, hi = 0;
+  bool any = false;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i] < from) continue;
+    lo = any ? std::min(lo, x[i]) : x[i];
+    hi = any ? std::max(hi, x[i]) : x[i];
+    any = true;
+  }
+  const double threshold = kHysteresis * (hi - lo);
   std::vector<Extremum> alternating;
   for (const Extremum& e : extremes) {
     if (!alternating.empty() && alternating.back().peak == e.peak) {
@@ -56,6 +68,7 @@ CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<d
       if (e.peak ? e.x > last.x : e.x < last.x) last = e;
       continue;
     }
+    if (!alternating.empty() && std::abs(e.x - alternating.back().x) <= threshold) continue;
     alternating.push_back(e);
   }
   std::vector<double> amplitudes, means, peak_times;

@@ -78,6 +78,8 @@ int run_bifurcation(const std::vector<std::string>& args) {
        number(defaults.run.centred_amplitude)},
       {"--speed-tolerance", true, "bracket of the nonlinear critical speed at the end [m/s]",
        number(defaults.speed_tolerance)},
+      {"--persisting-amplitude", true, "a cycle persists only with at least this amplitude [m] (0: any)",
+       number(defaults.persisting_amplitude)},
       {"--out", true, "every run (CSV, units in the header)", "bifurcation.csv"},
       {"--plot", true, "the bifurcation diagram (.png or .svg)", "bifurcation.png"},
   };
@@ -130,6 +132,7 @@ int run_bifurcation(const std::vector<std::string>& args) {
   settings.run.growth_tolerance = o.number("--growth-tolerance", {1e-6, 0.5});
   settings.run.centred_amplitude = o.number("--centred-amplitude", {1e-12, 0.05});
   settings.speed_tolerance = o.number("--speed-tolerance", {1e-6, 1e3});
+  settings.persisting_amplitude = o.number("--persisting-amplitude", {0, 0.05});
   try {
     settings.validate();
   } catch (const std::invalid_argument& e) {
@@ -191,7 +194,8 @@ int run_bifurcation(const std::vector<std::string>& args) {
   } else if (!d.ramp_down.empty() && d.ramp_down.back().state == HuntingState::kFailed) {
     std::printf("nonlinear critical speed: not found, the ramp-down failed at %.3f m/s: %s\n",
                 d.ramp_down.back().speed, d.ramp_down.back().message.c_str());
-  } else if (!d.ramp_down.empty() && d.ramp_down.front().persists()) {
+  } else if (!d.ramp_down.empty() && d.ramp_down.back().persists() &&
+             d.ramp_down.back().cycle.amplitude >= settings.persisting_amplitude) {
     std::printf("nonlinear critical speed: below %g m/s (the cycle persisted down to the lowest speed)\n",
                 speeds.front());
   } else {

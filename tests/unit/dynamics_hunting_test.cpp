@@ -126,6 +126,18 @@ TEST(Hunting, NoCollapseNoCriticalSpeed) {
   EXPECT_TRUE(d.refinement.empty());
 }
 
+TEST(Hunting, PersistingAmplitude) {
+  // The set runner's cycles are 6 mm: asked for 7 mm, none persists, not even at the top speed.
+  ContinuationSettings settings;
+  settings.persisting_amplitude = 7e-3;
+  const HuntingDiagram d = trace_hunting({50, 55, 60}, fake_run, settings);
+  ASSERT_EQ(d.ramp_down.size(), 1u);
+  EXPECT_FALSE(d.critical.found);
+  settings.persisting_amplitude = 5e-3;
+  EXPECT_EQ(trace_hunting({30, 35, 40, 45, 50, 55, 60}, fake_run, settings).critical.speed,
+            trace_hunting({30, 35, 40, 45, 50, 55, 60}, fake_run, ContinuationSettings{}).critical.speed);
+}
+
 TEST(Hunting, Errors) {
   ContinuationSettings settings;
   test::expect_invalid([&] { trace_hunting({50}, fake_run, settings); }, "1 speeds, need at least 2");

@@ -22,7 +22,11 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
   if (table.header != bifurcation_csv_header())
     throw std::runtime_error("not a CSV of wrc bifurcation (its header differs from: branch [-], speed [m/s], ...)");
   // Column indices by the header above.
-  constexpr std::size_t kBranch = 0, kSpeed = 1, kState = 2, kAmplitude = 3, kFrequency = 6;
+  constexpr std::size_t kBranch = 0, kSpeed = 1, kState = 2, kAmplitude = 3, kFrequency = 6, kAngle = 8;
+  // Cycles whose largest contact angle stays below 0.2 rad (11 deg) stay on the tread (S1002 on
+  // UIC60: below 0.1 rad there, 0.4 rad and more at the flange root, 1.2 rad on the flank): a
+  // branch of their own.
+  constexpr double kTreadAngle = 0.2;
   std::map<std::string, std::vector<std::pair<double, double>>> points;  // by branch
   double linear = -1, linear_f = 0, nonlinear = -1;
   for (const auto& row : table.rows) {
@@ -48,7 +52,9 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
     if (branch == "centred")
       key = state == "centred" ? "centred" : oscillating ? "grown" : "centred-unsettled";
     else
-      key = state == "limit-cycle" ? "cycle" : oscillating ? "cycle-unsettled" : "collapsed";
+      key = state == "limit-cycle" ? (std::strtod(row[kAngle].c_str(), nullptr) > kTreadAngle ? "cycle" : "tread-cycle")
+            : oscillating ? "cycle-unsettled"
+                          : "collapsed";
     points[key].push_back({v, state == "centred" ? 0.0 : a});
   }
   std::size_t total = 0;
@@ -64,7 +70,8 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
       {"centred", "linespoints lw 2 pt 7 ps 0.8 lc rgb '#1f77b4'", "small start: decays to the centred state"},
       {"centred-unsettled", "points pt 6 ps 1.2 lc rgb '#1f77b4'", "small start: still decaying at the end"},
       {"grown", "points pt 9 ps 1.5 lc rgb '#1f77b4'", "small start: grew into the cycle (centred state unstable)"},
-      {"cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#d62728'", "ramp-down: stable limit cycle"},
+      {"cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#d62728'", "ramp-down: stable cycle reaching the flange (root)"},
+      {"tread-cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#ff7f0e'", "ramp-down: stable cycle on the tread"},
       {"cycle-unsettled", "points pt 4 ps 1.2 lc rgb '#d62728'", "ramp-down: still growing at the end"},
       {"collapsed", "points pt 4 ps 1.5 lc rgb '#2ca02c'", "ramp-down: cycle collapsed (centred or decaying)"},
       {"failed", "points pt 2 ps 1.5 lc rgb 'black'", "failed (amplitude when it stopped)"},

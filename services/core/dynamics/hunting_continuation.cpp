@@ -14,6 +14,9 @@ void ContinuationSettings::validate() const {
   if (!(std::isfinite(speed_tolerance) && speed_tolerance > 0))
     throw std::invalid_argument("continuation settings: speed_tolerance = " + std::to_string(speed_tolerance) +
                                 " m/s, must be > 0");
+  if (!(std::isfinite(persisting_amplitude) && persisting_amplitude >= 0))
+    throw std::invalid_argument("continuation settings: persisting_amplitude = " +
+                                std::to_string(persisting_amplitude) + " m, must be >= 0");
 }
 
 HuntingRunner hunting_runner(RunSpec base, std::shared_ptr<ContactEvaluator> contact, double nominal_radius,
@@ -33,6 +36,7 @@ HuntingDiagram trace_hunting(const std::vector<double>& speeds, const HuntingRun
   for (std::size_t i = 1; i < speeds.size(); ++i)
     if (!(speeds[i] > speeds[i - 1]))
       throw std::invalid_argument("trace_hunting: speeds not ascending at " + std::to_string(speeds[i]) + " m/s");
+  auto persists = [&](const HuntingRun& r) { return r.persists() && r.cycle.amplitude >= settings.persisting_amplitude; };
   auto report = [&](const char* branch, const HuntingRun& r) {
     if (progress) progress(branch, r);
   };
@@ -51,7 +55,7 @@ HuntingDiagram trace_hunting(const std::vector<double>& speeds, const HuntingRun
     const HuntingRun& r = d.ramp_down.back();
     report("ramp-down", r);
     if (r.state == HuntingState::kFailed) break;
-    if (!r.persists()) {
+    if (!persists(r)) {
       collapsed = last_persisting.has_value();
       collapse = r.speed;
       break;
@@ -69,7 +73,7 @@ HuntingDiagram trace_hunting(const std::vector<double>& speeds, const HuntingRun
     const HuntingRun& r = d.refinement.back();
     report("refinement", r);
     if (r.state == HuntingState::kFailed) break;
-    if (r.persists())
+    if (persists(r))
       upper = r;
     else
       lower = mid;

@@ -23,6 +23,9 @@ struct ContinuationSettings {
   InitialState large_disturbance{5e-3, 0, 0, 0, 0};    ///< start of the ramp-down at the highest speed
   /// The bisection stops when the bracket of the nonlinear critical speed is this narrow [m/s], > 0.
   double speed_tolerance = 0.25;
+  /// A cycle counts as persisting only with at least this amplitude of y [m], >= 0: 0 any cycle;
+  /// above the tread cycles' amplitude, the ramp-down follows the flange cycle to its own fold.
+  double persisting_amplitude = 0;
   /// @throws std::invalid_argument naming the first value out of range.
   void validate() const;
 };

@@ -80,6 +80,8 @@ int run_bifurcation(const std::vector<std::string>& args) {
        number(defaults.speed_tolerance)},
       {"--persisting-amplitude", true, "a cycle persists only with at least this amplitude [m] (0: any)",
        number(defaults.persisting_amplitude)},
+      {"--unstable", false, "estimate the unstable cycle where the centred state and a cycle are both stable "
+       "(bisection on y0, 6 runs of 2 s per speed)", ""},
       {"--out", true, "every run (CSV, units in the header)", "bifurcation.csv"},
       {"--plot", true, "the bifurcation diagram (.png or .svg)", "bifurcation.png"},
   };
@@ -174,6 +176,33 @@ int run_bifurcation(const std::vector<std::string>& args) {
     std::fflush(stdout);
     table.rows.push_back(csv_row(branch, r, wall));
   });
+  if (o.has("--unstable")) {
+    // Where the small start decayed and the ramp-down's cycle persisted, both are stable: an
+    // unstable cycle separates them.
+    HuntingSettings short_runs = settings.run;
+    short_runs.settle_time = short_runs.window = short_runs.max_time = 2.0;
+    short_runs.centred_amplitude = 1e-9;
+    const HuntingRunner probe = hunting_runner(spec, contact, r0, short_runs);
+    for (const HuntingRun& cycle : d.ramp_down) {
+      if (!cycle.persists()) continue;
+      bool decayed = false;
+      for (const HuntingRun& c : d.centred)
+        if (c.speed == cycle.speed)
+          decayed = c.state == HuntingState::kCentred || c.state == HuntingState::kDecaying;
+      if (!decayed) continue;
+      const auto start = std::chrono::steady_clock::now();
+      const UnstableCycle u = unstable_cycle(probe, cycle.speed, settings.small_disturbance.y, cycle.cycle.amplitude, 6);
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      HuntingRun row = u.run;
+      row.speed = cycle.speed;
+      row.start.y = 0.5 * (u.decaying_start + u.growing_start);
+      std::printf("%-11s %8.3f %-12s %11.4f %12.4f %9.4f %8.4f %10.2f %8.2f %7.1f  y0 between %.4f and %.4f mm\n",
+                  "unstable", row.speed, "separatrix", row.cycle.amplitude * 1e3, row.yaw_amplitude * 1e3,
+                  row.cycle.frequency(), row.cycle.growth, row.largest_contact_angle * 180 / M_PI, row.simulated_time,
+                  wall, u.decaying_start * 1e3, u.growing_start * 1e3);
+      table.rows.push_back(csv_row("unstable", row, wall));
+    }
+  }
   if (linear.found) {
     std::printf("linear critical speed: %.3f m/s (%.1f km/h), %.4f Hz\n", linear.speed, linear.speed * 3.6,
                 linear.frequency);

@@ -138,6 +138,27 @@ TEST(Hunting, PersistingAmplitude) {
             trace_hunting({30, 35, 40, 45, 50, 55, 60}, fake_run, ContinuationSettings{}).critical.speed);
 }
 
+TEST(Hunting, UnstableCycleBracketsTheSeparatrix) {
+  // Starts above 1.7 mm grow, below decay: 6 halvings of [0.05, 6] mm bracket 1.7 mm within 0.093 mm.
+  auto separatrix = [](double speed, const InitialState& start) {
+    HuntingRun r;
+    r.speed = speed;
+    r.start = start;
+    r.state = HuntingState::kDecaying;
+    r.cycle.cycles = 3;
+    r.cycle.amplitude = start.y;
+    r.cycle.growth = start.y > 1.7e-3 ? 1.1 : 0.9;
+    return r;
+  };
+  const UnstableCycle u = unstable_cycle(separatrix, 45.0, 5e-5, 6e-3, 6);
+  EXPECT_EQ(u.runs, 6);
+  EXPECT_LE(u.decaying_start, 1.7e-3);
+  EXPECT_GT(u.growing_start, 1.7e-3);
+  EXPECT_NEAR(u.growing_start - u.decaying_start, (6e-3 - 5e-5) / 64, 1e-12);
+  EXPECT_EQ(u.run.start.y, u.decaying_start);
+  test::expect_invalid([&] { unstable_cycle(separatrix, 45.0, 6e-3, 5e-5, 6); }, "must be above");
+}
+
 TEST(Hunting, Errors) {
   ContinuationSettings settings;
   test::expect_invalid([&] { trace_hunting({50}, fake_run, settings); }, "1 speeds, need at least 2");

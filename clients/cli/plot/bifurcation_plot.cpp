@@ -41,6 +41,10 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
       nonlinear = v;
       continue;
     }
+    if (branch == "unstable") {
+      points["unstable"].push_back({v, std::strtod(row[kAmplitude].c_str(), nullptr)});
+      continue;
+    }
     if (row[kState] == "failed") {
       points["failed"].push_back({v, std::strtod(row[kAmplitude].c_str(), nullptr)});
       continue;
@@ -74,6 +78,7 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
       {"tread-cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#ff7f0e'", "ramp-down: stable cycle on the tread"},
       {"cycle-unsettled", "points pt 4 ps 1.2 lc rgb '#d62728'", "ramp-down: still growing at the end"},
       {"collapsed", "points pt 4 ps 1.5 lc rgb '#2ca02c'", "ramp-down: cycle collapsed (centred or decaying)"},
+      {"unstable", "linespoints dt 2 lw 2 pt 6 ps 0.8 lc rgb '#9467bd'", "unstable cycle (separatrix estimate)"},
       {"failed", "points pt 2 ps 1.5 lc rgb 'black'", "failed (amplitude when it stopped)"},
   };
   std::string plots;

@@ -85,4 +85,29 @@ HuntingDiagram trace_hunting(const std::vector<double>& speeds, const HuntingRun
   return d;
 }
 
+UnstableCycle unstable_cycle(const HuntingRunner& run, double speed, double decays_from, double grows_from,
+                             int iterations) {
+  if (!(grows_from > decays_from))
+    throw std::invalid_argument("unstable_cycle: grows_from = " + std::to_string(grows_from) +
+                                " m must be above decays_from = " + std::to_string(decays_from) + " m");
+  if (iterations < 1) throw std::invalid_argument("unstable_cycle: iterations = " + std::to_string(iterations));
+  UnstableCycle u;
+  u.speed = speed;
+  u.decaying_start = decays_from;
+  u.growing_start = grows_from;
+  for (int i = 0; i < iterations; ++i) {
+    const double mid = 0.5 * (u.decaying_start + u.growing_start);
+    HuntingRun r = run(speed, InitialState{mid, 0, 0, 0, 0});
+    ++u.runs;
+    const bool decays = r.state == HuntingState::kCentred || (r.state != HuntingState::kFailed && r.cycle.growth < 1.0);
+    if (decays) {
+      u.decaying_start = mid;
+      u.run = std::move(r);
+    } else {
+      u.growing_start = mid;
+    }
+  }
+  return u;
+}
+
 }  // namespace wrc

@@ -62,4 +62,23 @@ HuntingDiagram trace_hunting(const std::vector<double>& speeds, const HuntingRun
                              const ContinuationSettings& settings,
                              const std::function<void(const char* branch, const HuntingRun&)>& progress = {});
 
+/// An estimate of the unstable cycle at one speed: the start amplitude that separates decay from
+/// growth, and the run started there.
+struct UnstableCycle {
+  double speed = 0;            ///< [m/s]
+  double decaying_start = 0;   ///< largest y0 found to decay [m]
+  double growing_start = 0;    ///< smallest y0 found to grow [m]
+  HuntingRun run;              ///< the run from decaying_start (its amplitude near the cycle's)
+  int runs = 0;                ///< runs made [-]
+};
+
+/// Bisection on the start amplitude y0 (yaw and rates 0) at speed [m/s] between decays_from (a
+/// y0 that decays) and grows_from (one that grows, > decays_from) [m], iterations times: a run
+/// decays when its growth per cycle is below 1 (or it ended centred), grows otherwise (growth
+/// >= 1, a failure on the way up counts as growth). run should be short (a few seconds: the
+/// judgement is the last cycles' growth, not a settled state).
+/// @throws std::invalid_argument for grows_from <= decays_from or iterations < 1.
+UnstableCycle unstable_cycle(const HuntingRunner& run, double speed, double decays_from, double grows_from,
+                             int iterations);
+
 }  // namespace wrc

@@ -79,9 +79,19 @@ HuntingRun run_hunting(const RunSpec& base, double speed, const InitialState& st
     s.yaw.push_back(w.yaw);
     s.angle.push_back(std::max(std::abs(w.wheels[0].contact_angle), std::abs(w.wheels[1].contact_angle)));
   });
+  // The last window; when it holds fewer than 3 cycles (a slow oscillation: at low speed the
+  // kinematic wavelength of some 5 m takes seconds) and the run is longer than twice the window,
+  // the second half of the run instead, if that holds more.
   auto measure = [&] {
-    const double from = simulation.time() - settings.window;
+    double from = simulation.time() - settings.window;
     result.cycle = measure_cycle(s.t, s.y, from);
+    if (result.cycle.cycles < 3 && simulation.time() > 2 * settings.window) {
+      const CycleMeasurement longer = measure_cycle(s.t, s.y, 0.5 * simulation.time());
+      if (longer.cycles > result.cycle.cycles) {
+        from = 0.5 * simulation.time();
+        result.cycle = longer;
+      }
+    }
     result.yaw_amplitude = measure_cycle(s.t, s.yaw, from).amplitude;
     result.largest_contact_angle = 0;
     for (std::size_t i = 0; i < s.t.size(); ++i)

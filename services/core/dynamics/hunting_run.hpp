@@ -17,7 +17,9 @@ namespace wrc {
 /// How long a hunting run goes and how it is judged.
 struct HuntingSettings {
   double settle_time = 2.0;        ///< simulated time before the first judgement [s], > 0
-  double window = 2.0;             ///< the cycles are measured over the last window [s], > 0, <= settle_time
+  /// The cycles are measured over the last window [s], > 0, <= settle_time; over the run's second
+  /// half instead when the window holds fewer than 3 cycles and the half more.
+  double window = 2.0;
   double check_period = 0.5;       ///< simulated time between judgements [s], > 0
   double max_time = 20.0;          ///< the run ends here whatever its state [s], >= settle_time
   double centred_amplitude = 1e-5; ///< amplitude of y below which the wheelset is centred [m], > 0

@@ -196,6 +196,9 @@ int run_bifurcation(const std::vector<std::string>& args) {
       HuntingRun row = u.run;
       row.speed = cycle.speed;
       row.start.y = 0.5 * (u.decaying_start + u.growing_start);
+      // The estimate drawn: the separating start amplitude (the 2 s run from just below it has
+      // decayed by its end, so its own amplitude says less).
+      row.cycle.amplitude = row.start.y;
       std::printf("%-11s %8.3f %-12s %11.4f %12.4f %9.4f %8.4f %10.2f %8.2f %7.1f  y0 between %.4f and %.4f mm\n",
                   "unstable", row.speed, "separatrix", row.cycle.amplitude * 1e3, row.yaw_amplitude * 1e3,
                   row.cycle.frequency(), row.cycle.growth, row.largest_contact_angle * 180 / M_PI, row.simulated_time,

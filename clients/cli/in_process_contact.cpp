@@ -6,9 +6,10 @@
 namespace wrc::cli {
 
 std::shared_ptr<ContactEvaluator> in_process_contact(const std::string& model,
-                                                     std::shared_ptr<const WheelsetGeometry> geometry) {
+                                                     std::shared_ptr<const WheelsetGeometry> geometry,
+                                                     const SplineFitOptions& fit) {
   ContactModelData data;
-  if (contact_model_entry(model).needs_data) data.splines = fit_spline_geometry(*geometry, {}, {}).model;
+  if (contact_model_entry(model).needs_data) data.splines = fit_spline_geometry(*geometry, fit, {}).model;
   return std::make_shared<InProcessContact>(make_contact_model(model, std::move(geometry), {}, data));
 }
 

@@ -8,13 +8,16 @@
 
 #include "core/dynamics/contact_evaluator.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
+#include "core/spline/spline_fit_options.hpp"
 
 namespace wrc::cli {
 
 /// The contact model `model` on geometry, evaluated here (a model that needs precomputed data is
-/// fitted first). @throws std::invalid_argument for an unknown model, std::runtime_error when it
+/// fitted first, with fit: the spline model's options, its box among them). @throws
+/// std::invalid_argument for an unknown model or invalid fit options, std::runtime_error when it
 /// cannot be built.
 std::shared_ptr<ContactEvaluator> in_process_contact(const std::string& model,
-                                                     std::shared_ptr<const WheelsetGeometry> geometry);
+                                                     std::shared_ptr<const WheelsetGeometry> geometry,
+                                                     const SplineFitOptions& fit = {});
 
 }  // namespace wrc::cli

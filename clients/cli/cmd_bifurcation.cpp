@@ -1,0 +1,250 @@
+// wrc bifurcation: the hunting bifurcation diagram of the wheelset on straight track by time
+// simulation (core/dynamics/hunting_continuation.hpp, docs/bifurcation.md), in-process with the
+// chosen contact model: the centred branch from a small disturbance, the stable limit-cycle branch
+// by ramp-down continuation, the nonlinear critical speed by bisection, the linear critical speed
+// (core/dynamics/linear_stability.hpp) for comparison, a CSV of every run and the diagram.
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "cli/command.hpp"
+#include "cli/fit_options.hpp"
+#include "cli/in_process_contact.hpp"
+#include "cli/options.hpp"
+#include "cli/output_paths.hpp"
+#include "cli/plot/bifurcation_plot.hpp"
+#include "cli/plot/gnuplot_job.hpp"
+#include "cli/plot/plot_options.hpp"
+#include "cli/profile_options.hpp"
+#include "cli/speed_scan_option.hpp"
+#include "core/dynamics/hunting_continuation.hpp"
+#include "core/dynamics/linear_stability.hpp"
+#include "core/dynamics/run_parameter_table.hpp"
+#include "core/dynamics/run_parameters_file.hpp"
+#include "core/models/contact_model_factory.hpp"
+#include "core/sweep/sweep_table.hpp"
+#include "options/parameter_options.hpp"
+
+namespace wrc::cli {
+namespace {
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", v);
+  return text;
+}
+
+// The integrator settings a hunting run takes from the command line (t_end and the output period
+// are the run's own).
+bool is_integrator_option(const std::string& key) {
+  return key == "rtol" || key == "position_tolerance" || key == "velocity_tolerance" || key == "max_step";
+}
+
+std::vector<std::string> csv_row(const std::string& branch, const HuntingRun& r, double wall) {
+  return {branch,
+          number(r.speed),
+          hunting_state_name(r.state),
+          number(r.cycle.amplitude),
+          number(r.cycle.mean),
+          number(r.yaw_amplitude),
+          number(r.cycle.frequency()),
+          number(r.cycle.growth),
+          number(r.largest_contact_angle),
+          r.flange_contact ? "1" : "0",
+          number(r.start.y),
+          number(r.simulated_time),
+          number(wall),
+          r.message};
+}
+
+int run_bifurcation(const std::vector<std::string>& args) {
+  const ContinuationSettings defaults;
+  std::vector<OptionSpec> specs{
+      {"--model", true, "contact model: onepoint, interp, multipoint or spline", ""},
+      {"--speeds", true, "speeds FROM:TO:STEP [m/s]; the ramp-down starts at the highest", "30:90:5"},
+      {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
+      {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
+      {"--disturbance", true, "y0 of the centred branch's runs [m]", number(defaults.small_disturbance.y)},
+      {"--start-amplitude", true, "y0 of the ramp-down's first run, at the highest speed [m]",
+       number(defaults.large_disturbance.y)},
+      {"--settle-time", true, "simulated time before a run is first judged [s]", number(defaults.run.settle_time)},
+      {"--window", true, "the cycles are measured over the last window [s]", number(defaults.run.window)},
+      {"--max-time", true, "longest run [s]", number(defaults.run.max_time)},
+      {"--growth-tolerance", true, "|growth - 1| per cycle of a converged cycle [-]",
+       number(defaults.run.growth_tolerance)},
+      {"--centred-amplitude", true, "amplitude below which the wheelset is centred [m]",
+       number(defaults.run.centred_amplitude)},
+      {"--speed-tolerance", true, "bracket of the nonlinear critical speed at the end [m/s]",
+       number(defaults.speed_tolerance)},
+      {"--persisting-amplitude", true, "a cycle persists only with at least this amplitude [m] (0: any)",
+       number(defaults.persisting_amplitude)},
+      {"--unstable", false, "estimate the unstable cycle where the centred state and a cycle are both stable "
+       "(bisection on y0, 6 runs of 2 s per speed)", ""},
+      {"--out", true, "every run (CSV, units in the header)", "bifurcation.csv"},
+      {"--plot", true, "the bifurcation diagram (.png or .svg)", "bifurcation.png"},
+  };
+  for (auto& spec : parameter_option_specs(wheelset_parameter_table(), WheelsetParameters{})) specs.push_back(spec);
+  for (const auto& p : integrator_settings_table())
+    if (is_integrator_option(p.key)) specs.push_back(parameter_option_spec(p, p.get(IntegratorSettings{})));
+  for (auto& spec : profile_option_specs()) specs.push_back(spec);
+  for (auto& spec : fit_option_specs()) {
+    spec.help = "spline model only: " + spec.help;
+    specs.push_back(spec);
+  }
+  const Options o("bifurcation", "--model M [--speeds 30:90:5] [--out FILE.csv] [--plot FILE.png] [options]", specs,
+                  args);
+  if (o.help_requested()) {
+    std::cout << o.help()
+              << "\nThe hunting bifurcation diagram by time simulation on straight track (contact model M,\n"
+                 "in-process): at every speed a run from a small disturbance (the centred branch); from the\n"
+                 "highest speed down, runs each started from the previous run's final state (the stable\n"
+                 "limit-cycle branch) until the cycle collapses; the nonlinear critical speed (the lowest speed\n"
+                 "with a persisting cycle) by bisection; the linear critical speed for comparison. Every run goes\n"
+                 "until its oscillation has settled (constant amplitude, or centred) or --max-time. The lateral\n"
+                 "load is set to 0. docs/bifurcation.md.\n";
+    return 0;
+  }
+  const std::string model = o.choice("--model", contact_model_names());
+  if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
+  RunSpec spec;
+  if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
+  if (o.has("--suspension"))
+    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none" ? PrimarySuspension::none()
+                                                                                         : PrimarySuspension::benchmark();
+  const double file_lateral_force = spec.wheelset.lateral_force;
+  apply_parameter_options(wheelset_parameter_table(), o, spec.wheelset);
+  for (const auto& p : integrator_settings_table())
+    if (is_integrator_option(p.key) && o.has(p.option_name()))
+      p.set(spec.integrator, parameter_option_value(p, o.text(p.option_name())));
+  if (!o.has("--lateral-force") && spec.wheelset.lateral_force != 0.0) {
+    std::cout << "lateral load: " << file_lateral_force
+              << " N of the parameters set to 0 (hunting about the centred state on straight track)\n";
+    spec.wheelset.lateral_force = 0.0;
+  }
+  const std::vector<double> speeds = parse_speed_scan(o.text("--speeds", "30:90:5"), "--speeds");
+  if (speeds.size() < 2) throw UsageError("--speeds: give at least 2 speeds");
+  ContinuationSettings settings;
+  settings.small_disturbance.y = o.number("--disturbance", {-0.05, 0.05});
+  settings.large_disturbance.y = o.number("--start-amplitude", {-0.05, 0.05});
+  settings.run.settle_time = o.number("--settle-time", {1e-3, 1e4});
+  settings.run.window = o.number("--window", {1e-3, 1e4});
+  settings.run.max_time = o.number("--max-time", {1e-3, 1e4});
+  settings.run.growth_tolerance = o.number("--growth-tolerance", {1e-6, 0.5});
+  settings.run.centred_amplitude = o.number("--centred-amplitude", {1e-12, 0.05});
+  settings.speed_tolerance = o.number("--speed-tolerance", {1e-6, 1e3});
+  settings.persisting_amplitude = o.number("--persisting-amplitude", {0, 0.05});
+  try {
+    settings.validate();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const std::string csv = o.text("--out", "bifurcation.csv");
+  const std::string picture = o.text("--plot", "bifurcation.png");
+  check_output_path(csv, "--out");
+  plot::image_request(picture, 1200, 800);  // checks the extension and the path before the work
+
+  const GeometrySpec geometry_spec = geometry_spec_from_options(o);
+  const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(geometry_spec));
+  const double r0 = geometry_spec.track.nominal_radius;
+  if (contact_model_entry(model).needs_data)
+    std::cerr << "fitting the spline model (in-process, as wrc run --in-process does) ...\n";
+  const auto contact = in_process_contact(model, geometry, fit_options_from(o));
+
+  // The linear critical speed over the same speeds (docs/stability.md).
+  LinearStability stability(spec.wheelset, contact, r0);
+  std::vector<LinearisedWheelset> scan;
+  for (double v : speeds) scan.push_back(stability.linearise(v));
+  const CriticalSpeed linear = stability.critical_speed(scan);
+
+  std::printf("hunting bifurcation, %s contact, %s\n", model.c_str(), plot::geometry_title(geometry_spec).c_str());
+  std::printf("%-11s %8s %-12s %11s %12s %9s %8s %10s %8s %7s\n", "branch", "V [m/s]", "state", "ampl. [mm]",
+              "yaw [mrad]", "freq [Hz]", "growth", "angle [deg]", "t [s]", "wall [s]");
+  sweep::CsvTable table;
+  table.header = plot::bifurcation_csv_header();
+  auto last = std::chrono::steady_clock::now();
+  const HuntingRunner runner = hunting_runner(spec, contact, r0, settings.run);
+  const HuntingDiagram d = trace_hunting(speeds, runner, settings, [&](const char* branch, const HuntingRun& r) {
+    const auto now = std::chrono::steady_clock::now();
+    const double wall = std::chrono::duration<double>(now - last).count();
+    last = now;
+    std::printf("%-11s %8.3f %-12s %11.4f %12.4f %9.4f %8.4f %10.2f %8.2f %7.1f%s%s\n", branch, r.speed,
+                hunting_state_name(r.state), r.cycle.amplitude * 1e3, r.yaw_amplitude * 1e3, r.cycle.frequency(),
+                r.cycle.growth, r.largest_contact_angle * 180 / M_PI, r.simulated_time, wall,
+                r.message.empty() ? "" : "  ", r.message.c_str());
+    std::fflush(stdout);
+    table.rows.push_back(csv_row(branch, r, wall));
+  });
+  if (o.has("--unstable")) {
+    // Where the small start decayed and the ramp-down's cycle persisted, both are stable: an
+    // unstable cycle separates them.
+    HuntingSettings short_runs = settings.run;
+    short_runs.settle_time = short_runs.window = short_runs.max_time = 2.0;
+    short_runs.centred_amplitude = 1e-9;
+    const HuntingRunner probe = hunting_runner(spec, contact, r0, short_runs);
+    for (const HuntingRun& cycle : d.ramp_down) {
+      if (!cycle.persists()) continue;
+      bool decayed = false;
+      for (const HuntingRun& c : d.centred)
+        if (c.speed == cycle.speed)
+          decayed = c.state == HuntingState::kCentred || c.state == HuntingState::kDecaying;
+      if (!decayed) continue;
+      const auto start = std::chrono::steady_clock::now();
+      const UnstableCycle u = unstable_cycle(probe, cycle.speed, settings.small_disturbance.y, cycle.cycle.amplitude, 6);
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      HuntingRun row = u.run;
+      row.speed = cycle.speed;
+      row.start.y = 0.5 * (u.decaying_start + u.growing_start);
+      // The estimate drawn: the separating start amplitude (the 2 s run from just below it has
+      // decayed by its end, so its own amplitude says less).
+      row.cycle.amplitude = row.start.y;
+      std::printf("%-11s %8.3f %-12s %11.4f %12.4f %9.4f %8.4f %10.2f %8.2f %7.1f  y0 between %.4f and %.4f mm\n",
+                  "unstable", row.speed, "separatrix", row.cycle.amplitude * 1e3, row.yaw_amplitude * 1e3,
+                  row.cycle.frequency(), row.cycle.growth, row.largest_contact_angle * 180 / M_PI, row.simulated_time,
+                  wall, u.decaying_start * 1e3, u.growing_start * 1e3);
+      table.rows.push_back(csv_row("unstable", row, wall));
+    }
+  }
+  if (linear.found) {
+    std::printf("linear critical speed: %.3f m/s (%.1f km/h), %.4f Hz\n", linear.speed, linear.speed * 3.6,
+                linear.frequency);
+    HuntingRun marker;
+    marker.speed = linear.speed;
+    marker.cycle.period = linear.frequency > 0 ? 1.0 / linear.frequency : 0;
+    marker.state = HuntingState::kCentred;
+    table.rows.push_back(csv_row("linear-critical", marker, 0));
+  } else {
+    std::printf("linear critical speed: none in %g..%g m/s\n", speeds.front(), speeds.back());
+  }
+  if (d.critical.found) {
+    std::printf("nonlinear critical speed: %.3f m/s (%.1f km/h): the lowest speed with a persisting cycle "
+                "(collapsed at %.3f m/s); its amplitude %.3f mm, %.4f Hz\n",
+                d.critical.speed, d.critical.speed * 3.6, d.critical.collapsed_at, d.critical.cycle.cycle.amplitude * 1e3,
+                d.critical.cycle.cycle.frequency());
+    table.rows.push_back(csv_row("nonlinear-critical", d.critical.cycle, 0));
+  } else if (!d.ramp_down.empty() && d.ramp_down.back().state == HuntingState::kFailed) {
+    std::printf("nonlinear critical speed: not found, the ramp-down failed at %.3f m/s: %s\n",
+                d.ramp_down.back().speed, d.ramp_down.back().message.c_str());
+  } else if (!d.ramp_down.empty() && d.ramp_down.back().persists() &&
+             d.ramp_down.back().cycle.amplitude >= settings.persisting_amplitude) {
+    std::printf("nonlinear critical speed: below %g m/s (the cycle persisted down to the lowest speed)\n",
+                speeds.front());
+  } else {
+    std::printf("nonlinear critical speed: none: no persisting cycle at %g m/s from y0 = %g m\n", speeds.back(),
+                settings.large_disturbance.y);
+  }
+  sweep::write_csv_file(csv, table);
+  std::cout << "wrote " << csv << "\n";
+  plot::draw_bifurcation(table, plot::image_request(picture, 1200, 800),
+                         "wrc bifurcation: " + model + " contact, " + plot::geometry_title(geometry_spec));
+  std::cout << "wrote " << picture << "\n";
+  return 0;
+}
+
+const CommandRegistrar registrar{
+    {"bifurcation", "hunting bifurcation diagram by simulation: limit cycles, nonlinear critical speed, plot",
+     run_bifurcation}};
+
+}  // namespace
+}  // namespace wrc::cli

@@ -1,0 +1,151 @@
+#include "core/dynamics/hunting_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "core/dynamics/wheelset_simulation.hpp"
+
+namespace wrc {
+namespace {
+
+void require(bool ok, const char* name, double value, const char* range) {
+  if (!ok)
+    throw std::invalid_argument(std::string("hunting settings: ") + name + " = " + std::to_string(value) +
+                                ", must be " + range);
+}
+
+// The samples of one run, and the judgement of its last window.
+struct Samples {
+  std::vector<double> t, y, yaw, angle;
+};
+
+HuntingState judge(const CycleMeasurement& c, const HuntingSettings& s) {
+  if (c.largest < s.centred_amplitude) return HuntingState::kCentred;
+  if (c.cycles < 2) return HuntingState::kDecaying;  // no oscillation to measure yet (an aperiodic decay)
+  if (c.growth < 1.0 - s.growth_tolerance) return HuntingState::kDecaying;
+  if (c.growth > 1.0 + s.growth_tolerance) return HuntingState::kGrowing;
+  return HuntingState::kLimitCycle;
+}
+
+}  // namespace
+
+void HuntingSettings::validate() const {
+  require(std::isfinite(settle_time) && settle_time > 0, "settle_time", settle_time, "> 0 [s]");
+  require(std::isfinite(max_time) && max_time >= settle_time, "max_time", max_time, ">= settle_time [s]");
+  require(std::isfinite(window) && window > 0 && window <= settle_time, "window", window,
+          "in (0, settle_time] [s] (the start is no part of a cycle)");
+  require(std::isfinite(check_period) && check_period > 0, "check_period", check_period, "> 0 [s]");
+  require(std::isfinite(centred_amplitude) && centred_amplitude > 0, "centred_amplitude", centred_amplitude, "> 0 [m]");
+  require(growth_tolerance > 0 && growth_tolerance < 1, "growth_tolerance", growth_tolerance, "in (0, 1)");
+  require(flange_contact_angle > 0 && flange_contact_angle < M_PI / 2, "flange_contact_angle", flange_contact_angle,
+          "in (0, pi/2) [rad]");
+}
+
+const char* hunting_state_name(HuntingState state) {
+  switch (state) {
+    case HuntingState::kCentred: return "centred";
+    case HuntingState::kDecaying: return "decaying";
+    case HuntingState::kLimitCycle: return "limit-cycle";
+    case HuntingState::kGrowing: return "growing";
+    case HuntingState::kFailed: return "failed";
+  }
+  return "?";
+}
+
+HuntingRun run_hunting(const RunSpec& base, double speed, const InitialState& start,
+                       std::shared_ptr<ContactEvaluator> contact, double nominal_radius,
+                       const HuntingSettings& settings) {
+  settings.validate();
+  if (!(std::isfinite(speed) && speed > 0))
+    throw std::invalid_argument("run_hunting: speed = " + std::to_string(speed) + " m/s, must be > 0");
+  RunSpec spec = base;
+  spec.wheelset.speed = speed;
+  spec.initial = start;
+  spec.track = TrackLayout{};
+  spec.irregularity = TrackIrregularity{};
+  spec.integrator.t_end = settings.max_time;
+  spec.integrator.output_period = 1e-3;
+
+  HuntingRun result;
+  result.speed = speed;
+  result.start = start;
+  Samples s;
+  WheelsetSimulation simulation(spec, std::move(contact), nominal_radius);
+  simulation.on_output([&](const WheelsetSnapshot& w) {
+    s.t.push_back(w.t);
+    s.y.push_back(w.y);
+    s.yaw.push_back(w.yaw);
+    s.angle.push_back(std::max(std::abs(w.wheels[0].contact_angle), std::abs(w.wheels[1].contact_angle)));
+  });
+  // The last window; when it holds fewer than 3 cycles (a slow oscillation: at low speed the
+  // kinematic wavelength of some 5 m takes seconds) and the run is longer than twice the window,
+  // the second half of the run instead, if that holds more.
+  auto measure = [&] {
+    double from = simulation.time() - settings.window;
+    result.cycle = measure_cycle(s.t, s.y, from);
+    if (result.cycle.cycles < 3 && simulation.time() > 2 * settings.window) {
+      const CycleMeasurement longer = measure_cycle(s.t, s.y, 0.5 * simulation.time());
+      if (longer.cycles > result.cycle.cycles) {
+        from = 0.5 * simulation.time();
+        result.cycle = longer;
+      }
+    }
+    result.yaw_amplitude = measure_cycle(s.t, s.yaw, from).amplitude;
+    result.largest_contact_angle = 0;
+    for (std::size_t i = 0; i < s.t.size(); ++i)
+      if (s.t[i] >= from) result.largest_contact_angle = std::max(result.largest_contact_angle, s.angle[i]);
+    result.flange_contact = result.largest_contact_angle > settings.flange_contact_angle;
+    result.state = judge(result.cycle, settings);
+  };
+  try {
+    simulation.start();
+  } catch (const std::exception& e) {
+    result.state = HuntingState::kFailed;
+    result.message = std::string("no consistent initial state: ") + e.what();
+    return result;
+  }
+  // Settled: centred, or a constant amplitude at two successive judgements whose amplitudes agree
+  // within the growth tolerance (a slow decay or growth of less than the tolerance per cycle
+  // shows over the check period's cycles).
+  double next_check = settings.settle_time;
+  bool settled = false;
+  double previous_amplitude = -1;
+  while (simulation.advance()) {
+    if (simulation.time() + 1e-12 < next_check) continue;
+    next_check += settings.check_period;
+    measure();
+    if (result.state == HuntingState::kCentred) {
+      settled = true;
+      break;
+    }
+    if (result.state == HuntingState::kLimitCycle) {
+      if (previous_amplitude > 0 &&
+          std::abs(result.cycle.amplitude / previous_amplitude - 1.0) < settings.growth_tolerance) {
+        settled = true;
+        break;
+      }
+      previous_amplitude = result.cycle.amplitude;
+    } else {
+      previous_amplitude = -1;
+    }
+  }
+  result.simulated_time = simulation.time();
+  if (simulation.state() == RunState::kFailed) {
+    measure();
+    result.state = HuntingState::kFailed;
+    result.message = simulation.message();
+  } else if (!settled) {
+    measure();
+  }
+  const WheelsetSnapshot w = simulation.snapshot();
+  result.end.y = w.y;
+  result.end.yaw = w.yaw;
+  result.end.y_dot = w.y_dot;
+  result.end.yaw_dot = w.yaw_dot;
+  result.end.spin_rate_offset = w.spin_rate - speed / nominal_radius;
+  return result;
+}
+
+}  // namespace wrc

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli/centred_run_options.hpp"
 #include "cli/command.hpp"
 #include "cli/fit_options.hpp"
 #include "cli/in_process_contact.hpp"
@@ -108,21 +109,10 @@ int run_bifurcation(const std::vector<std::string>& args) {
   }
   const std::string model = o.choice("--model", contact_model_names());
   if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
-  RunSpec spec;
-  if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
-  if (o.has("--suspension"))
-    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none" ? PrimarySuspension::none()
-                                                                                         : PrimarySuspension::benchmark();
-  const double file_lateral_force = spec.wheelset.lateral_force;
-  apply_parameter_options(wheelset_parameter_table(), o, spec.wheelset);
+  RunSpec spec = centred_run_spec(o, "hunting about the centred state on straight track");
   for (const auto& p : integrator_settings_table())
     if (is_integrator_option(p.key) && o.has(p.option_name()))
       p.set(spec.integrator, parameter_option_value(p, o.text(p.option_name())));
-  if (!o.has("--lateral-force") && spec.wheelset.lateral_force != 0.0) {
-    std::cout << "lateral load: " << file_lateral_force
-              << " N of the parameters set to 0 (hunting about the centred state on straight track)\n";
-    spec.wheelset.lateral_force = 0.0;
-  }
   const std::vector<double> speeds = parse_speed_scan(o.text("--speeds", "30:90:5"), "--speeds");
   if (speeds.size() < 2) throw UsageError("--speeds: give at least 2 speeds");
   ContinuationSettings settings;

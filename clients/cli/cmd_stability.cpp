@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli/centred_run_options.hpp"
 #include "cli/command.hpp"
 #include "cli/in_process_contact.hpp"
 #include "cli/options.hpp"
@@ -102,18 +103,7 @@ int run_stability(const std::vector<std::string>& args) {
   }
   const std::string model = o.choice("--model", contact_model_names());
   if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
-  RunSpec spec;
-  if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
-  if (o.has("--suspension"))
-    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none" ? PrimarySuspension::none()
-                                                                                         : PrimarySuspension::benchmark();
-  const double file_lateral_force = spec.wheelset.lateral_force;
-  apply_parameter_options(wheelset_parameter_table(), o, spec.wheelset);
-  if (!o.has("--lateral-force") && spec.wheelset.lateral_force != 0.0) {
-    std::cout << "lateral load: " << file_lateral_force
-              << " N of the parameters set to 0 (a centred steady state has no lateral load)\n";
-    spec.wheelset.lateral_force = 0.0;
-  }
+  const RunSpec spec = centred_run_spec(o, "a centred steady state has no lateral load");
   const std::vector<double> speeds = parse_speed_scan(o.text("--speeds", "5:80:1"), "--speeds");
   const std::string csv = o.text("--out", "stability.csv");
   const std::string picture = o.text("--plot", "stability.png");

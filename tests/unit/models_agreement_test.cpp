@@ -150,14 +150,21 @@ TEST(ModelsAgreement, InterpMatchesOnePointAtNodesAndStatedErrorBetween) {
 // Two minima close in distance on the left wheel: y = 5.25 mm, no roll, S1002/UIC60 - flange root
 // (s ~ -28.8 mm, 17 deg) and the tread-side flank (s ~ -18 mm, 7 deg) 15 um apart. One-point puts
 // one ellipse at the common point; multi-point puts an ellipse at both, whose normal forces sum to
-// the load (1e-9) and follow from one common vertical approach of the rigid wheel (1e-12 m).
+// the load (1e-9). The maximum of the distance between them lies below the level the rigid wheel
+// is pressed to, so they are one overlap: the flange root (the deeper) has the wheel's whole
+// vertical approach d, the other d (c - d_1) / (c - d_0), c the maximum between them
+// (interpenetration_regions.hpp); each depth recovered from its patch's Hertz force (1e-12 m).
 TEST(ModelsAgreement, TwoCloseMinimaOnePointVersusMultiPoint) {
   auto g = s1002_uic60();
   OnePointModel one(g);
   MultiPointModel multi(g);
   const ContactQuery q = query(0.00525, 0.0, 0.0, ContactFormulation::kRigid);
   int minima = 0;
-  for (const ContactPoint& p : g->potential_points(WheelSide::kLeft, q.pose)) minima += p.is_minimum ? 1 : 0;
+  double barrier = -1;
+  for (const ContactPoint& p : g->potential_points(WheelSide::kLeft, q.pose)) {
+    minima += p.is_minimum ? 1 : 0;
+    if (!p.is_minimum && minima == 1) barrier = p.distance;
+  }
   ASSERT_EQ(minima, 2);
   const ContactResult r1 = one.evaluate(q);
   const ContactResult rm = multi.evaluate(q);
@@ -172,14 +179,17 @@ TEST(ModelsAgreement, TwoCloseMinimaOnePointVersusMultiPoint) {
   EXPECT_NEAR(left[0]->normal_force + left[1]->normal_force, 80e3, 1e-9 * 80e3);
   EXPECT_GT(left[1]->normal_force, 0.1 * 80e3);
   const double e_star = contact_modulus(8.2e10, 0.28);
-  double approach[2];
+  double depth[2];
   for (int k = 0; k < 2; ++k) {
     const ContactPoint& p = left[static_cast<size_t>(k)]->point;
     const HertzContact h = hertz_from_force(p.relative_curvature_rolling(), p.relative_curvature_lateral(), e_star,
                                             left[static_cast<size_t>(k)]->normal_force);
-    approach[k] = h.penetration / std::cos(p.contact_angle) + p.distance;
+    depth[k] = h.penetration / std::cos(p.contact_angle);
   }
-  EXPECT_NEAR(approach[0], approach[1], 1e-12);
+  const double d0 = left[0]->point.distance, d1 = left[1]->point.distance;
+  ASSERT_LT(barrier, d0 + depth[0]);  // the maximum between them overlaps too: one region
+  EXPECT_NEAR(depth[1], depth[0] * (barrier - d1) / (barrier - d0), 1e-12);
+  EXPECT_LT(d1 + depth[1], d0 + depth[0]);  // less than the common approach the paper's rule gives
   // The split changes the lateral force on the wheelset: a smaller flange-root share means less
   // lateral normal-force component pushing the wheelset back.
   EXPECT_GT(rm.force.y(), r1.force.y());

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/models/interpenetration_regions.hpp"
 #include "core/numerics/brent.hpp"
 
 namespace wrc {
@@ -32,11 +33,19 @@ LoadDivision divide_load(double load, const std::vector<DivisionPoint>& points) 
   out.penetration.assign(points.size(), 0.0);
   if (load == 0.0) return out;
 
+  std::vector<DistanceMinimum> chain(points.size());
+  for (size_t k = 0; k < points.size(); ++k) chain[k] = {points[k].gap, points[k].barrier_after};
+  auto penetrations = [&](double d) {
+    std::vector<double> delta = region_depths(chain, d);
+    for (size_t k = 0; k < points.size(); ++k) delta[k] *= points[k].cos_angle;
+    return delta;
+  };
   auto total = [&](double d) {
     double sum = 0;
-    for (const DivisionPoint& p : points) {
-      const double delta = (d - p.gap) * p.cos_angle;
-      if (delta > 0) sum += p.stiffness * delta * std::sqrt(delta);
+    const std::vector<double> delta_at_d = penetrations(d);
+    for (size_t k = 0; k < points.size(); ++k) {
+      const double delta = delta_at_d[k];
+      if (delta > 0) sum += points[k].stiffness * delta * std::sqrt(delta);
     }
     return sum;
   };
@@ -48,8 +57,9 @@ LoadDivision divide_load(double load, const std::vector<DivisionPoint>& points) 
   out.approach = require_converged(root, "load division: common approach for a load of " + std::to_string(load) + " N");
 
   double sum = 0;
+  const std::vector<double> delta_at_approach = penetrations(out.approach);
   for (size_t k = 0; k < points.size(); ++k) {
-    const double delta = (out.approach - points[k].gap) * points[k].cos_angle;
+    const double delta = delta_at_approach[k];
     if (delta > 0) {
       out.penetration[k] = delta;
       out.normal_force[k] = points[k].stiffness * delta * std::sqrt(delta);

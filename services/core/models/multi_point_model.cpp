@@ -1,5 +1,6 @@
 #include "core/models/multi_point_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include "core/model_interface/query_validation.hpp"
 #include "core/model_interface/wheelset_motion.hpp"
 #include "core/models/flange_climb.hpp"
+#include "core/models/interpenetration_regions.hpp"
 #include "core/models/load_division.hpp"
 #include "core/models/one_point_model.hpp"
 #include "core/models/wheel_constraint.hpp"
@@ -22,9 +24,19 @@ WheelConstraint MultiPointModel::add_wheel_patches(WheelSide side, const PatchCo
                                                    ContactResult& result) const {
   const double floor = options_.lateral_curvature_floor;
   const ContactQuery& query = context.query;
+  // The minima along C, and the highest point between each and the next (the regions' barriers).
   std::vector<ContactPoint> minima;
-  for (ContactPoint& p : geometry_->potential_points(side, query.pose, options_.search))
-    if (p.is_minimum) minima.push_back(std::move(p));
+  std::vector<double> barrier_after;
+  for (ContactPoint& p : geometry_->potential_points(side, query.pose, options_.search)) {
+    if (p.is_minimum) {
+      minima.push_back(std::move(p));
+      barrier_after.push_back(std::numeric_limits<double>::infinity());
+    } else if (!minima.empty()) {
+      double& barrier = barrier_after.back();
+      barrier = std::isinf(barrier) ? p.distance : std::max(barrier, p.distance);
+    }
+  }
+  if (!minima.empty()) barrier_after.back() = std::numeric_limits<double>::infinity();
   size_t closest = 0;
   for (size_t k = 1; k < minima.size(); ++k)
     if (minima[k].distance < minima[closest].distance) closest = k;
@@ -32,10 +44,19 @@ WheelConstraint MultiPointModel::add_wheel_patches(WheelSide side, const PatchCo
   // Every minimum carries its own force, so nothing jumps: the constraint is the lowest point's.
   const WheelConstraint constraint =
       exact_point_constraint(minima[closest], query.pose, kNoSwitch, std::numeric_limits<double>::quiet_NaN());
+  // A maximum is never below the minima beside it; a root found to 1e-12 m in s may be by rounding.
+  auto barrier_of = [&](size_t k) {
+    return k + 1 < minima.size() ? std::max({barrier_after[k], minima[k].distance, minima[k + 1].distance})
+                                 : barrier_after[k];
+  };
   if (query.formulation == ContactFormulation::kElastic) {
-    for (const ContactPoint& p : minima) {
-      const double delta = normal_penetration(p);
-      if (delta > 0.0) result.patches.push_back(patch_from_penetration(p, contact_shape(p, floor), delta, context));
+    std::vector<DistanceMinimum> chain;
+    for (size_t k = 0; k < minima.size(); ++k) chain.push_back({minima[k].distance, barrier_of(k)});
+    const std::vector<double> depth = region_depths(chain, 0.0);
+    for (size_t k = 0; k < minima.size(); ++k) {
+      const double delta = depth[k] * std::cos(minima[k].contact_angle);
+      if (delta > 0.0)
+        result.patches.push_back(patch_from_penetration(minima[k], contact_shape(minima[k], floor), delta, context));
     }
     return constraint;
   }
@@ -43,21 +64,28 @@ WheelConstraint MultiPointModel::add_wheel_patches(WheelSide side, const PatchCo
   if (!(load > 0.0)) return constraint;
   // The closest minimum alone carrying the load bounds the approach: minima farther away than
   // that cannot be reached and need no Hertz shape (their curvatures may not even be Hertzian).
+  // Leaving one out joins the barriers on either side (the higher of them), which leaves every
+  // other point's depth unchanged: the minimum lies above every level the division tries.
   const PatchShape closest_shape = contact_shape(minima[closest], floor);
   const double closest_cos = std::cos(minima[closest].contact_angle);
   const double reach = std::pow(load / hertz_stiffness(closest_shape.shape, context.contact_modulus), 2.0 / 3.0) /
                        closest_cos;
+  const double lowest = minima[closest].distance;
   std::vector<PatchShape> shapes;
   std::vector<DivisionPoint> division;
   std::vector<size_t> index;
   for (size_t k = 0; k < minima.size(); ++k) {
-    const double gap = minima[k].distance - minima[closest].distance;
-    if (k != closest && !(gap < reach)) continue;
+    const double gap = minima[k].distance - lowest;
+    if (k != closest && !(gap < reach)) {
+      if (!division.empty()) division.back().barrier_after = std::max(division.back().barrier_after, barrier_of(k) - lowest);
+      continue;
+    }
     shapes.push_back(k == closest ? closest_shape : contact_shape(minima[k], floor));
     division.push_back({hertz_stiffness(shapes.back().shape, context.contact_modulus), gap,
-                        std::cos(minima[k].contact_angle)});
+                        std::cos(minima[k].contact_angle), barrier_of(k) - lowest});
     index.push_back(k);
   }
+  if (!division.empty()) division.back().barrier_after = std::numeric_limits<double>::infinity();
   const LoadDivision split = divide_load(load, division);
   for (size_t j = 0; j < index.size(); ++j) {
     if (split.normal_force[j] > 0.0)

@@ -190,7 +190,8 @@ TEST(ModelsAgreement, TwoCloseMinimaOnePointVersusMultiPoint) {
   ASSERT_LT(barrier, d0 + depth[0]);  // the maximum between them overlaps too: one region
   EXPECT_NEAR(depth[1], depth[0] * (barrier - d1) / (barrier - d0), 1e-12);
   EXPECT_LT(d1 + depth[1], d0 + depth[0]);  // less than the common approach the paper's rule gives
-  std::printf("two close minima: depths %.2f and %.2f um, the second %.3f of the paper's (%.2f um); forces %.0f, %.0f N\n",
+  std::printf("two close minima: depths %.2f and %.2f um, the second %.3f of the paper's (%.2f um); "
+              "forces %.0f, %.0f N\n",
               depth[0] * 1e6, depth[1] * 1e6, depth[1] / (d0 + depth[0] - d1), (d0 + depth[0] - d1) * 1e6,
               left[0]->normal_force, left[1]->normal_force);
   // The split changes the lateral force on the wheelset: a smaller flange-root share means less

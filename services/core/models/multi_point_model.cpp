@@ -77,7 +77,10 @@ WheelConstraint MultiPointModel::add_wheel_patches(WheelSide side, const PatchCo
   for (size_t k = 0; k < minima.size(); ++k) {
     const double gap = minima[k].distance - lowest;
     if (k != closest && !(gap < reach)) {
-      if (!division.empty()) division.back().barrier_after = std::max(division.back().barrier_after, barrier_of(k) - lowest);
+      if (!division.empty()) {
+        double& joined = division.back().barrier_after;
+        joined = std::max(joined, barrier_of(k) - lowest);
+      }
       continue;
     }
     shapes.push_back(k == closest ? closest_shape : contact_shape(minima[k], floor));

@@ -127,5 +127,21 @@ TEST(GeometryPotentialPoints, FindsCloseRootPairAtNearTangency) {
   for (size_t i = 0; i < points.size(); ++i) EXPECT_NEAR(points[i].s, reference[i], 1e-6);
 }
 
+// The highest distance between two neighbouring minima (what the multi-point model needs where the
+// search listed no maximum between them) is the listed maximum's distance: S1002/UIC60 centred,
+// left wheel, minima at s = -7.4 and 3.2 mm with a maximum 1.4 um above the higher one; the golden
+// section's 60 steps locate the maximum in s to below 1e-12 m, so the distances agree to rounding
+// (2e-15 m asked).
+TEST(GeometryPotentialPoints, HighestDistanceBetweenTwoMinimaIsTheListedMaximum) {
+  const WheelsetGeometry g(make_profile("S1002", ProfileSide::kWheel), make_profile("UIC60", ProfileSide::kRail));
+  WheelsetPose pose;
+  pose.z = 0.46;
+  const ContactLocus locus = g.locus(WheelSide::kLeft, pose);
+  const auto points = find_potential_points(locus);
+  ASSERT_EQ(points.size(), 3u);
+  ASSERT_TRUE(points[0].is_minimum && !points[1].is_minimum && points[2].is_minimum);
+  EXPECT_NEAR(highest_distance_between(locus, points[0].s, points[2].s), points[1].distance, 2e-15);
+}
+
 }  // namespace
 }  // namespace wrc

@@ -1,8 +1,9 @@
 // The sharing of a wheel's approach among minima of one connected overlap
 // (interpenetration_regions.hpp): separate regions keep their full depth, the deepest minimum always
 // keeps its own, a minimum born at a fold starts from 0, and the depths are continuous where the
-// rule changes its case (birth, separation, two minima passing each other, equal maxima) and never
-// exceed a minimum's own depth below the level.
+// rule changes its case (birth, separation, two minima passing each other, equal maxima; not at a
+// flat region, where a birth and a crossing coincide) and never exceed a minimum's own depth below
+// the level.
 
 #include <gtest/gtest.h>
 
@@ -81,6 +82,18 @@ TEST(ModelsInterpenetrationRegions, EqualBarriersGiveOneAnswer) {
   for (const auto& other : {region_depths({{-100e-6, -40e-6 + e}, {-70e-6, -40e-6}, {-50e-6}}, 0.0),
                             region_depths({{-100e-6, -40e-6}, {-70e-6, -40e-6 + e}, {-50e-6}}, 0.0)})
     for (size_t k = 0; k < 3; ++k) EXPECT_NEAR(other[k], tie[k], 1e-10) << "minimum " << k;
+}
+
+// The one discontinuity (interpenetration_regions.hpp): two minima and the barrier between them at
+// one height. There both have the full depth (the region has no height, region_height == 0); a
+// minimum 1e-12 m lower than the other makes the other a minimum just born, with depth 0.
+TEST(ModelsInterpenetrationRegions, FlatRegionIsTheOneDiscontinuity) {
+  const std::vector<double> flat = region_depths({{-90e-6, -90e-6}, {-90e-6}}, 0.0);
+  EXPECT_DOUBLE_EQ(flat[0], 90e-6);
+  EXPECT_DOUBLE_EQ(flat[1], 90e-6);
+  const std::vector<double> tilted = region_depths({{-90e-6 - 1e-12, -90e-6}, {-90e-6}}, 0.0);
+  EXPECT_NEAR(tilted[0], 90e-6, 1e-11);
+  EXPECT_EQ(tilted[1], 0.0);
 }
 
 // Over random chains of up to four minima and random levels: every depth is in [0, level -

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 #include <stdexcept>
 
 #include "core/models/load_division.hpp"
@@ -53,6 +55,29 @@ TEST(ModelsLoadDivision, CommonApproachAndSum) {
   EXPECT_LT(d.normal_force[0], d.normal_force[1]);
 }
 
+// Two points in one overlap (the maximum between them, 30 um above the closer point, lies below
+// the approach): the closer point has the whole approach d, the other the depth d (c - g_1) / c
+// (interpenetration_regions.hpp, c the barrier above the closer point), the forces still sum to
+// the load; the same points with the barrier at or above the approach divide as the paper's rule
+// (each d - gap), which a barrier of +infinity reproduces exactly.
+TEST(ModelsLoadDivision, PointsOfOneOverlapShareItsDepth) {
+  std::vector<DivisionPoint> points{{1.3e11, 0.0, std::cos(0.12), 30e-6}, {0.8e11, 12e-6, std::cos(0.3)}};
+  const LoadDivision d = divide_load(80e3, points);
+  ASSERT_EQ(d.active, 2);
+  ASSERT_GT(d.approach, 30e-6);  // the barrier is below the approach: one overlap
+  EXPECT_NEAR(d.normal_force[0] + d.normal_force[1], 80e3, 1e-9);
+  EXPECT_NEAR(d.penetration[0], d.approach * points[0].cos_angle, 1e-15);
+  EXPECT_NEAR(d.penetration[1], d.approach * (30e-6 - 12e-6) / 30e-6 * points[1].cos_angle, 1e-15);
+  EXPECT_LT(d.penetration[1], (d.approach - 12e-6) * points[1].cos_angle);
+  points[0].barrier_after = std::numeric_limits<double>::infinity();
+  const LoadDivision separate = divide_load(80e3, points);
+  points[0].barrier_after = 1e-3;  // far above any approach
+  const LoadDivision high = divide_load(80e3, points);
+  EXPECT_EQ(separate.approach, high.approach);
+  EXPECT_NEAR(separate.penetration[1], (separate.approach - 12e-6) * points[1].cos_angle, 1e-15);
+  EXPECT_LT(separate.approach, d.approach);  // shared depths carry less: the wheel goes deeper
+}
+
 // Zero load gives zero forces; malformed input throws.
 TEST(ModelsLoadDivision, EdgeCases) {
   const LoadDivision zero = divide_load(0.0, {{1e11, 0.0, 1.0}});
@@ -63,6 +88,9 @@ TEST(ModelsLoadDivision, EdgeCases) {
   EXPECT_THROW(divide_load(1.0, {{0.0, 0.0, 1.0}}), std::invalid_argument);
   EXPECT_THROW(divide_load(1.0, {{1e11, -1e-6, 1.0}}), std::invalid_argument);
   EXPECT_THROW(divide_load(1.0, {{1e11, 0.0, 0.0}}), std::invalid_argument);
+  // A barrier below a point it separates, also with no load to divide.
+  EXPECT_THROW(divide_load(0.0, {{1e11, 0.0, 1.0, 5e-6}, {1e11, 10e-6, 1.0}}), std::invalid_argument);
+  EXPECT_THROW(divide_load(1.0, {{1e11, 0.0, 1.0, std::nan("")}}), std::invalid_argument);
 }
 
 }  // namespace

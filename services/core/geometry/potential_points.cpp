@@ -235,6 +235,19 @@ std::vector<ContactPoint> roots_of(const ContactLocus& locus, const std::vector<
 
 }  // namespace
 
+double highest_distance_between(const ContactLocus& locus, double s0, double s1) {
+  // 60 golden sections shrink [s0, s1] (at most a few centimetres) below 1e-12 m.
+  bool off_rail = false;
+  auto distance = [&](double s) {
+    const double d = locus.at(s).distance;
+    off_rail = off_rail || std::isnan(d);
+    return d;
+  };
+  const double s_top = golden_extremum(distance, s0, s1, -1.0, 60).s;
+  const double top = distance(s_top);
+  return off_rail ? std::numeric_limits<double>::quiet_NaN() : top;
+}
+
 std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const PotentialPointSearch& search) {
   ScanScratch& scratch = scan_scratch();
   sample_locus(locus, search, std::numeric_limits<double>::infinity(), scratch);

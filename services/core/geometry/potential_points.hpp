@@ -28,6 +28,12 @@ struct PotentialPointSearch {
 /// Local minima and maxima of the distance are both returned; is_minimum tells them apart.
 std::vector<ContactPoint> find_potential_points(const ContactLocus& locus, const PotentialPointSearch& search = {});
 
+/// The highest vertical distance of C between s0 and s1 [m] (s0 < s1; two neighbouring local minima,
+/// where the search listed no maximum between them: a pair of roots closer than its tolerance, or a
+/// maximum at a slope jump of a yawed wheel), found by a golden-section search; NaN when C leaves
+/// the rail inside [s0, s1].
+double highest_distance_between(const ContactLocus& locus, double s0, double s1);
+
 /// The local minima of the distance along C whose distance is below level [m], and nothing else:
 /// a certificate that no point of C lies lower. Much cheaper than find_potential_points where the
 /// distance is well above the level, since a step may then span the whole stretch over which a

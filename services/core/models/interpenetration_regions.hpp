@@ -9,10 +9,11 @@
 /// surfaces overlap, the two minima are one connected overlap, and giving each its full depth below
 /// that level counts the overlap between them twice. Worse, a minimum appears and disappears with
 /// its neighbouring maximum at a fold of the distance (S1002 on UIC60 in the centred position:
-/// the minima at s = 3 mm and -8 mm are 1 to 10 um apart in height, with 100 um of overlap), so a
+/// the minima at s = 3.2 mm and -7.4 mm are 8.5 um apart in height, the maximum between them 1.4 um
+/// above the higher one, under about 100 um of overlap), so a
 /// patch with the full depth would be born or vanish at once, and near the fold the relative
 /// curvature goes to zero and its Hertz stiffness grows without bound: measured, a jump of 470 kN of
-/// normal force between y = 0.50 and 0.55 mm at a fixed height.
+/// normal force at the fold near y = 0.501 mm at a fixed height.
 ///
 /// The rule: a minimum whose region is separated from the others (every maximum between them at
 /// or above the level) keeps its full depth below the level. In one connected region the deepest
@@ -24,7 +25,10 @@
 ///  - continuous in every distance and in the level: 0 when a minimum is born at a fold (h = 0),
 ///    the full depth when the maximum rises to the level (the regions separate), equal depths when
 ///    two minima in one region pass each other, and independent of the order in which equal maxima
-///    are split;
+///    are split. One exception, which no rule that keeps the deepest minimum's full depth avoids:
+///    where two minima and the maximum between them lie at one height (a birth and a crossing at
+///    once), the depth of the other minimum jumps between 0 and the full depth (there both get the
+///    full depth); a flat stretch of the distance, which profiles do not have in practice;
 ///  - never more than the minimum's own depth below the level, non-decreasing in the level, and
 ///    the deepest minimum always has its full depth (so the force still grows with the approach).
 /// It is a regularisation of the multi-Hertzian idealisation, not a contact theory: where minima

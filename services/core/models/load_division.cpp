@@ -1,5 +1,6 @@
 #include "core/models/load_division.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -24,6 +25,13 @@ LoadDivision divide_load(double load, const std::vector<DivisionPoint>& points) 
       std::ostringstream msg;
       msg << "divide_load: point " << k << ": stiffness = " << p.stiffness << " N/m^1.5, gap = " << p.gap
           << " m, cos(angle) = " << p.cos_angle << " (need stiffness > 0, gap >= 0, 0 < cos <= 1)";
+      throw std::invalid_argument(msg.str());
+    }
+    const double next_gap = k + 1 < points.size() ? points[k + 1].gap : p.gap;
+    if (std::isnan(p.barrier_after) || (k + 1 < points.size() && !(p.barrier_after >= std::max(p.gap, next_gap)))) {
+      std::ostringstream msg;
+      msg << "divide_load: point " << k << ": barrier_after = " << p.barrier_after << " m lies below the gap "
+          << p.gap << " m or the next point's " << next_gap << " m (a maximum is above the minima it separates)";
       throw std::invalid_argument(msg.str());
     }
     if (p.gap < points[closest].gap) closest = k;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/contact/hertz.hpp"
+#include "core/geometry/potential_points.hpp"
 #include "core/model_interface/patch_builder.hpp"
 #include "core/model_interface/query_validation.hpp"
 #include "core/model_interface/wheelset_motion.hpp"
@@ -37,6 +38,14 @@ WheelConstraint MultiPointModel::add_wheel_patches(WheelSide side, const PatchCo
     }
   }
   if (!minima.empty()) barrier_after.back() = std::numeric_limits<double>::infinity();
+  // No maximum listed between two minima (a root pair closer than the search's tolerance, or a
+  // maximum at a slope jump): the barrier is searched for, so that a missed maximum cannot turn one
+  // overlap into two with full depths; where C leaves the rail between them they are separate.
+  for (size_t k = 0; k + 1 < minima.size(); ++k) {
+    if (!std::isinf(barrier_after[k])) continue;
+    const double top = highest_distance_between(geometry_->locus(side, query.pose), minima[k].s, minima[k + 1].s);
+    if (!std::isnan(top)) barrier_after[k] = top;
+  }
   size_t closest = 0;
   for (size_t k = 1; k < minima.size(); ++k)
     if (minima[k].distance < minima[closest].distance) closest = k;

@@ -534,7 +534,7 @@ TEST(WheelsetOnIrregularTrack, EveryModelRunsThroughAGeneratedTrack) {
 // kilonewtons, and the first 4 s of the 1 km track of docs/track.md took 72249 steps (now 5352).
 // Here multipoint takes 2557 steps; asked: fewer than 1e4. The
 // one-point model runs it too, to -3.54 mm, but with about 4000 restarts in 30 s of wall time; the
-// bus test RigidModelsRunACurveOverIrregularTrack runs it on a longer curve.
+// bus test EveryModelRunsACurveOverIrregularTrack runs it on a longer curve.
 TEST(WheelsetOnIrregularTrack, ModelsRunACurveWithItsTransitionOverIrregularTrack) {
   RunSpec spec = straight_run(30.0, 4.0);
   spec.track = TrackLayout({{TrackSegmentKind::kStraight, 20, 0, true, 0},

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/dynamics/run_parameters_file.hpp"
@@ -265,6 +267,43 @@ TEST(RunParameterFile, ShippedLowFrictionFileDiffersOnlyInFriction) {
     if (std::string(p.key) == "friction") continue;
     EXPECT_EQ(p.get(read), p.get(defaults)) << p.key;
   }
+}
+
+// A contact source that answers its first queries from the multi-point model and then, as a
+// model does outside its range, refuses every configuration (ContactConfigurationError).
+class FailingAfter final : public ContactEvaluator {
+ public:
+  explicit FailingAfter(long answers)
+      : model_(make_contact_model("multipoint", test::s1002_uic60_geometry())), left_(answers) {}
+  std::string model() const override { return "multipoint"; }
+  std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch) override {
+    if (--left_ < 0) throw ContactConfigurationError("test: configuration refused");
+    std::vector<ContactResult> out;
+    for (const ContactQuery& q : batch) out.push_back(model_->evaluate(q));
+    return out;
+  }
+
+ private:
+  std::shared_ptr<const ContactModel> model_;
+  long left_;
+};
+
+// When the integrator gives up, the run's message has the contact's error and IDA's own text, and
+// IDA prints nothing itself (its messages go to the run: a failure the run recovers from, a
+// convergence restart of rigid contact, would otherwise print "[IDA ERROR]" to a user's terminal).
+TEST(WheelsetSimulation, SolverFailureMessageHasIdasTextAndNothingIsPrinted) {
+  RunSpec spec;
+  spec.integrator.t_end = 1.0;
+  WheelsetSimulation sim(spec, std::make_shared<FailingAfter>(200), kR0);
+  testing::internal::CaptureStderr();
+  sim.run();
+  const std::string printed = testing::internal::GetCapturedStderr();
+  ASSERT_EQ(sim.state(), RunState::kFailed);
+  EXPECT_NE(sim.message().find("IDASolve failed"), std::string::npos) << sim.message();
+  EXPECT_NE(sim.message().find("test: configuration refused"), std::string::npos) << sim.message();
+  EXPECT_NE(sim.message().find("(IDASolve: "), std::string::npos) << sim.message();
+  EXPECT_EQ(printed.find("IDA ERROR"), std::string::npos) << printed;
+  std::cout << "[ measured ] " << sim.message() << "\n";
 }
 
 }  // namespace

@@ -53,6 +53,10 @@ int ida_jacobian(sunrealtype t, sunrealtype cj, N_Vector y, N_Vector yp, N_Vecto
   return self(user)->jacobian_callback(cj, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r), jac);
 }
 
+void ida_message(int, const char*, const char* function, char* text, void* user) {
+  self(user)->solver_message(function, text);
+}
+
 int ida_roots(sunrealtype t, N_Vector y, N_Vector, sunrealtype* g, void* user) {
   self(user)->place_on_track(t);
   return self(user)->root_callback(N_VGetArrayPointer(y), g);
@@ -208,6 +212,10 @@ int WheelsetSimulation::jacobian_callback(double cj, const double* y, const doub
   }
 }
 
+void WheelsetSimulation::solver_message(const char* function, const char* text) {
+  last_solver_message_ = std::string(function ? function : "IDA") + ": " + (text ? text : "");
+}
+
 int WheelsetSimulation::root_callback(const double* y, double* g) {
   try {
     const ContactResult& c = contact_at(y);
@@ -322,6 +330,7 @@ void WheelsetSimulation::begin_segment(std::vector<double> y, bool first) {
     ida_.create(ctx_.get(), ida_residual, t_, y_->get(), yp_->get());
     void* mem = ida_.mem();
     check_sundials(IDASetUserData(mem, this), "IDASetUserData");
+    check_sundials(IDASetErrHandlerFn(mem, ida_message, this), "IDASetErrHandlerFn");
     check_sundials(IDASVtolerances(mem, s.relative_tolerance, atol_->get()), "IDASVtolerances");
     check_sundials(IDASetId(mem, id_->get()), "IDASetId");
     check_sundials(IDASetJacFn(mem, ida_jacobian), "IDASetJacFn");
@@ -753,6 +762,7 @@ bool WheelsetSimulation::advance() {
     const double t_stop = t_end;
     check_sundials(IDASetStopTime(ida_.mem(), t_stop), "IDASetStopTime");
     last_contact_error_.clear();
+    last_solver_message_.clear();
     double t_reached = t_;
     const int flag = IDASolve(ida_.mem(), t_stop, &t_reached, y_->get(), yp_->get(), IDA_ONE_STEP);
     if (flag == IDA_CONV_FAIL && formulation_ == ContactFormulation::kRigid &&
@@ -764,6 +774,7 @@ bool WheelsetSimulation::advance() {
       std::ostringstream msg;
       msg << "IDASolve failed with flag " << flag << " at t = " << format_time(t_);
       if (!last_contact_error_.empty()) msg << ": " << last_contact_error_;
+      if (!last_solver_message_.empty()) msg << " (" << last_solver_message_ << ")";
       fail(msg.str());
       return false;
     }

@@ -110,6 +110,9 @@ class WheelsetSimulation {
   int residual_callback(const double* y, const double* yp, double* r);
   int jacobian_callback(double cj, const double* y, const double* yp, const double* r, SUNMatrix jac);
   int root_callback(const double* y, double* g);
+  /// IDA's error and warning text [-]: kept for the run's failure message instead of printed (a
+  /// failure the run recovers from, a convergence restart, is no error for the user).
+  void solver_message(const char* function, const char* text);
 
  private:
   struct CachedContact {
@@ -181,6 +184,7 @@ class WheelsetSimulation {
   RunState state_ = RunState::kRunning;
   std::string message_;
   std::string last_contact_error_;
+  std::string last_solver_message_;  // IDA's last error or warning text, for a failure's message
   bool stop_requested_ = false;
   std::shared_ptr<ContactEvaluator> pending_swap_;
   double scheduled_swap_time_ = -1;

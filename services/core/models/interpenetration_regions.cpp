@@ -44,12 +44,7 @@ void assign_depths(const std::vector<DistanceMinimum>& minima, size_t first, siz
 
 }  // namespace
 
-std::vector<double> region_depths(const std::vector<DistanceMinimum>& minima, double level) {
-  if (!std::isfinite(level)) {
-    std::ostringstream msg;
-    msg << "region_depths: level = " << level << " m is not finite";
-    throw std::invalid_argument(msg.str());
-  }
+void check_distance_minima(const std::vector<DistanceMinimum>& minima, const char* who) {
   for (size_t k = 0; k < minima.size(); ++k) {
     const DistanceMinimum& m = minima[k];
     const bool last = k + 1 == minima.size();
@@ -57,11 +52,20 @@ std::vector<double> region_depths(const std::vector<DistanceMinimum>& minima, do
     if (!std::isfinite(m.distance) || std::isnan(m.barrier_after) ||
         (!last && !(m.barrier_after >= std::max(m.distance, next)))) {
       std::ostringstream msg;
-      msg << "region_depths: minimum " << k << ": distance = " << m.distance << " m, barrier_after = "
-          << m.barrier_after << " m (need finite distances and a barrier not below the two minima it separates)";
+      msg << who << ": minimum " << k << ": distance = " << m.distance << " m, barrier_after = " << m.barrier_after
+          << " m (need finite distances and a barrier not below the two minima it separates)";
       throw std::invalid_argument(msg.str());
     }
   }
+}
+
+std::vector<double> region_depths(const std::vector<DistanceMinimum>& minima, double level) {
+  if (!std::isfinite(level)) {
+    std::ostringstream msg;
+    msg << "region_depths: level = " << level << " m is not finite";
+    throw std::invalid_argument(msg.str());
+  }
+  check_distance_minima(minima, "region_depths");
   std::vector<double> depth(minima.size(), 0.0);
   if (!minima.empty()) assign_depths(minima, 0, minima.size() - 1, level, depth);
   return depth;

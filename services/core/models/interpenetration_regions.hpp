@@ -49,6 +49,11 @@ struct DistanceMinimum {
   double barrier_after = std::numeric_limits<double>::infinity();
 };
 
+/// Checks a chain of minima as region_depths() needs it: finite distances, and every barrier (but
+/// the last one's) not NaN and not below the two minima it separates.
+/// @throws std::invalid_argument whose message starts with who and names the minimum and values.
+void check_distance_minima(const std::vector<DistanceMinimum>& minima, const char* who);
+
 /// The vertical depth of every minimum below level [m] (same reference as the distances; points
 /// with a distance below level overlap) after the sharing rule above: >= 0, at most level -
 /// distance, 0 where the minimum does not reach the level.

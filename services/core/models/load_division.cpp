@@ -1,6 +1,5 @@
 #include "core/models/load_division.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -27,22 +26,16 @@ LoadDivision divide_load(double load, const std::vector<DivisionPoint>& points) 
           << " m, cos(angle) = " << p.cos_angle << " (need stiffness > 0, gap >= 0, 0 < cos <= 1)";
       throw std::invalid_argument(msg.str());
     }
-    const double next_gap = k + 1 < points.size() ? points[k + 1].gap : p.gap;
-    if (std::isnan(p.barrier_after) || (k + 1 < points.size() && !(p.barrier_after >= std::max(p.gap, next_gap)))) {
-      std::ostringstream msg;
-      msg << "divide_load: point " << k << ": barrier_after = " << p.barrier_after << " m lies below the gap "
-          << p.gap << " m or the next point's " << next_gap << " m (a maximum is above the minima it separates)";
-      throw std::invalid_argument(msg.str());
-    }
     if (p.gap < points[closest].gap) closest = k;
   }
+  std::vector<DistanceMinimum> chain(points.size());
+  for (size_t k = 0; k < points.size(); ++k) chain[k] = {points[k].gap, points[k].barrier_after};
+  check_distance_minima(chain, "divide_load");  // also with no load to divide
   LoadDivision out;
   out.normal_force.assign(points.size(), 0.0);
   out.penetration.assign(points.size(), 0.0);
   if (load == 0.0) return out;
 
-  std::vector<DistanceMinimum> chain(points.size());
-  for (size_t k = 0; k < points.size(); ++k) chain[k] = {points[k].gap, points[k].barrier_after};
   auto penetrations = [&](double d) {
     std::vector<double> delta = region_depths(chain, d);
     for (size_t k = 0; k < points.size(); ++k) delta[k] *= points[k].cos_angle;

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "cli/run_options.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
 #include "options/parameter_options.hpp"
@@ -14,12 +15,8 @@ RunSpec centred_run_spec(const Options& o, const std::string& why) {
   if (o.has("--suspension"))
     spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none" ? PrimarySuspension::none()
                                                                                          : PrimarySuspension::benchmark();
-  const double file_lateral_force = spec.wheelset.lateral_force;
   apply_parameter_options(wheelset_parameter_table(), o, spec.wheelset);
-  if (!o.has("--lateral-force") && spec.wheelset.lateral_force != 0.0) {
-    std::cout << "lateral load: " << file_lateral_force << " N of the parameters set to 0 (" << why << ")\n";
-    spec.wheelset.lateral_force = 0.0;
-  }
+  zero_lateral_load_unless_given(o, spec.wheelset, why, std::cout);
   return spec;
 }
 

@@ -12,7 +12,8 @@
 namespace wrc::cli {
 
 /// The run spec of the options o; a lateral load from the parameters (not from --lateral-force)
-/// is set to 0, and a line on standard output says so with `why`.
+/// is set to 0, and a line on standard output says so with `why` (zero_lateral_load_unless_given,
+/// cli/run_options.hpp).
 RunSpec centred_run_spec(const Options& o, const std::string& why);
 
 }  // namespace wrc::cli

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <thread>
 
 #include "cli/command.hpp"
@@ -91,9 +92,21 @@ sweep::SweepLayout checked_layout(const SweepDefinition& d, bool check_every_poi
   for (const sweep::GridAxis& a : d.axes) units.push_back(grid_key_unit(a.key));
   protocol::RunRequest example;
   std::set<std::string> geometries;
-  for (std::size_t p = 0; p < (check_every_point ? grid.size() : 1); ++p) {
+  // What `wrc run` would print about a point's run (a lateral load set to 0 on a track), once per
+  // distinct line with the number of points it applies to.
+  std::vector<std::pair<std::string, std::size_t>> notes;
+  const std::size_t checked = check_every_point ? grid.size() : 1;
+  for (std::size_t p = 0; p < checked; ++p) {
     try {
-      const protocol::RunRequest request = sweep_run_request(run_arguments(d, grid.point(p)), "check");
+      std::ostringstream note;
+      const protocol::RunRequest request = sweep_run_request(run_arguments(d, grid.point(p)), "check", note);
+      if (!note.str().empty()) {
+        auto same = std::find_if(notes.begin(), notes.end(), [&](const auto& n) { return n.first == note.str(); });
+        if (same == notes.end())
+          notes.emplace_back(note.str(), 1);
+        else
+          ++same->second;
+      }
       // Built once per distinct geometry (its options as wrc-contactd would get them).
       std::string key;
       for (const std::string& a : geometry_arguments(request.geometry)) key += a + '\n';
@@ -103,6 +116,12 @@ sweep::SweepLayout checked_layout(const SweepDefinition& d, bool check_every_poi
       throw UsageError("grid point " + std::to_string(p) + " (" + point_text(d, grid, p) + "): " + e.what());
     }
   }
+  for (const auto& [line, points] : notes)
+    std::cerr << "sweep: "
+              << (!check_every_point ? "grid point 0"
+                  : points == checked ? "every run"
+                                      : std::to_string(points) + " of " + std::to_string(checked) + " runs")
+              << ": " << line;
   std::vector<std::string> names;
   const std::vector<ResultColumn> columns = result_columns(d.extract, example);
   bool critical = false;
@@ -115,7 +134,8 @@ sweep::SweepLayout checked_layout(const SweepDefinition& d, bool check_every_poi
 }
 
 std::vector<ResultColumn> columns_of(const SweepDefinition& d, const sweep::Grid& grid) {
-  return result_columns(d.extract, sweep_run_request(run_arguments(d, grid.point(0)), "check"));
+  std::ostringstream unused;  // checked_layout has said it
+  return result_columns(d.extract, sweep_run_request(run_arguments(d, grid.point(0)), "check", unused));
 }
 
 // `wrc sweep --run-point I --work-dir DIR`: one run into its row file.

@@ -42,6 +42,13 @@ std::vector<protocol::ScheduledSwap> parse_swaps(const std::string& text, double
   return swaps;
 }
 
+void zero_lateral_load_unless_given(const Options& o, WheelsetParameters& wheelset, const std::string& why,
+                                    std::ostream& notes) {
+  if (o.has("--lateral-force") || wheelset.lateral_force == 0.0) return;
+  notes << "lateral load: " << wheelset.lateral_force << " N of the parameters set to 0 (" << why << ")\n";
+  wheelset.lateral_force = 0.0;
+}
+
 std::vector<OptionSpec> run_option_specs() {
   std::vector<OptionSpec> specs{
       {"--model", true, "contact model to start with: onepoint, interp, multipoint or spline", ""},
@@ -68,7 +75,7 @@ std::vector<OptionSpec> run_option_specs() {
   return specs;
 }
 
-protocol::RunRequest run_request_from(const Options& o) {
+protocol::RunRequest run_request_from(const Options& o, std::ostream& notes) {
   protocol::RunRequest request;
   request.model = o.choice("--model", contact_model_names());
   if (request.model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
@@ -81,7 +88,11 @@ protocol::RunRequest run_request_from(const Options& o) {
   }
   apply_parameter_options(protocol::run_request_table(), o, request);
   spec.validate();  // the rules between parameters (the total vertical load)
-  if (o.has("--track")) spec.track = read_track_layout_file(o.text("--track"));
+  if (o.has("--track")) {
+    spec.track = read_track_layout_file(o.text("--track"));
+    // On a curve the benchmark's lateral load would add to the centrifugal force.
+    zero_lateral_load_unless_given(o, spec.wheelset, kTrackLateralLoadReason, notes);
+  }
   if (o.has("--irregularities")) spec.irregularity = read_track_irregularity_file(o.text("--irregularities"));
   if (o.has("--swap-at")) request.swaps = parse_swaps(o.text("--swap-at"), spec.integrator.t_end);
   request.in_process = o.has("--in-process");

@@ -5,10 +5,12 @@
 /// run request table (protocol/run/run_request_table.hpp: every run parameter and the contact
 /// client's settings, defaults and rules the table's), the service start and profile options.
 
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include "cli/options.hpp"
+#include "core/dynamics/wheelset_parameters.hpp"
 #include "protocol/run/run_command_codec.hpp"
 
 namespace wrc::cli {
@@ -16,9 +18,23 @@ namespace wrc::cli {
 /// Every option of `wrc run`, in --help order.
 std::vector<OptionSpec> run_option_specs();
 
-/// The request of parsed options: the benchmark (RunSpec{}), then --params, then the options.
+/// The one rule for a lateral load a command does not want from the parameters (`wrc stability`,
+/// `wrc bifurcation`, `wrc run --track`): unless --lateral-force is on the command line (its value,
+/// 0 or not, is kept), a non-zero lateral load of the parameters (the benchmark's, or a --params
+/// file's: only the command-line option counts as explicit) is set to 0, and notes gets the line
+/// "lateral load: <F> N of the parameters set to 0 (<why>)". Nothing happens to a load already 0.
+void zero_lateral_load_unless_given(const Options& options, WheelsetParameters& wheelset, const std::string& why,
+                                    std::ostream& notes);
+
+/// Why `wrc run --track` sets the parameters' lateral load to 0 (zero_lateral_load_unless_given).
+inline constexpr const char* kTrackLateralLoadReason =
+    "a track layout's curves load the wheelset with their centrifugal force; --lateral-force F keeps a load";
+
+/// The request of parsed options: the benchmark (RunSpec{}), then --params, then the options; with
+/// --track and without --lateral-force the parameters' lateral load is set to 0
+/// (zero_lateral_load_unless_given, its line to notes).
 /// @throws UsageError naming the option, std::invalid_argument for an invalid parameter file or run.
-protocol::RunRequest run_request_from(const Options& options);
+protocol::RunRequest run_request_from(const Options& options, std::ostream& notes);
 
 /// Scheduled swaps of --swap-at "T:M[,T2:M2...]", times increasing within (0, t_end) [s].
 std::vector<protocol::ScheduledSwap> parse_swaps(const std::string& text, double t_end);

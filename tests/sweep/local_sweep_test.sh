@@ -3,9 +3,10 @@
 # anything runs (naming the key, the point or the option), a 2x2 grid with two failing runs (rows
 # with their error), the CSV's columns, resuming (a cut CSV is completed to the same table, a
 # complete one runs nothing), another sweep's CSV or work directory refused, an interrupted sweep
-# resumed, and the plot of the CSV.
+# resumed, a sweep on a track layout without the parameters' lateral load, and the plot of the CSV.
 set -euo pipefail
 cli=${1:?usage: local_sweep_test.sh WRC_CLI}
+track="$(cd "$(dirname "$0")/../.." && pwd)/parameters/track-curve-R600.json"
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 cd "$dir"
@@ -67,8 +68,25 @@ pgrep -f -- "--work-dir $dir/c.csv.work" >/dev/null && fail "a run of the interr
 "$cli" sweep --jobs 2 --out c.csv "${slow[@]}" 2>err.txt || { cat err.txt; fail "the resumed sweep failed"; }
 [ "$(grep -c ',finished,' c.csv)" = 6 ] || { cat c.csv; fail "the resumed sweep has not 6 finished rows"; }
 
+# On a track layout the runs take no lateral load from the parameters (the benchmark's -20 kN, a
+# --params file's), and the sweep says so once; an explicit --lateral-force (here the grid key) keeps its value.
+echo '{"lateral_force": -5000}' >loaded.json
+"$cli" sweep --jobs 2 --out d.csv --grid speed=20,30 --extract parameters.lateral_force \
+  -- --model interp --t-end 0.05 --track "$track" 2>err.txt || { cat err.txt; fail "the track sweep failed"; }
+grep -qF "sweep: every run: lateral load: -20000 N of the parameters set to 0 (a track layout's curves" err.txt ||
+  { cat err.txt; fail "the track sweep did not say that the lateral load is 0"; }
+[ "$(grep -c ',finished,0,' d.csv)" = 2 ] || { cat d.csv; fail "a track sweep's run kept the benchmark's lateral load"; }
+"$cli" sweep --jobs 2 --out e.csv --grid lateral_force=-1000,0 --extract parameters.lateral_force \
+  -- --model interp --t-end 0.05 --track "$track" --params loaded.json 2>err.txt || { cat err.txt; fail "the lateral_force sweep failed"; }
+grep -q "lateral load:" err.txt && { cat err.txt; fail "a sweep with --lateral-force said the lateral load is 0"; }
+awk -F, 'NR > 1 { print $2 "=" $4 }' e.csv | tr '\n' ' ' | grep -qx -- '-1000=-1000 0=0 ' || { cat e.csv; fail "--lateral-force not kept"; }
+"$cli" sweep --jobs 2 --out f.csv --grid speed=20 --extract parameters.lateral_force \
+  -- --model interp --t-end 0.05 --track "$track" --params loaded.json 2>err.txt || { cat err.txt; fail "the --params sweep failed"; }
+grep -qF "lateral load: -5000 N of the parameters set to 0" err.txt || { cat err.txt; fail "a --params lateral load was kept"; }
+[ "$(grep -c ',finished,0,' f.csv)" = 1 ] || { cat f.csv; fail "a --params file's lateral load was kept on a track"; }
+
 # The plot of a CSV.
 "$cli" plot sweep a.csv --y final_state.y --x speed --by y0 --out a.png >/dev/null
 [ -s a.png ] || fail "no plot"
 expect_error "--y nothing: no such column" "$cli" plot sweep a.csv --y nothing --out x.png
-echo "PASS: local sweep (refusals, failed rows, resume, interrupt, plot)"
+echo "PASS: local sweep (refusals, failed rows, resume, interrupt, track without lateral load, plot)"

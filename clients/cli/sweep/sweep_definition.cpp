@@ -118,11 +118,12 @@ std::vector<std::string> run_arguments(const SweepDefinition& definition, const 
   return args;
 }
 
-protocol::RunRequest sweep_run_request(const std::vector<std::string>& arguments, const std::string& run_id) {
+protocol::RunRequest sweep_run_request(const std::vector<std::string>& arguments, const std::string& run_id,
+                                       std::ostream& notes) {
   std::vector<std::string> args = arguments;
   args.insert(args.end(), {"--in-process", "--run-id", run_id});
   const Options o("run", "", run_option_specs(), args);
-  return run_request_from(o);
+  return run_request_from(o, notes);
 }
 
 }  // namespace wrc::cli

@@ -10,6 +10,7 @@
 /// --K` ('_' written '-'), so a run of a grid point is `wrc run` with the fixed options and one
 /// `--K VALUE` per key, parsed and checked by `wrc run`'s own option table.
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -45,8 +46,10 @@ void check_run_options(const std::vector<std::string>& run_options, const std::v
 /// The `wrc run` arguments of the run at values (one per axis): the fixed options, then --KEY VALUE.
 std::vector<std::string> run_arguments(const SweepDefinition& definition, const std::vector<std::string>& values);
 
-/// The run request of those arguments, parsed by `wrc run`'s option table, in-process, named run_id.
+/// The run request of those arguments, parsed by `wrc run`'s option table, in-process, named run_id;
+/// what `wrc run` would print about it (a lateral load set to 0 on a track) goes to notes.
 /// @throws UsageError naming the option for a bad value, std::invalid_argument for an invalid run.
-protocol::RunRequest sweep_run_request(const std::vector<std::string>& arguments, const std::string& run_id);
+protocol::RunRequest sweep_run_request(const std::vector<std::string>& arguments, const std::string& run_id,
+                                       std::ostream& notes);
 
 }  // namespace wrc::cli

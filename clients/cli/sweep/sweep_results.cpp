@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <chrono>
+#include <iostream>
 #include <sstream>
 
 #include "cli/options.hpp"
@@ -189,7 +190,7 @@ sweep::SweepRow run_sweep_point(const SweepDefinition& definition, const std::ve
   std::vector<std::string> errors;
   try {
     const protocol::RunRequest request =
-        sweep_run_request(run_arguments(definition, values), "sweep-point-" + std::to_string(point));
+        sweep_run_request(run_arguments(definition, values), "sweep-point-" + std::to_string(point), std::cerr);
     nlohmann::json summary;
     row.status = "finished";
     if (wants_run) {

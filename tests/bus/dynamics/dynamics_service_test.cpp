@@ -128,12 +128,20 @@ TEST_F(DynamicsServiceTest, EveryModelRunsAndWritesItsSummary) {
 // layout crosses run_command_t, the run finishes in the curve pushed outwards (towards -y, the
 // cant deficiency of 0.099 m is carried by the outer wheel's flange root), and the summary lists
 // the curve with its balanced speed sqrt(g R tan(phi)) and cant deficiency b V^2 / (g R) - h.
+// Without --lateral-force the benchmark's -20 kN lateral load is set to 0 (on a curve it would add
+// to the centrifugal force): the first line of output says so and the summary's parameters have
+// lateral_force 0; an explicit --lateral-force on the command line keeps its value.
 TEST_F(DynamicsServiceTest, ARunFollowsATrackLayout) {
+  const std::string layout_file = std::string(WRC_SOURCE_DIR) + "/parameters/track-curve-R600.json";
   std::vector<std::string> args = run_args("spline", 8.0, temp_path("curve.json"));
-  args.insert(args.end(), {"--track", std::string(WRC_SOURCE_DIR) + "/parameters/track-curve-R600.json",
-                           "--lateral-force", "0"});
+  args.insert(args.end(), {"--track", layout_file});
   const nlohmann::json s = run(args, "curve");
   ASSERT_EQ(s["state"], "finished") << s.dump();
+  const std::string output = read_text(temp_path("curve.log"));
+  EXPECT_EQ(output.substr(0, output.find('\n')),
+            "lateral load: -20000 N of the parameters set to 0 (a track layout's curves load the wheelset with their "
+            "centrifugal force; --lateral-force F keeps a load)");
+  EXPECT_EQ(s["parameters"]["lateral_force"].get<double>(), 0.0);
   EXPECT_LT(s["final_state"]["y"].get<double>(), -3e-3);
   EXPECT_EQ(s["counters"]["restarts"].get<long>(), 0);
   const nlohmann::json& layout = s["track_layout"];
@@ -146,6 +154,13 @@ TEST_F(DynamicsServiceTest, ARunFollowsATrackLayout) {
   EXPECT_NEAR(curve["balanced_speed"].get<double>(), std::sqrt(9.81 * 600 * 0.13 / std::sqrt(1.5 * 1.5 - 0.13 * 0.13)),
               1e-9);
   EXPECT_NEAR(curve["cant_deficiency"].get<double>(), 1.5 * 30.0 * 30.0 / (9.81 * 600) - 0.13, 1e-12);
+
+  std::vector<std::string> given = run_args("spline", 0.1, temp_path("curve-given.json"));
+  given.insert(given.end(), {"--track", layout_file, "--lateral-force", "-1000"});
+  const nlohmann::json g = run(given, "curve-given");
+  ASSERT_EQ(g["state"], "finished") << g.dump();
+  EXPECT_EQ(g["parameters"]["lateral_force"].get<double>(), -1000.0);
+  EXPECT_EQ(read_text(temp_path("curve-given.log")).find("lateral load:"), std::string::npos);
 }
 
 // `wrc irregularities` then `wrc run --track FILE --irregularities FILE` with every model: ERRI

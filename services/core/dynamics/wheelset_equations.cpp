@@ -22,18 +22,20 @@ ContactQuery WheelsetEquations::query(ContactFormulation f, const double* y, con
   q.pose.z = y[kUnknownZ];
   q.pose.roll = y[kUnknownRoll];
   q.pose.yaw = y[kUnknownYaw];
-  // The contact sees the motion relative to the rails, which rest on the ground: the track frame
-  // turns at r_t = V kappa and rolls at p_t = V d(cant)/ds about its origin on the centre line at
-  // rail level, so the wheelset's centre (0, y, z) moves with the frame at
-  // (p_t, 0, r_t) x (0, y, z) = (-r_t y, -p_t z, p_t y) on top of V and its own rates (the inner
-  // rail is the shorter one; rolling with the cant ramp the centre swings sideways, the contact
-  // points, at rail level, do not), and its angular velocity gains (p_t, 0, r_t). On straight,
-  // level track every added term is an exact zero.
+  // The contact sees the motion relative to the rails, which rest on the ground. The track frame
+  // turns at V kappa: the wheelset's yaw rate relative to the ground is yaw' + V kappa, and its
+  // forward speed over the rail under it V (1 - kappa y) (the inner rail is the shorter one). The
+  // frame's roll with the cant ramp, p_t = V d(cant)/ds, is left out of the rates: in the frame's
+  // coordinates the rail is prismatic (the ramp's twist is the frame's), and the wheel's slip over
+  // its twisted rail, taken in the rail's true tangent plane at the true contact point, is that of
+  // the wheel moving at its rates relative to the frame over a prismatic rail, but for a lateral
+  // creepage -(d cant/ds) z_c / cos(gamma) of the contact height z_c (below 4e-5, left out; the
+  // derivation and the numbers: docs/track.md). The gyroscopic moments take the absolute rates
+  // (residual). On straight, level track every added term is an exact zero.
   const double v = parameters_.speed;
-  const double p_t = v * track_.cant_angle_rate;  // [rad/s]
-  q.y_dot = y[kUnknownYDot] - p_t * y[kUnknownZ];
-  q.z_dot = y[kUnknownZDot] + p_t * y[kUnknownY];
-  q.roll_dot = y[kUnknownRollDot] + p_t;
+  q.y_dot = y[kUnknownYDot];
+  q.z_dot = y[kUnknownZDot];
+  q.roll_dot = y[kUnknownRollDot];
   q.yaw_dot = y[kUnknownYawDot] + v * track_.curvature;
   q.spin_rate = y[kUnknownSpinRate];
   q.speed = v * (1.0 - track_.curvature * y[kUnknownY]);

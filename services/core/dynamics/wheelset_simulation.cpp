@@ -142,9 +142,8 @@ const ContactResult& WheelsetSimulation::contact_at(const double* y) {
     if (enters_contact_query(formulation_, two_point, k)) key.push_back(y[k]);
   key.insert(key.end(), branches_.tracked_s.begin(), branches_.tracked_s.end());
   key.insert(key.end(), branches_.second_s.begin(), branches_.second_s.end());
-  // The track's turning and rolling rates enter the query's rates (WheelsetEquations::query).
+  // The track's turning rate enters the query's yaw rate and speed (WheelsetEquations::query).
   key.push_back(equations_.track().curvature);
-  key.push_back(equations_.track().cant_angle_rate);
   // The rails' offsets and rates enter the query (irregularities).
   if (!spec_.irregularity.empty()) {
     for (const RailOffset& r : equations_.rails())

@@ -72,24 +72,35 @@ if [ "$ready" = 1 ]; then
   section "The paper's benchmark (wrc run: wrc-dynamicsd, SUNDIALS IDA, contact over the bus)"
   echo "S1002 on UIC60 1:40, Fz = 154715 N, Fy = 20000 N towards the right rail, V = 30 m/s, 2 s"
   echo "(parameters/benchmark.json). The one-point model's contact point chatters at the flange-root"
-  echo "jump (every switch a located event and an integrator restart); the spline model settles."
-  printf '%-10s %10s %10s %9s %7s %9s %9s\n' model y[mm] yaw[mrad] wall[s] steps restarts queries
-  for model in spline multipoint interp onepoint; do
-    summary="$report_dir/run-$model.json"
-    if wrc run --model "$model" --t-end 2 --summary "$summary" --history "$report_dir/run-$model.csv" \
-        --output-period 0.002 2>"$report_dir/run-$model.log"; then
+  echo "jump (every switch a located event and an integrator restart) until the wheel slides in rigid"
+  echo "two-point contact on the switching surface; without that (--two-point-sliding false, the paper's"
+  echo "one-point contact of its figures 5 and 6) it chatters, restart after restart, and stays off the"
+  echo "rigid manifold; the spline model settles."
+  printf '%-22s %10s %10s %9s %7s %9s %9s\n' model y[mm] yaw[mrad] wall[s] steps restarts queries
+  for run in spline multipoint interp onepoint onepoint-no-sliding; do
+    model=${run%%-*}
+    options=()
+    label=$model
+    if [ "$run" = onepoint-no-sliding ]; then options=(--two-point-sliding false); label="onepoint, no sliding"; fi
+    summary="$report_dir/run-$run.json"
+    if wrc run --model "$model" --t-end 2 --summary "$summary" --history "$report_dir/run-$run.csv" \
+        --output-period 0.002 "${options[@]}" 2>"$report_dir/run-$run.log"; then
       v() { sed -n "s/^ *\"$1\": \([^,]*\),\{0,1\}$/\1/p" "$summary" | head -1; }
-      awk -v m="$model" -v y="$(v y)" -v yaw="$(v yaw)" -v w="$(v wall_time)" -v s="$(v steps)" \
+      awk -v m="$label" -v y="$(v y)" -v yaw="$(v yaw)" -v w="$(v wall_time)" -v s="$(v steps)" \
           -v r="$(v restarts)" -v q="$(v contact_queries)" \
-          'BEGIN { printf "%-10s %10.4f %10.4f %9.3f %7d %9d %9d\n", m, y*1e3, yaw*1e3, w, s, r, q }'
+          'BEGIN { printf "%-22s %10.4f %10.4f %9.3f %7d %9d %9d\n", m, y*1e3, yaw*1e3, w, s, r, q }'
     else
-      echo "$model: run failed:"; tail -3 "$report_dir/run-$model.log"
+      echo "$label: run failed:"; tail -3 "$report_dir/run-$run.log"
     fi
   done
   wall() { sed -n 's/^ *"wall_time": \([^,]*\),\{0,1\}$/\1/p' "$report_dir/run-$1.json" 2>/dev/null | head -1; }
   if [ -n "$(wall onepoint)" ] && [ -n "$(wall spline)" ]; then
     awk -v o="$(wall onepoint)" -v s="$(wall spline)" \
       'BEGIN { printf "Wall time one-point / spline: %.1f (the paper: the spline model is several times faster)\n", o / s }'
+  fi
+  if [ -n "$(wall onepoint-no-sliding)" ] && [ -n "$(wall spline)" ]; then
+    awk -v o="$(wall onepoint-no-sliding)" -v s="$(wall spline)" \
+      'BEGIN { printf "Wall time one-point without sliding / spline: %.1f (the paper: spline below 0.3 of one-point)\n", o / s }'
   fi
   section "A curve with transitions on irregular track (wrc irregularities, wrc run --track --irregularities)"
   echo "parameters/track-curve-R600.json: 100 m straight, 90 m transition, R = 600 m with 130 mm cant;"
@@ -157,6 +168,9 @@ plot fig4-displacement displacement
 runs=()
 for model in onepoint spline; do [ -s "$report_dir/run-$model.csv" ] && runs+=("$report_dir/run-$model.csv"); done
 [ "${#runs[@]}" -gt 0 ] && plot fig5-6-run run "${runs[@]}"
+runs=()
+for run in onepoint-no-sliding spline; do [ -s "$report_dir/run-$run.csv" ] && runs+=("$report_dir/run-$run.csv"); done
+[ "${#runs[@]}" -gt 1 ] && plot fig5-6-run-no-sliding run "${runs[@]}"
 curves=()
 for model in onepoint spline; do [ -s "$report_dir/curve-$model.csv" ] && curves+=("$report_dir/curve-$model.csv"); done
 if [ "${#curves[@]}" -gt 0 ]; then
@@ -169,5 +183,5 @@ plot conicity conicity --a-to 0.008
 plot profiles profiles --y 0.005
 echo
 echo "The spline model's accuracy report: $report_dir/fit-10x2x2.json"
-echo "Run summaries: $report_dir/run-<model>.json; stability and sweep: $report_dir/stability.csv, $report_dir/sweep.csv"
+echo "Run summaries: $report_dir/run-<model>.json (run-onepoint-no-sliding.json: without two-point sliding); stability and sweep: $report_dir/stability.csv, $report_dir/sweep.csv"
 echo "Figures: $figures"

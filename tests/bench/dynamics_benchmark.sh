@@ -2,7 +2,8 @@
 # The paper's benchmark (parameters/benchmark.json, or WRC_BENCH_PARAMS=FILE) with every contact
 # model, over the bus and with the contact model in the dynamics process (--in-process, for
 # comparison only), each from several starts perturbed at rounding level (y0 = 0, 1e-9, 1e-8,
-# 1e-7, 1e-6 m; WRC_BENCH_Y0="..." sets them): one row per run (final state, wall time of the
+# 1e-7, 1e-6 m; WRC_BENCH_Y0="..." sets them; WRC_BENCH_OPTIONS="..." adds run options to every
+# run, e.g. "--two-point-sliding false"): one row per run (final state, wall time of the
 # integration, service start-up and the spline fit excluded, and the counters that explain it),
 # then per model and contact the median and range over the starts, and the one-point / spline
 # ratio of the median wall times. A benchmark, not a test: run it on a quiet machine, e.g.
@@ -18,6 +19,7 @@ read -r -a models <<< "${models[*]}"
 read -r -a starts <<< "${WRC_BENCH_Y0:-0 1e-9 1e-8 1e-7 1e-6}"
 params=()
 [ -n "${WRC_BENCH_PARAMS:-}" ] && params=(--params "$WRC_BENCH_PARAMS")
+read -r -a options <<< "${WRC_BENCH_OPTIONS:-}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 export WRC_CACHE_DIR="${WRC_CACHE_DIR:-$work/cache}"
@@ -25,7 +27,8 @@ export WRC_CACHE_DIR="${WRC_CACHE_DIR:-$work/cache}"
 # value KEY FILE: the number after "KEY": in a summary written by wrc run (one key per line).
 value() { sed -n "s/^ *\"$1\": \([^,]*\),\{0,1\}$/\1/p" "$2" | head -1 | tr -d '"'; }
 
-echo "parameters: ${WRC_BENCH_PARAMS:-parameters/benchmark.json}, t_end = $t_end s, starts y0 = ${starts[*]} m"
+echo "parameters: ${WRC_BENCH_PARAMS:-parameters/benchmark.json}, t_end = $t_end s, starts y0 = ${starts[*]} m," \
+  "options: ${WRC_BENCH_OPTIONS:-none}"
 header='%-10s %-10s %7s %10s %10s %10s %9s %7s %9s %7s %8s %7s %9s %8s\n'
 printf "$header" model contact y0[m] y[mm] yaw[mrad] z[m] wall[s] steps residuals jacobs restarts 2-point queries rt/real
 rows="$work/rows"
@@ -37,7 +40,7 @@ for model in "${models[@]}"; do
       extra=()
       [ "$mode" = in-process ] && extra=(--in-process)
       "$cli" run --model "$model" --t-end "$t_end" --y0 "$y0" --summary "$summary" --build-dir "$build" \
-        "${params[@]}" "${extra[@]}" >"$work/log" 2>&1 || { echo "$model $mode y0=$y0 failed:"; tail -5 "$work/log"; continue; }
+        "${params[@]}" "${options[@]}" "${extra[@]}" >"$work/log" 2>&1 || { echo "$model $mode y0=$y0 failed:"; tail -5 "$work/log"; continue; }
       awk -v m="$model" -v c="$mode" -v y0="$y0" -v y="$(value y "$summary")" -v yaw="$(value yaw "$summary")" \
           -v z="$(value z "$summary")" -v w="$(value wall_time "$summary")" -v t="$t_end" \
           -v s="$(value steps "$summary")" -v r="$(value residual_evals "$summary")" \

@@ -115,6 +115,10 @@ const std::vector<Parameter<IntegratorSettings>>& integrator_settings_table() {
                            closed(1, kMaxRunSteps)}, &G::max_steps),
       member_parameter<G>({"output_period", nullptr, "s", "simulated time between output samples",
                            ParameterKind::kNumber, kPositive}, &G::output_period),
+      member_parameter<G>({"two_point_sliding", nullptr, "-",
+                           "rigid contact: a wheel whose contact point would chatter between two minima slides "
+                           "in two-point contact (false: one-point contact, a restart at every switch)"},
+                          &G::two_point_sliding),
   };
   return table;
 }

@@ -88,6 +88,14 @@ struct IntegratorSettings {
   double max_step = 0.01;             ///< largest step [s]
   double output_period = 1e-3;        ///< simulated time between output samples [s], > 0, t_end / it <= kMaxOutputSamples
   long max_steps = 2000000;           ///< steps before the run fails [-]
+  /// Rigid contact: where one-point contact would chatter between two equally low minima of a
+  /// wheel's distance (the one-point vector field pushing towards the switching surface from both
+  /// sides), the wheel slides in rigid two-point contact (Filippov), and after every step each
+  /// followed point is the lowest (docs/dynamics.md). false: the paper's one-point contact of its
+  /// figures 5 and 6: a switch (an impact and an integrator restart) at each root of the event
+  /// function only, no two-point contact and no branch check, so a followed point may lie above
+  /// the lowest (the counter max_branch_excess says how far) and the run depends on rounding [-].
+  bool two_point_sliding = true;
   void validate() const;
 };
 

@@ -578,7 +578,9 @@ void WheelsetSimulation::switch_wheel(int wheel, double target_s, std::vector<do
   y_single[kUnknownNormalLeft + wheel] = load;
   project_positions(initialisation(), y_single);
   project_velocities(initialisation(), y_single);
-  if (std::isnan(from_s)) {
+  // Without two-point sliding (the run's choice) one-point contact on the target is the answer
+  // whatever the point it leaves does next: the chattering of the paper's figures 5 and 6.
+  if (std::isnan(from_s) || !spec_.integrator.two_point_sliding) {
     y = std::move(y_single);
     return;
   }
@@ -728,7 +730,9 @@ void WheelsetSimulation::restart_on_right_branches(std::vector<double>& y) {
     int wrong = -1;
     for (int i = 0; i < 2 && wrong < 0; ++i)
       if (excess[static_cast<size_t>(i)] > kBranchTolerance) wrong = i;
-    if (wrong < 0) break;
+    // Without two-point sliding the wheel stays where the switch put it: switching back at once
+    // would chatter without end (docs/dynamics.md).
+    if (wrong < 0 || !spec_.integrator.two_point_sliding) break;
     if (round >= kMaxSwitchesPerEvent) {
       std::ostringstream msg;
       msg << "the " << (wrong == 0 ? "left" : "right") << " wheel's contact point finds no branch that is the lowest"
@@ -797,7 +801,8 @@ bool WheelsetSimulation::advance() {
       // Follow the branches with the accepted step (the event functions were evaluated there),
       // and check that every followed point is the lowest: a switch the root finding did not see
       // (an event function that starts a segment below 0, or crosses 0 and back within a step)
-      // is taken here.
+      // is taken here. Without two-point sliding only the roots switch (the paper's one-point
+      // contact): the excess is recorded, not corrected.
       const ContactResult c = contact_at(y_->data());
       const std::array<double, 2> excess = branch_excess(c);
       bool missed = false;
@@ -805,7 +810,7 @@ bool WheelsetSimulation::advance() {
         own_.max_branch_excess = std::max(own_.max_branch_excess, excess[static_cast<size_t>(i)]);
         missed = missed || excess[static_cast<size_t>(i)] > kBranchTolerance;
       }
-      if (missed) {
+      if (missed && spec_.integrator.two_point_sliding) {
         ++own_.missed_switches;
         ++own_.root_returns;
         std::vector<double> y = current_state();

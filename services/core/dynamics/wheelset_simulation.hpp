@@ -128,7 +128,8 @@ class WheelsetSimulation {
   /// Wheel i leaves its branch for the point at target_s [m] (an event, or a switch the branch
   /// check found at a step): one-point contact on the target, or, where one-point contact would
   /// at once switch back (the point it leaves is not separating and two-point contact loads both
-  /// points), rigid two-point contact on both: Filippov's sliding mode on the switching surface.
+  /// points), rigid two-point contact on both: Filippov's sliding mode on the switching surface
+  /// (only with IntegratorSettings::two_point_sliding; without it, one-point contact on the target).
   /// Sets branches_ and the state y (positions and velocities projected).
   void switch_wheel(int wheel, double target_s, std::vector<double>& y);
   /// Releases the point of wheel i whose normal force fell to 0 (second: the second point).
@@ -144,7 +145,8 @@ class WheelsetSimulation {
   void perform_swap(std::shared_ptr<ContactEvaluator> next);
   void handle_roots();
   /// Projects y onto the constraints, switches every wheel whose followed point is not the lowest
-  /// (at most kMaxSwitchesPerEvent times) and restarts the integrator there.
+  /// (at most kMaxSwitchesPerEvent times; not without IntegratorSettings::two_point_sliding) and
+  /// restarts the integrator there.
   void restart_on_right_branches(std::vector<double>& y);
   /// After IDA's corrector failed at every step size (rigid formulation): a wheel in two-point
   /// contact keeps its more loaded point, and the run restarts on the right branches there.

@@ -30,6 +30,7 @@ const std::vector<MessageField<run_command_t>>& run_command_fields() {
       WRC_MESSAGE_FIELD(M, spin_rate_offset), WRC_MESSAGE_FIELD(M, t_end), WRC_MESSAGE_FIELD(M, rtol),
       WRC_MESSAGE_FIELD(M, position_tolerance), WRC_MESSAGE_FIELD(M, velocity_tolerance),
       WRC_MESSAGE_FIELD(M, max_step), WRC_MESSAGE_FIELD(M, max_steps), WRC_MESSAGE_FIELD(M, output_period),
+      WRC_MESSAGE_FIELD(M, two_point_sliding),
       WRC_MESSAGE_FIELD(M, contact_timeout), WRC_MESSAGE_FIELD(M, contact_retries),
       WRC_MESSAGE_FIELD(M, contact_wait),
   };

@@ -130,8 +130,8 @@ TEST(OnePointDynamics, BenchmarkFollowsTheLowestMinimumAndEndsOnTheRigidManifold
 // integrator restart: measured 6924 restarts against the default's 198 (from five starts
 // perturbed at rounding level, y0 = 0 to 1e-6 m, 1068 to 17070: the count depends on rounding);
 // bound 1000, five times the default's. They come in a burst at the jump, 0.39 to 0.42 s; then
-// the right wheel rides the branch the last switch left it on, with nothing to hold the followed
-// point the lowest: the other minimum ends 97.5 um lower (overlapping its rail by that much, from
+// the right wheel rides the branch the last switch left it on (the flange root), with nothing to
+// hold the followed point the lowest: the tread minimum ends 97.5 um lower (overlapping its rail, from
 // every start), bound 1e-5 m against the default's 1e-9, and the wheelset 51 um below the exact
 // rigid wheelset at its y and yaw (bound 1e-5 m), at y = -4.495 mm (the default: two-point contact
 // at -4.992 mm).

@@ -94,14 +94,14 @@ if [ "$ready" = 1 ]; then
     fi
   done
   wall() { sed -n 's/^ *"wall_time": \([^,]*\),\{0,1\}$/\1/p' "$report_dir/run-$1.json" 2>/dev/null | head -1; }
-  if [ -n "$(wall onepoint)" ] && [ -n "$(wall spline)" ]; then
-    awk -v o="$(wall onepoint)" -v s="$(wall spline)" \
-      'BEGIN { printf "Wall time one-point / spline: %.1f (the paper: the spline model is several times faster)\n", o / s }'
-  fi
-  if [ -n "$(wall onepoint-no-sliding)" ] && [ -n "$(wall spline)" ]; then
-    awk -v o="$(wall onepoint-no-sliding)" -v s="$(wall spline)" \
-      'BEGIN { printf "Wall time one-point without sliding / spline: %.1f (the paper: spline below 0.3 of one-point)\n", o / s }'
-  fi
+  # ratio RUN LABEL NOTE: the wall time of run RUN over the spline run's, when both finished.
+  ratio() {
+    [ -n "$(wall "$1")" ] && [ -n "$(wall spline)" ] || return 0
+    awk -v o="$(wall "$1")" -v s="$(wall spline)" -v l="$2" -v n="$3" \
+      'BEGIN { printf "Wall time %s / spline: %.1f (the paper: %s)\n", l, o / s, n }'
+  }
+  ratio onepoint one-point "the spline model is several times faster"
+  ratio onepoint-no-sliding "one-point without sliding" "spline below 0.3 of one-point"
   section "A curve with transitions on irregular track (wrc irregularities, wrc run --track --irregularities)"
   echo "parameters/track-curve-R600.json: 100 m straight, 90 m transition, R = 600 m with 130 mm cant;"
   echo "irregularities generated from the ERRI low-level spectrum (3-70 m, seed 1); 30 m/s (cant"

@@ -64,6 +64,9 @@ json report_json(const GeometrySpec& spec, const SplineFitOptions& o, const Spli
     json jumps = json::array();
     for (const TreadJump& j : w.jumps)
       jumps.push_back({{"y", j.y}, {"roll", j.roll}, {"yaw", j.yaw}, {"s_before", j.s_before}, {"s_after", j.s_after}});
+    json transitions = json::array();
+    for (const auto& [half_width, y_reach] : w.jump_half_widths)
+      transitions.push_back({{"height_half_width", half_width}, {"y_reach", y_reach}});
     json residuals;
     for (int f = 0; f < kSplineFieldCount; ++f)
       residuals[kSplineFields[static_cast<size_t>(f)].name] = field_error(w.residuals[static_cast<size_t>(f)]);
@@ -78,6 +81,7 @@ json report_json(const GeometrySpec& spec, const SplineFitOptions& o, const Spli
                       {"normal_matrix_nonzeros", w.fit.nonzeros},
                       {"fit_seconds", w.fit.seconds},
                       {"jumps", jumps},
+                      {"transitions", transitions},
                       {"fit_residuals", residuals}});
   }
   r["wheels"] = wheels;
@@ -101,7 +105,8 @@ json report_json(const GeometrySpec& spec, const SplineFitOptions& o, const Spli
   validation["set"] = "midpoints of the sample grid in y, roll and yaw (no validation point is a sample)";
   validation["excluded_band"] = accuracy->excluded_band;
   validation["excluded"] =
-      "points within excluded_band [m] in y of a tread jump of the exact common point on their line, and points in "
+      "points within excluded_band [m] in y of a tread jump of the exact common point on their line, points inside a "
+      "transition (where the model is the smooth maximum of two branches, not a fit of the lowest minimum), and points in "
       "flange contact (the model uses the exact geometry there)";
   validation["seconds"] = accuracy->seconds;
   json vw = json::array();
@@ -121,6 +126,7 @@ json report_json(const GeometrySpec& spec, const SplineFitOptions& o, const Spli
     vw.push_back({{"wheel", side_name(side)},
                   {"points", a.points},
                   {"excluded_near_jumps", a.excluded_near_jumps},
+                  {"excluded_in_transition", a.excluded_in_transition},
                   {"excluded_flange_contact", a.excluded_flange_contact},
                   {"jumps", a.jumps},
                   {"z_by_jump_distance", bands},

@@ -128,5 +128,37 @@ TEST(WheelForces, NormalForceAppliedAlongTheNormal) {
   EXPECT_THROW(wheel_forces(c, 2), std::invalid_argument);
 }
 
+// Inside a spline transition the rigid wheel's multiplier N is shared over two patches, one per
+// branch, each along its own normal: their normal forces add up, as vectors, to N along the
+// blend's normal while sum_p N_p exceeds N. Given N, wheel_forces() keeps the direction a unit
+// vector (to rounding) and force(N) is the patches' own sum; by default (sum_p N_p) it would not be.
+TEST(WheelForces, ASplineTransitionsPatchesAddUpToTheMultiplier) {
+  const auto geometry = test::s1002_uic60_geometry();
+  const auto spline = make_contact_model("spline", geometry, ContactModelOptions{}, test::quick_spline_data());
+  ContactQuery q;
+  q.pose.z = 0.46;
+  q.pose.roll = 0.0003;
+  q.speed = 30.0;
+  q.spin_rate = q.speed / 0.46;
+  q.normal_load = {77e3, 77e3};
+  int split = 0;
+  for (int i = 0; i <= 60; ++i) {
+    q.pose.y = 0.0045 + 2.5e-5 * i;
+    const ContactResult c = spline->evaluate(q);
+    if (std::count_if(c.patches.begin(), c.patches.end(), [](const ContactPatch& p) { return p.point.side == WheelSide::kLeft; }) != 2)
+      continue;
+    ++split;
+    const WheelForces f = wheel_forces(c, 0, q.normal_load[0]);
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const ContactPatch& p : c.patches)
+      if (p.point.side == WheelSide::kLeft) sum += patch_forces(p).normal + patch_forces(p).creep;
+    EXPECT_NEAR(f.normal_direction.norm(), 1.0, 1e-12) << "y " << q.pose.y;
+    EXPECT_NEAR((f.force(q.normal_load[0]) - sum).norm(), 0.0, 1e-9 * q.normal_load[0]);
+    EXPECT_GT(f.normal_force, q.normal_load[0] * (1.0 + 1e-9)) << "the split's magnitudes exceed N";
+  }
+  EXPECT_GT(split, 0) << "the sweep must cross a transition";
+  EXPECT_THROW(wheel_forces(spline->evaluate(q), 0, 0.0), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace wrc

@@ -20,7 +20,7 @@ WheelSide side_of(int wheel) {
 
 }  // namespace
 
-WheelForces wheel_forces(const ContactResult& contact, int wheel) {
+WheelForces wheel_forces(const ContactResult& contact, int wheel, std::optional<double> normal_force) {
   const WheelSide side = side_of(wheel);
   WheelForces f;
   Eigen::Vector3d normal_sum = Eigen::Vector3d::Zero();
@@ -37,7 +37,12 @@ WheelForces wheel_forces(const ContactResult& contact, int wheel) {
     f.max_pressure = std::max(f.max_pressure, hertz_max_pressure(patch.normal_force, patch.a, patch.b));
   }
   if (f.normal_force > 0.0) {
-    f.normal_direction = normal_sum / f.normal_force;
+    const double n = normal_force.value_or(f.normal_force);
+    if (!std::isfinite(n) || n <= 0.0)
+      throw std::invalid_argument("the " + std::string(wheel == 0 ? "left" : "right") + " wheel's normal force " +
+                                  std::to_string(n) + " N is not positive while its patches carry " +
+                                  std::to_string(f.normal_force) + " N");
+    f.normal_direction = normal_sum / n;
   } else {
     const double angle = contact.wheels[static_cast<size_t>(wheel)].contact_angle;
     f.normal_direction = Eigen::Vector3d(0.0, -side_sign(side) * std::sin(angle), std::cos(angle));

@@ -423,7 +423,11 @@ std::array<WheelOutput, 2> WheelsetSimulation::wheel_outputs(const std::vector<d
     w.s_wheel = c.wheels[static_cast<size_t>(i)].s_wheel;
     w.contact_angle = c.wheels[static_cast<size_t>(i)].contact_angle;
     w.normal_force = equations_.normal_force(formulation_, y.data(), c, i, branches_);
-    const WheelForces f = wheel_forces(c, i);
+    // Rigid contact: the patches carry the constraint's multiplier (a spline transition shares it
+    // over two patches whose normal forces add up to it as vectors, not as magnitudes).
+    const WheelForces f = formulation_ == ContactFormulation::kRigid && w.normal_force > 0.0
+                              ? wheel_forces(c, i, w.normal_force)
+                              : wheel_forces(c, i);
     set_force_outputs(f, w.normal_force, i, w);
     if (forces) (*forces)[static_cast<size_t>(i)] = f;
   }

@@ -18,6 +18,18 @@ constexpr double kSlack = 1e-12;
 // Tensor coordinates of a pose: (y, roll, yaw).
 std::array<double, 3> coordinates(const WheelsetPose& pose) { return {pose.y, pose.roll, pose.yaw}; }
 
+// The creep frame of a constraint: the rail's slope at the point is g = dz_touch/dy (envelope),
+// normal (0, -g, 1) / sqrt(1 + g^2), contact angle atan(sign g), written into the fields evaluated.
+void set_slope_frame(WheelSide side, double g, std::array<double, kSplineFieldCount>& value, int value_count) {
+  const double n = 1.0 / std::sqrt(1.0 + g * g);
+  if (value_count > kFieldContactAngle) value[kFieldContactAngle] = std::atan(side_sign(side) * g);
+  if (value_count > kFieldNormalZ) {
+    value[kFieldNormalX] = 0.0;
+    value[kFieldNormalY] = -g * n;
+    value[kFieldNormalZ] = n;
+  }
+}
+
 }  // namespace
 
 void JumpSurface::evaluate(double roll, double yaw, double& value, double* gradient, double* hessian) const {
@@ -41,17 +53,25 @@ void JumpSurface::evaluate(double roll, double yaw, double& value, double* gradi
 }
 
 SplineContactGeometry::SplineContactGeometry(std::array<SplineWheel, 2> wheels, SplineBox left_box, double s_split,
-                                             double lateral_curvature_floor, double transition)
+                                             double lateral_curvature_floor)
     : wheels_(std::move(wheels)), left_box_(left_box), s_split_(s_split),
-      lateral_curvature_floor_(lateral_curvature_floor), transition_(transition) {
+      lateral_curvature_floor_(lateral_curvature_floor) {
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const SplineWheel& w = wheel(side);
     if (w.branches.empty() || w.jumps.size() + 1 != w.branches.size())
       throw std::invalid_argument(std::string("spline geometry: the ") + side_name(side) + " wheel has " +
                                   std::to_string(w.branches.size()) + " branches and " +
                                   std::to_string(w.jumps.size()) + " jumps; expected one branch more than jumps");
-    if (!w.jumps.empty() && !(transition_ > 0.0))
-      throw std::invalid_argument("spline geometry: branches need a transition > 0");
+    for (size_t m = 0; m < w.jumps.size(); ++m) {
+      const JumpSurface& j = w.jumps[m];
+      if (!(j.height_half_width > 0.0 && std::isfinite(j.height_half_width) && j.y_reach > 0.0 &&
+            std::isfinite(j.y_reach))) {
+        std::ostringstream msg;
+        msg << "spline geometry: the " << side_name(side) << " wheel's jump " << m << " has height_half_width = "
+            << j.height_half_width << " m and y_reach = " << j.y_reach << " m; both must be positive and finite";
+        throw std::invalid_argument(msg.str());
+      }
+    }
     const SplineBox b = box(side);
     const double lo[3] = {b.y_min, -b.roll_max, -b.yaw_max}, hi[3] = {b.y_max, b.roll_max, b.yaw_max};
     double y_lower = std::numeric_limits<double>::infinity(), y_upper = -y_lower;
@@ -121,51 +141,74 @@ void SplineContactGeometry::evaluate(WheelSide side, const WheelsetPose& pose, S
   value_count = std::clamp(value_count, 0, static_cast<int>(kSplineFieldCount));
   for (int j = value_count; j < kSplineFieldCount; ++j) out.value[static_cast<size_t>(j)] = kNaN;
   const SplineWheel& w = wheel(side);
-  // The pose's branch, and the jump whose transition it lies in (if any).
-  size_t branch = 0, blend = w.jumps.size();
-  double jump_y = 0;
-  for (size_t m = 0; m < w.jumps.size(); ++m) {
-    const double v = w.jumps[m].at(pose.roll, pose.yaw);
-    if (pose.y >= v) branch = m + 1;
-    if (blend == w.jumps.size() && std::abs(pose.y - v) < transition_) blend = m, jump_y = v;
-  }
   // z and the flange clearance are fields 0 and 1: their derivatives come from one query.
   static_assert(kFieldZ == 0 && kFieldFlangeClearance == 1, "the derivative fields lead the list");
   const int derivative_count = derivatives == SplineDerivatives::kValue ? 0 : derivative_fields;
+  // The pose's branch by the jump surfaces, and the first jump within whose y reach it lies.
+  size_t branch = 0, near = w.jumps.size();
+  for (size_t m = 0; m < w.jumps.size(); ++m) {
+    const double v = w.jumps[m].at(pose.roll, pose.yaw);
+    if (pose.y >= v) branch = m + 1;
+    if (near == w.jumps.size() && std::abs(pose.y - v) < w.jumps[m].y_reach) near = m;
+  }
   double d[20];
-  if (blend == w.jumps.size()) {
+  out.upper_share = out.lower_slope = out.upper_slope = kNaN;
+  if (near == w.jumps.size()) {
     w.branches[branch].query(x.data(), value_count, out.value.data(), derivative_count, d);
   } else {
-    // C2 step between the branch below (a) and above (b) the jump: w(u) = u^3 (10 - 15 u + 6 u^2),
-    // u = (1 + t) / 2, t = (y - y_jump(roll, yaw)) / transition.
+    // Smooth maximum of the two branches' touching heights z_a (below the jump) and z_b (above):
+    // with d = z_b - z_a, h the jump's height half-width and u = (1 + d / h) / 2 in [0, 1],
+    // z = z_a + h phi(d / h), phi(t) = 2 (u^6 - 3 u^5 + 5/2 u^4), phi' = w(u) = u^3 (10 - 15 u +
+    // 6 u^2), phi'' = w'(u) / 2; outside |d| < h simply the higher branch. grad z = (1 - w) grad
+    // z_a + w grad z_b, H z = (1 - w) H z_a + w H z_b + w'(u) / (2 h) grad d grad d^T. Every other
+    // field f (the clearance included) is f_a + w (f_b - f_a), its gradient gaining (f_b - f_a)
+    // w'(u) / (2 h) grad d.
     std::array<double, kSplineFieldCount> va, vb;
     double da[20], db[20];
-    w.branches[blend].query(x.data(), value_count, va.data(), derivative_count, da);
-    w.branches[blend + 1].query(x.data(), value_count, vb.data(), derivative_count, db);
-    const double t = (pose.y - jump_y) / transition_, u = 0.5 * (1.0 + t);
+    const int need = std::max(value_count, 1);
+    w.branches[near].query(x.data(), need, va.data(), derivative_count, da);
+    w.branches[near + 1].query(x.data(), need, vb.data(), derivative_count, db);
+    const double h = w.jumps[near].height_half_width;
+    const double diff_z = vb[kFieldZ] - va[kFieldZ];
+    const double u = std::clamp(0.5 * (1.0 + diff_z / h), 0.0, 1.0);
     const double s = u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
+    const double s1 = 15.0 * u * u * (1.0 - u) * (1.0 - u) / h;  // dw/dd = w'(u) / (2 h)
     for (int j = 0; j < value_count; ++j)
       out.value[static_cast<size_t>(j)] = va[static_cast<size_t>(j)] + s * (vb[static_cast<size_t>(j)] - va[static_cast<size_t>(j)]);
+    // z itself: the smooth maximum, z_a + h phi(d / h) (z_a or z_b outside the band).
+    const double phi = 2.0 * u * u * u * u * (2.5 + u * (-3.0 + u));
+    const double z = u >= 1.0 ? vb[kFieldZ] : va[kFieldZ] + h * phi;
+    if (value_count > kFieldZ) out.value[kFieldZ] = z;
+    if (s > 0.0 && s < 1.0) {
+      out.upper_share = s;
+      out.lower_value = va;
+      out.upper_value = vb;
+      if (derivative_count > 0) {
+        out.lower_slope = da[1];
+        out.upper_slope = db[1];
+        set_slope_frame(side, da[1], out.lower_value, value_count);
+        set_slope_frame(side, db[1], out.upper_value, value_count);
+      }
+    }
     if (derivative_count > 0) {
-      double jump_gradient[2], jump_hessian[3];
-      w.jumps[blend].evaluate(pose.roll, pose.yaw, jump_y, jump_gradient, jump_hessian);
-      const double s1 = 15.0 * u * u * (1.0 - u) * (1.0 - u) / transition_;                    // dw/dy'
-      const double s2 = 15.0 * u * (1.0 - u) * (1.0 - 2.0 * u) / (transition_ * transition_);  // d2w/dy'2
-      // y' = y - y_jump: its gradient and Hessian (slot order yy, y roll, y yaw, roll roll, roll yaw, yaw yaw).
-      const double gt[3] = {1.0, -jump_gradient[0], -jump_gradient[1]};
-      const double ht[6] = {0, 0, 0, -jump_hessian[0], -jump_hessian[1], -jump_hessian[2]};
+      // grad d and its Hessian-free use: slot order of a field's 10 derivatives: value, 3
+      // gradient components, 6 Hessian entries (yy, y roll, y yaw, roll roll, roll yaw, yaw yaw).
+      double gd[3];
+      for (int k = 0; k < 3; ++k) gd[k] = db[1 + k] - da[1 + k];
       static constexpr int kRow[6] = {0, 0, 0, 1, 1, 2}, kCol[6] = {0, 1, 2, 1, 2, 2};
       for (int f = 0; f < derivative_count; ++f) {
         const double* a = da + 10 * f;
         const double* b = db + 10 * f;
         double* o = d + 10 * f;
-        const double diff = b[0] - a[0];
-        o[0] = a[0] + s * diff;
-        for (int k = 0; k < 3; ++k) o[1 + k] = a[1 + k] + s * (b[1 + k] - a[1 + k]) + diff * s1 * gt[k];
+        o[0] = f == 0 ? z : a[0] + s * (b[0] - a[0]);
+        // z (f = 0): no (f_b - f_a) term in its gradient, the curvature term in its Hessian; the
+        // clearance (f = 1): the share's gradient term, its Hessian is not used (NaN).
+        const double diff = f == 0 ? 0.0 : b[0] - a[0];
+        for (int k = 0; k < 3; ++k) o[1 + k] = a[1 + k] + s * (b[1 + k] - a[1 + k]) + diff * s1 * gd[k];
         for (int q = 0; q < 6; ++q) {
           const int k = kRow[q], l = kCol[q];
-          o[4 + q] = a[4 + q] + s * (b[4 + q] - a[4 + q]) + s1 * gt[k] * (b[1 + l] - a[1 + l]) +
-                     s1 * gt[l] * (b[1 + k] - a[1 + k]) + diff * (s2 * gt[k] * gt[l] + s1 * ht[q]);
+          o[4 + q] = f == 0 ? a[4 + q] + s * (b[4 + q] - a[4 + q]) + s1 * gd[k] * gd[l]
+                            : std::numeric_limits<double>::quiet_NaN();
         }
       }
     }
@@ -178,14 +221,7 @@ void SplineContactGeometry::evaluate(WheelSide side, const WheelsetPose& pose, S
   } else {
     out.clearance_gradient.fill(kNaN);
   }
-  // The creep frame of the constraint: the rail's slope at the point is dz_touch/dy (envelope).
-  const double g = out.z_gradient[0], n = 1.0 / std::sqrt(1.0 + g * g);
-  if (value_count > kFieldContactAngle) out.value[kFieldContactAngle] = std::atan(side_sign(side) * g);
-  if (value_count > kFieldNormalZ) {
-    out.value[kFieldNormalX] = 0.0;
-    out.value[kFieldNormalY] = -g * n;
-    out.value[kFieldNormalZ] = n;
-  }
+  set_slope_frame(side, out.z_gradient[0], out.value, value_count);
 }
 
 ContactPoint SplineContactGeometry::contact_point(WheelSide side, const WheelsetPose& pose,
@@ -217,9 +253,13 @@ PatchShape SplineContactGeometry::patch_shape(const SplineEvaluation& e) const {
 
 std::string SplineContactGeometry::data_hash() const {
   static_assert(sizeof(double) == 8, "model data are hashed as IEEE doubles");
-  std::vector<double> data{transition_};
+  std::vector<double> data;
   for (const SplineWheel& w : wheels_) {
-    for (const JumpSurface& j : w.jumps) data.insert(data.end(), j.c.begin(), j.c.end());
+    for (const JumpSurface& j : w.jumps) {
+      data.insert(data.end(), j.c.begin(), j.c.end());
+      data.push_back(j.height_half_width);
+      data.push_back(j.y_reach);
+    }
     for (const TensorSplineSet& set : w.branches) {
       for (const BSplineBasis& b : set.basis().bases()) {
         data.push_back(b.degree());

@@ -5,6 +5,7 @@
 /// evaluated with one basis evaluation per wheel and configuration.
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "core/geometry/contact_point.hpp"
@@ -35,6 +36,14 @@ struct SplineEvaluation {
   std::array<double, 6> z_hessian{};
   /// d flange_clearance / d(y, roll, yaw) [SI] (kGradient or kHessian with derivative_fields 2).
   std::array<double, 3> clearance_gradient{};
+  /// Within a transition (0 < upper_share < 1): the share of the load the upper branch's point
+  /// carries [-] and both branches' own fields [SI] (their fitted normals and angles); NaN share
+  /// elsewhere.
+  double upper_share = std::numeric_limits<double>::quiet_NaN();
+  std::array<double, kSplineFieldCount> lower_value{}, upper_value{};
+  /// Within a transition, with a gradient evaluated: each branch's dz/dy [-], and the fields'
+  /// normal and contact angle replaced by those of this slope (as for the blend's own).
+  double lower_slope = std::numeric_limits<double>::quiet_NaN(), upper_slope = lower_slope;
 };
 
 /// Where the tread contact point of one wheel jumps, as a function of roll and yaw: y_jump =
@@ -42,6 +51,13 @@ struct SplineEvaluation {
 /// the sample lines).
 struct JumpSurface {
   std::array<double, 9> c{};  ///< coefficients [m / rad^(a + b)]
+  /// Half-width of the blend of the two branches in the difference of their touching heights,
+  /// d = z_above - z_below [m], > 0: within |d| < height_half_width the elastic contact shares
+  /// the load between both points (docs/spline-model.md, "Branches and the transition").
+  double height_half_width = 0;
+  /// Largest |y - y_jump| at which |d| < height_half_width on the sample lines [m], > 0: beyond
+  /// it the pose's branch alone is evaluated.
+  double y_reach = 0;
   /// y_jump at (roll, yaw) [m].
   double at(double roll, double yaw) const {
     return (c[0] + yaw * (c[1] + yaw * c[2])) + roll * ((c[3] + yaw * (c[4] + yaw * c[5])) + roll * (c[6] + yaw * (c[7] + yaw * c[8])));
@@ -53,8 +69,9 @@ struct JumpSurface {
 
 /// One wheel's fitted splines: branches[0..J] in increasing y, branch m the tread contact point
 /// between jumps[m - 1] and jumps[m], each fitted on its own basis over the stretch of y where it
-/// is used (its own with the transitions), and blended C2 into its neighbour within `transition`
-/// of a jump. Without jumps one spline (the paper's form: one fit across every jump).
+/// is used (its own with the transitions), and blended C2 into its neighbour as a smooth maximum
+/// of their touching heights (JumpSurface::height_half_width). Without jumps one spline (the
+/// paper's form: one fit across every jump).
 struct SplineWheel {
   std::vector<TensorSplineSet> branches;  ///< kSplineFieldCount functions each, SplineField order
   std::vector<JumpSurface> jumps;         ///< branches.size() - 1 jump surfaces, increasing in y
@@ -67,12 +84,11 @@ class SplineContactGeometry {
   /// @param left_box the left wheel's box (the right wheel's is mirrored).
   /// @param s_split flange split of the wheel profile [m] (wheel_sample.hpp).
   /// @param lateral_curvature_floor the conformal floor the Hertz fields were computed with [-].
-  /// @param transition half-width in y of the blend between two branches at a jump [m] (> 0 when
-  ///        a wheel has jumps).
   /// @throws std::invalid_argument for a wrong count of wheels, branches or functions, a basis
-  ///         that is not 3-D, or a box the bases do not cover (all branches together).
+  ///         that is not 3-D, a box the bases do not cover (all branches together), or a jump
+  ///         whose height_half_width or y_reach is not positive and finite.
   SplineContactGeometry(std::array<SplineWheel, 2> wheels, SplineBox left_box, double s_split,
-                        double lateral_curvature_floor, double transition = 0.0);
+                        double lateral_curvature_floor);
 
   /// The box of one wheel.
   SplineBox box(WheelSide side) const;
@@ -83,8 +99,11 @@ class SplineContactGeometry {
   std::string outside_reason(WheelSide side, const WheelsetPose& pose) const;
 
   /// Evaluates one wheel at pose (no box check: outside, the end polynomials extrapolate): the
-  /// branch of the pose, or within `transition` of a jump the two branches blended by a C2 step
-  /// w(t) (t = (y - y_jump(roll, yaw)) / transition; values, gradient and Hessian of the blend);
+  /// branch of the pose, or near a jump (|y - y_jump| < y_reach and |d| < height_half_width, d
+  /// the upper branch's z minus the lower's) the smooth maximum of the two branches' z,
+  /// z_a + h phi(d / h), every other field blended with phi' = w (the upper point's share),
+  /// w(u) = u^3 (10 - 15 u + 6 u^2), u = (1 + d / h) / 2: the gradient of z a convex combination
+  /// of the branches' (values, gradient and Hessian of the blend);
   /// the values of the first value_count fields (kSplineQueryFieldCount: what a contact query uses;
   /// the cost falls with the count, and the fields left out are NaN), and with kGradient or
   /// kHessian the gradient and Hessian of z (both always: one-variable-at-a-time contraction,
@@ -105,14 +124,14 @@ class SplineContactGeometry {
   /// B <= floor * A).
   PatchShape patch_shape(const SplineEvaluation& e) const;
 
-  /// SHA-256 of the model data: the transition, then per wheel its jump surfaces' coefficients
+  /// SHA-256 of the model data: per wheel its jump surfaces' coefficients, height half-widths and
+  /// y reaches,
   /// and per branch and variable the degree and breakpoints, then every coefficient
   /// (function-major), as little-endian doubles on every host (sha256_hex_of_doubles;
   /// heartbeat_t.model_hash).
   std::string data_hash() const;
 
   const SplineWheel& wheel(WheelSide side) const { return wheels_[static_cast<size_t>(side)]; }
-  double transition() const { return transition_; }
   double s_split() const { return s_split_; }
   double lateral_curvature_floor() const { return lateral_curvature_floor_; }
 
@@ -121,7 +140,6 @@ class SplineContactGeometry {
   SplineBox left_box_;
   double s_split_;
   double lateral_curvature_floor_;
-  double transition_;
 };
 
 }  // namespace wrc

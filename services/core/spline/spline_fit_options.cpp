@@ -108,7 +108,7 @@ std::string SplineFitOptions::canonical_text() const {
     << ' ' << num(grading) << "|breakpoints";
   for (double b : y_breakpoints) t << ' ' << num(b);
   t << "|samples " << num(sample_step_y) << ' ' << roll_samples << ' ' << yaw_samples << "|weights " << num(jump_weight)
-    << ' ' << num(jump_band) << "|transition " << num(transition) << "|flange " << num(flange_angle) << ' ' << num(clearance_cap) << "|search "
+    << ' ' << num(jump_band) << "|transition " << num(transition) << ' ' << num(transition_load) << "|flange " << num(flange_angle) << ' ' << num(clearance_cap) << "|search "
     << num(search.step) << ' ' << num(search.min_step) << ' ' << num(search.tolerance);
   return t.str();
 }

@@ -48,14 +48,19 @@ struct SplineFitOptions {
   /// Half-width in y of the band around each jump [m]: down-weighted in the paper's form, and in
   /// both forms what the accuracy report leaves out of the continuous region.
   double jump_band = 5e-4;
-  /// Half-width in y of the smooth transition between two branches at a jump [m], >= 0. When > 0
-  /// and every sample line has the same number of tread jumps, each stretch between jumps is a
-  /// branch of the tread contact point, fitted on its own (with its continuation past the jumps as
-  /// a non-lowest minimum) and blended C2 into its neighbour within this distance of the fitted
-  /// jump position; elsewhere the model is that branch's fit alone, so the smoothing stays
-  /// within the band. 0: one fit across the jumps, down-weighted within jump_band (the paper's
-  /// form).
-  double transition = 2e-4;
+  /// Largest half-width of the smooth transition between two branches at a jump, in the
+  /// difference d of their touching heights [m], >= 0. When > 0 and every sample line has the
+  /// same number of tread jumps, each stretch between jumps is a branch of the tread contact
+  /// point, fitted on its own (with its continuation past the jumps as a non-lowest minimum), and
+  /// two branches are joined by a C2 smooth maximum of their heights within |d| < h, h the
+  /// smallest of this value, the Hertz approach at transition_load (the height difference within
+  /// which an elastic contact loads both points) and the height difference at which a branch
+  /// ends (a fold) on the sample lines; elsewhere the model is that branch's fit alone. 0: one
+  /// fit across the jumps, down-weighted within jump_band (the paper's form).
+  double transition = 1e-3;
+  /// Normal load per wheel whose Hertz approach bounds the transition [N], in [1, 1e6]: the
+  /// benchmark's Fz / 2.
+  double transition_load = 77357.5;
 
   /// Wheel profile slope angle [rad] that separates tread (and flange root) from the flange: the
   /// flange region is s below the first point, going from the taping line towards the flange,

@@ -27,8 +27,12 @@ const std::vector<Parameter<SplineFitOptions>>& spline_fit_table() {
       member_parameter<O>({"jump_band", nullptr, "m", "half-width in y of the down-weighted band around each jump",
                            kNumber, kNonNegative}, &O::jump_band),
       member_parameter<O>({"transition", nullptr, "m",
-                           "half-width of the blend between branch fits at a jump (0: one fit across the jumps)",
+                           "largest half-width of the blend between branch fits at a jump, in the difference of "
+                           "their touching heights (0: one fit across the jumps)",
                            kNumber, closed(0.0, 2e-3)}, &O::transition),
+      member_parameter<O>({"transition_load", nullptr, "N",
+                           "normal load per wheel whose Hertz approach sets the blend's half-width",
+                           kNumber, closed(1.0, 1e6)}, &O::transition_load),
       member_parameter<O>({"flange_angle", nullptr, "rad", "profile slope angle that starts the flange region",
                            kNumber, {0.1, Bound::kOpen, 1.5, Bound::kOpen}}, &O::flange_angle),
       member_parameter<O>({"clearance_cap", "", "m", "cap of the fitted flange clearance", kNumber, kPositive},

@@ -13,6 +13,8 @@
 
 #include <Eigen/Dense>
 
+#include "core/contact/hertz.hpp"
+#include "core/model_interface/contact_model.hpp"
 #include "core/model_interface/contact_model_options.hpp"
 
 namespace wrc {
@@ -205,9 +207,36 @@ constexpr double kFillWeight = 1e-4;
 // A branch continued past a jump is followed from sample to sample while its minimum moves by
 // less than this in s [m] (ds/dy stays below 10 there; a larger step means it has vanished).
 constexpr double kContinuationShift = 1e-3;
-// Margin of a branch's basis beyond the farthest sampled jump plus the transition [m]: the fitted
+// Margin of a branch's basis beyond the farthest sampled jump plus its y reach [m]: the fitted
 // jump surface may lie a little beyond the sampled jumps between the lines.
 constexpr double kBranchMargin = 2.5e-4;
+// Weight of a branch's continuation samples past its jumps [-] (its own samples weigh 1). The
+// transition needs the continuation only where the two heights differ by less than its
+// half-width, where the other branch carries most of the load; at full weight its curvature
+// pulls the own stretch's fit (10 x 2 x 2, rms in the continuous region, weight 1 -> 0.1:
+// flange clearance 2.25 -> 1.54 um, s 2.65 -> 1.79 um, rolling radius 0.361 -> 0.332 um, hertz_B
+// 9.5e-4 -> 8.3e-4 1/m), while the continuation itself stays within 0.1 um of z and 1.1 mrad of
+// the contact angle (tests/unit/spline_branch_test.cpp).
+constexpr double kContinuationWeight = 0.1;
+// Farthest a branch is followed past its jump in y [m]: beyond it the two heights of S1002 on
+// UIC60 differ by more than any Hertz approach the fit options allow.
+constexpr double kMaxContinuation = 3e-3;
+
+// The Hertz approach [m] of the contact described by a sample's fields under the normal load [N],
+// with the default material (ContactMaterial: G = 8.2e10 Pa, nu = 0.28).
+double hertz_approach(const WheelSample& s, double normal_load) {
+  const ContactMaterial material;
+  return hertz_from_force(s.fields[kFieldHertzA], s.fields[kFieldHertzB],
+                          contact_modulus(material.shear_modulus, material.poisson_ratio), normal_load)
+      .penetration;
+}
+
+// What following one branch past one jump on one line found.
+struct ContinuationTrace {
+  double approach = std::numeric_limits<double>::infinity();  // mean Hertz approach of both sides [m]
+  double fold = std::numeric_limits<double>::infinity();      // height difference where it vanished [m]
+  std::vector<std::pair<double, double>> heights;  // (|y - y_jump| [m], own z minus continued z [m])
+};
 
 // The basis of one fit over [y_lo, y_hi] and the wheel's roll and yaw ranges.
 TensorBasis branch_basis(const SplineFitOptions& options, const SplineBox& box, const std::vector<double>& y_breaks) {
@@ -256,7 +285,6 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
   const long lines = static_cast<long>(options.roll_samples) * options.yaw_samples;
   const double floor = ContactModelOptions{}.lateral_curvature_floor;
   std::array<SplineWheel, 2> wheels;
-  bool any_branches = false;
 
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
     const int w = static_cast<int>(side);
@@ -331,11 +359,11 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
     // Branches: branch b is the tread point between jumps b - 1 and b of each line. Its samples:
     // its own stretch, its continuation past each of its jumps up to the transition (and one
     // sample more), followed as a non-lowest minimum while it exists, and filled values elsewhere.
-    any_branches = true;
-    const double h = options.transition, reach = h + options.sample_step_y;
     const size_t branches = jumps + 1;
     start = std::chrono::steady_clock::now();
     std::vector<std::vector<WheelSample>> continued(branches, std::vector<WheelSample>(count));
+    // traces[m][2 line + (dir < 0)]: jump m on the line, followed upwards (branch m) or downwards.
+    std::vector<std::vector<ContinuationTrace>> traces(jumps, std::vector<ContinuationTrace>(2 * static_cast<size_t>(lines)));
     std::atomic<int> evaluations{0};
     auto follow = [&](int line) {
       const size_t j = static_cast<size_t>(line) / nk, k = static_cast<size_t>(line) % nk;
@@ -347,21 +375,43 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
       const std::vector<TreadJump>& line_jumps = grid.line_jumps[static_cast<size_t>(line)];
       for (size_t m = 0; m < jumps; ++m) {
         const TreadJump& jump = line_jumps[m];
-        // Branch m upwards past its upper jump, branch m + 1 downwards past its lower one.
+        const size_t above = static_cast<size_t>(std::upper_bound(grid.y.begin(), grid.y.end(), jump.y) - grid.y.begin());
+        // The elastic contact shares the load while the two heights differ by less than the
+        // approach (the mean of the samples on either side of the jump), at most the transition.
+        double approach = options.transition;
+        if (above > 0 && above < nyy && grid.samples[row + above].valid && grid.samples[row + above - 1].valid)
+          approach = std::min(approach, 0.5 * (hertz_approach(grid.samples[row + above], options.transition_load) +
+                                               hertz_approach(grid.samples[row + above - 1], options.transition_load)));
+        // Branch m upwards past its upper jump, branch m + 1 downwards past its lower one, while
+        // it exists and its height lies less than the approach below the lowest minimum's (and
+        // one sample more).
         for (int dir : {1, -1}) {
           const size_t b = dir > 0 ? m : m + 1;
+          ContinuationTrace& trace = traces[m][2 * static_cast<size_t>(line) + (dir < 0 ? 1 : 0)];
+          trace.approach = approach;
           double s_near = dir > 0 ? jump.s_before : jump.s_after;
+          double last_gap = 0.0;
           for (size_t step = 0; step < nyy; ++step) {
-            const size_t i = dir > 0 ? static_cast<size_t>(std::upper_bound(grid.y.begin(), grid.y.end(), jump.y) - grid.y.begin()) + step
-                                     : static_cast<size_t>(std::lower_bound(grid.y.begin(), grid.y.end(), jump.y) - grid.y.begin()) - 1 - step;
-            if (i >= nyy || std::abs(grid.y[i] - jump.y) > reach) break;
+            const size_t i = dir > 0 ? above + step : above - 1 - step;
+            if (i >= nyy || std::abs(grid.y[i] - jump.y) > kMaxContinuation) break;
             pose.y = grid.y[i];
             ++evaluations;
             WheelSample c = sample_wheel_branch(geometry, side, pose, s_split, options.clearance_cap, floor, options.search,
                                                 s_near, kContinuationShift);
-            if (!c.valid) break;
+            if (!c.valid) {
+              // Vanished (a fold) before reaching the approach: the height difference of its last
+              // sample bounds the transition. Gone at the first sample, the fold lies closer to the
+              // jump than the sampling resolves, and bounds nothing.
+              if (!trace.heights.empty()) trace.fold = last_gap;
+              break;
+            }
             s_near = c.tread.s;
+            const WheelSample& own = grid.samples[row + i];
+            const double gap = own.valid ? own.fields[kFieldZ] - c.fields[kFieldZ] : approach;
             continued[b][row + i] = std::move(c);
+            trace.heights.emplace_back(std::abs(grid.y[i] - jump.y), gap);
+            last_gap = gap;
+            if (gap > approach) break;
           }
         }
       }
@@ -371,22 +421,41 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
     out.sampling_seconds += seconds_since(start);
     start = std::chrono::steady_clock::now();
 
-    for (size_t m = 0; m < jumps; ++m) wheel.jumps.push_back(fit_jump_surface(grid, m));
+    for (size_t m = 0; m < jumps; ++m) {
+      // The jump's height half-width: the smallest approach or fold over its lines, and the y
+      // reach within which the two heights differ by less on some line (one sample more).
+      JumpSurface surface = fit_jump_surface(grid, m);
+      double half_width = std::numeric_limits<double>::infinity(), y_reach = options.sample_step_y;
+      for (const ContinuationTrace& t : traces[m]) half_width = std::min({half_width, t.approach, t.fold});
+      half_width = std::max(half_width, 1e-9);
+      for (const ContinuationTrace& t : traces[m])
+        for (const auto& [dy, gap] : t.heights)
+          if (gap <= half_width) y_reach = std::max(y_reach, dy + options.sample_step_y);
+      surface.height_half_width = half_width;
+      surface.y_reach = y_reach;
+      report.jump_half_widths.push_back({half_width, y_reach});
+      wheel.jumps.push_back(surface);
+    }
     for (size_t b = 0; b < branches; ++b) {
-      double lo = box.y_min, hi = box.y_max;
+      // The branch's own stretch [own_lo, own_hi] (between its jumps on every line) and its basis
+      // [lo, hi], which reaches past each jump as far as the transition needs the branch.
+      double lo = box.y_min, hi = box.y_max, own_lo = lo, own_hi = hi;
       if (b > 0) {
-        lo = std::numeric_limits<double>::infinity();
-        for (const auto& line : grid.line_jumps) lo = std::min(lo, line[b - 1].y);
-        lo = std::max(box.y_min, lo - h - kBranchMargin);
+        own_lo = std::numeric_limits<double>::infinity();
+        for (const auto& line : grid.line_jumps) own_lo = std::min(own_lo, line[b - 1].y);
+        lo = std::max(box.y_min, own_lo - wheel.jumps[b - 1].y_reach - kBranchMargin);
       }
       if (b < jumps) {
-        hi = -std::numeric_limits<double>::infinity();
-        for (const auto& line : grid.line_jumps) hi = std::max(hi, line[b].y);
-        hi = std::min(box.y_max, hi + h + kBranchMargin);
+        own_hi = -std::numeric_limits<double>::infinity();
+        for (const auto& line : grid.line_jumps) own_hi = std::max(own_hi, line[b].y);
+        hi = std::min(box.y_max, own_hi + wheel.jumps[b].y_reach + kBranchMargin);
       }
-      // intervals[0] intervals per branch (at least two samples each).
+      // intervals[0] intervals over the own stretch, and the continuations at the same spacing (a
+      // wider transition adds knots rather than coarsening the branch), at least two samples each.
+      const double own_span = std::max(own_hi - own_lo, 2.0 * options.sample_step_y);
+      const int wanted = static_cast<int>(std::ceil(options.intervals[0] * (hi - lo) / own_span - 1e-9));
       const int max_intervals = std::max(1, static_cast<int>(std::floor((hi - lo) / (2.0 * options.sample_step_y))));
-      const std::vector<double> y_breaks = sample_values(lo, hi, std::min(options.intervals[0], max_intervals) + 1);
+      const std::vector<double> y_breaks = sample_values(lo, hi, std::min(wanted, max_intervals) + 1);
       report.y_breakpoints.push_back(y_breaks);
 
       WeightedSamples samples;
@@ -410,7 +479,7 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
             weight[i] = s.valid ? 1.0 : 0.0;
           } else if (continued[b][row + i].valid) {
             source[i] = &continued[b][row + i];
-            weight[i] = 1.0;
+            weight[i] = kContinuationWeight;
           }
         }
         for (size_t i = 0; i < nyy; ++i) {
@@ -460,8 +529,7 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
     out.fitting_seconds += seconds_since(start);
     out.samples[static_cast<size_t>(w)] = std::make_shared<const WheelSampleGrid>(std::move(grid));
   }
-  out.model = std::make_shared<const SplineContactGeometry>(std::move(wheels), left_box, s_split, floor,
-                                                            any_branches ? options.transition : 0.0);
+  out.model = std::make_shared<const SplineContactGeometry>(std::move(wheels), left_box, s_split, floor);
 
   // Residuals of the model on its own samples of the continuous region: weight 1 in the paper's
   // form, farther than jump_band from every jump, no flange contact.

@@ -57,6 +57,9 @@ struct FieldError {
 /// What the fit of one wheel found and how well it fits its own samples.
 struct WheelFitReport {
   std::vector<TreadJump> jumps;          ///< every tread jump found on the sample lines
+  /// Per jump surface (branch fits only): its height half-width and y reach [m, m]
+  /// (JumpSurface::height_half_width, y_reach).
+  std::vector<std::pair<double, double>> jump_half_widths;
   /// The breakpoints used in y, per branch (one list for the paper's form) [m].
   std::vector<std::vector<double>> y_breakpoints;
   FitStatistics fit;                     ///< least-squares assembly and solve

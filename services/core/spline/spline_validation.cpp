@@ -73,6 +73,10 @@ SplineAccuracy validate_spline_geometry(const WheelsetGeometry& geometry, const 
             ++acc.excluded_near_jumps;
             continue;
           }
+          if (e.upper_share > 0.0 && e.upper_share < 1.0) {
+            ++acc.excluded_in_transition;
+            continue;
+          }
           for (int f = 0; f < kSplineFieldCount; ++f)
             add(acc.continuous[static_cast<size_t>(f)],
                 std::abs(e.value[static_cast<size_t>(f)] - s.fields[static_cast<size_t>(f)]),

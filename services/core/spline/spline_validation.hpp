@@ -21,12 +21,16 @@ struct JumpDistanceBand {
 /// Accuracy of one wheel.
 struct WheelAccuracy {
   /// Per field, over the continuous region: validation points farther than jump_band from every
-  /// jump and not in flange contact (exact flange clearance > 0).
+  /// jump, outside every transition (where the model is one branch's fit alone, not the smooth
+  /// maximum of two) and not in flange contact (exact flange clearance > 0).
   std::array<FieldError, kSplineFieldCount> continuous{};
   /// Errors against the distance from the nearest jump (z and every field), flange contact left out.
   std::vector<JumpDistanceBand> z_by_jump_distance;
   int points = 0;                 ///< validation points of this wheel
   int excluded_near_jumps = 0;    ///< within jump_band of a jump
+  /// farther than jump_band from every jump but inside a transition (a jump whose two heights
+  /// differ by less than its half-width there: the elastic contact loads both points)
+  int excluded_in_transition = 0;
   int excluded_flange_contact = 0;///< in flange contact (the model uses the exact geometry there)
   int jumps = 0;                  ///< tread jumps found on the validation lines
 };

@@ -17,7 +17,8 @@ const std::vector<MessageField<spline_fit_options_t>>& fit_fields() {
       WRC_MESSAGE_FIELD(M, y_min),        WRC_MESSAGE_FIELD(M, y_max),        WRC_MESSAGE_FIELD(M, roll_max),
       WRC_MESSAGE_FIELD(M, yaw_max),      WRC_MESSAGE_FIELD(M, grading),      WRC_MESSAGE_FIELD(M, sample_step_y),
       WRC_MESSAGE_FIELD(M, roll_samples), WRC_MESSAGE_FIELD(M, yaw_samples),  WRC_MESSAGE_FIELD(M, jump_weight),
-      WRC_MESSAGE_FIELD(M, jump_band),    WRC_MESSAGE_FIELD(M, transition),   WRC_MESSAGE_FIELD(M, flange_angle),
+      WRC_MESSAGE_FIELD(M, jump_band),    WRC_MESSAGE_FIELD(M, transition),   WRC_MESSAGE_FIELD(M, transition_load),
+      WRC_MESSAGE_FIELD(M, flange_angle),
       WRC_MESSAGE_FIELD(M, clearance_cap),
   };
   return fields;

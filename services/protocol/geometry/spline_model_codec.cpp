@@ -58,7 +58,11 @@ spline_model_t encode_model(const SplineFit& fit, const GeometrySpec& spec, cons
     out.wheel = static_cast<int8_t>(w);
     out.num_branches = static_cast<int32_t>(wheel.branches.size());
     out.num_jumps = static_cast<int32_t>(wheel.jumps.size());
-    for (const JumpSurface& j : wheel.jumps) out.jump_surfaces.emplace_back(j.c.begin(), j.c.end());
+    for (const JumpSurface& j : wheel.jumps) {
+      out.jump_surfaces.emplace_back(j.c.begin(), j.c.end());
+      out.jump_height_half_widths.push_back(j.height_half_width);
+      out.jump_y_reaches.push_back(j.y_reach);
+    }
     out.basis_size_y = 0;
     out.num_coefficients = 0;
     out.num_functions = kSplineFieldCount;
@@ -108,17 +112,17 @@ std::shared_ptr<const SplineContactGeometry> decode_model(const spline_model_t& 
   require_finite(m.flange_split_s, "flange_split_s");
   require_finite(m.lateral_curvature_floor, "lateral_curvature_floor");
   std::array<SplineWheel, 2> wheels;
-  bool any_branches = false;
   for (int w = 0; w < 2; ++w) {
     const spline_wheel_t& in = m.wheels[w];
     const std::string name = std::string("wheels[") + std::to_string(w) + "]";
     if (in.wheel != w) bad(name + ".wheel = " + std::to_string(in.wheel));
     if (in.num_branches < 1 || static_cast<size_t>(in.num_branches) != in.branch_breakpoints_y.size() ||
-        in.num_jumps != in.num_branches - 1 || static_cast<size_t>(in.num_jumps) != in.jump_surfaces.size())
+        in.num_jumps != in.num_branches - 1 || static_cast<size_t>(in.num_jumps) != in.jump_surfaces.size() ||
+        static_cast<size_t>(in.num_jumps) != in.jump_height_half_widths.size() ||
+        static_cast<size_t>(in.num_jumps) != in.jump_y_reaches.size())
       bad(name + ": " + std::to_string(in.num_branches) + " branches and " + std::to_string(in.num_jumps) +
           " jump surfaces declared (one branch more than jumps), " + std::to_string(in.branch_breakpoints_y.size()) +
           " and " + std::to_string(in.jump_surfaces.size()) + " present");
-    any_branches = any_branches || in.num_branches > 1;
     SplineWheel& wheel = wheels[static_cast<size_t>(w)];
     for (size_t j = 0; j < in.jump_surfaces.size(); ++j) {
       JumpSurface surface;
@@ -126,6 +130,8 @@ std::shared_ptr<const SplineContactGeometry> decode_model(const spline_model_t& 
         surface.c[q] = in.jump_surfaces[j][q];
         require_finite(surface.c[q], name + ".jump_surfaces[" + std::to_string(j) + "][" + std::to_string(q) + "]");
       }
+      surface.height_half_width = in.jump_height_half_widths[j];
+      surface.y_reach = in.jump_y_reaches[j];
       wheel.jumps.push_back(surface);
     }
     const std::vector<double> all_y = checked_breakpoints(in.breakpoints_y, in.num_breakpoints_y, name + ".breakpoints_y");
@@ -176,7 +182,7 @@ std::shared_ptr<const SplineContactGeometry> decode_model(const spline_model_t& 
   }
   auto model = std::make_shared<const SplineContactGeometry>(
       std::move(wheels), SplineBox{options.y_min, options.y_max, options.roll_max, options.yaw_max}, m.flange_split_s,
-      m.lateral_curvature_floor, any_branches ? options.transition : 0.0);
+      m.lateral_curvature_floor);
   const std::string hash = model->data_hash();
   if (hash != m.model_hash) bad("model_hash = " + m.model_hash + " but the data hash to " + hash);
   return model;

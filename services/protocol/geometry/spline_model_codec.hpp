@@ -15,7 +15,7 @@
 namespace wrc::protocol {
 
 /// Layout version written into spline_model_t.version.
-inline constexpr int kSplineModelVersion = 3;
+inline constexpr int kSplineModelVersion = 4;  // 4: per-jump height half-widths and y reaches
 /// Largest encoded spline_model_t sent inline [B]; larger models travel as a file (one UDP
 /// datagram holds < 64 kB).
 inline constexpr int kMaxInlineModelBytes = 60000;

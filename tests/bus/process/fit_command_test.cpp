@@ -59,13 +59,22 @@ TEST_F(BusTest, FitCommandWritesTheAccuracyReport) {
   EXPECT_EQ(r.at("validation").at("excluded_band").get<double>(), 5e-4);
   ASSERT_EQ(r.at("wheels").size(), 2u);
   for (const auto& w : r.at("wheels")) {
-    // One list per branch (three for S1002/UIC60: two tread jumps), each at most the 6 intervals
-    // asked (fewer where a branch is too short for two samples per interval).
+    // One list per branch (three for S1002/UIC60: two tread jumps): the 6 intervals asked over
+    // the branch's own stretch and more at the same spacing over its continuations past the
+    // jumps, which at most double its span here (a reach of 0.68 mm + 0.25 mm beside own
+    // stretches of at least 1.3 mm); fewer where a branch is too short for two samples per
+    // interval.
     ASSERT_EQ(w.at("branches").get<size_t>(), 3u);
     ASSERT_EQ(w.at("y_breakpoints").size(), 3u);
     for (const auto& b : w.at("y_breakpoints")) {
-      EXPECT_LE(b.size(), 7u);
+      EXPECT_LE(b.size(), 13u);
       EXPECT_GE(b.size(), 4u);
+    }
+    ASSERT_EQ(w.at("transitions").size(), 2u);
+    for (const auto& t : w.at("transitions")) {
+      EXPECT_GT(t.at("height_half_width").get<double>(), 0.0);
+      EXPECT_LE(t.at("height_half_width").get<double>(), r.at("options").at("transition").get<double>());
+      EXPECT_GT(t.at("y_reach").get<double>(), 0.0);
     }
     EXPECT_GT(w.at("jumps").size(), 0u);  // S1002/UIC60 has tread jumps in |y| <= 6 mm
   }

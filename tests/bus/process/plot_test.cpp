@@ -1,5 +1,6 @@
 // `wrc plot KIND` as the user runs it: each kind writes a PNG of the size asked for (read from the
-// PNG header) or an SVG from a small case; a bad option and a missing gnuplot give one-line errors.
+// PNG header) or an SVG from a small case; several bifurcation diagrams hand gnuplot the series
+// they should; a bad option and a missing gnuplot give one-line errors.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,7 +9,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "child_process.hpp"
 
@@ -152,6 +156,99 @@ TEST_F(PlotTest, Conicity) { expect_png("conicity --a-from 0.001 --a-to 0.008 --
 TEST_F(PlotTest, Profiles) { expect_png("profiles --y 0.005", "profiles.png"); }
 
 TEST_F(PlotTest, Displacement) { expect_png("displacement --grid 21", "displacement.png"); }
+
+// Several bifurcation diagrams in one picture (`wrc plot bifurcation A.csv B.csv --labels`): what
+// is handed to gnuplot, captured by a gnuplot on PATH that copies the job's script and data
+// before running the real one. Each file's stable cycles of its ramp-down are one data series in
+// increasing speed, in mm (the CSV's m x 1000), tread and flange cycles together, the centred
+// runs left out; its key names the label and both critical speeds; a wrong number of labels or
+// a file that is no bifurcation CSV is a one-line error naming it.
+TEST_F(PlotTest, SeveralBifurcationDiagramsInOnePicture) {
+  const std::string header =
+      "branch [-],speed [m/s],state [-],amplitude [m],mean [m],yaw_amplitude [rad],frequency [Hz],growth [-],"
+      "largest_contact_angle [rad],flange_contact [-],start_y [m],simulated_time [s],wall_time [s],message [-]\n";
+  auto row = [](const std::string& branch, double v, const std::string& state, double a, double angle) {
+    return branch + "," + std::to_string(v) + "," + state + "," + std::to_string(a) + ",0,0,19,1," +
+           std::to_string(angle) + ",0,0.002,4,1,\n";
+  };
+  const fs::path a = dir_ / "a.csv", b = dir_ / "b.csv";
+  {
+    std::ofstream out(a);
+    out << header << row("centred", 150, "centred", 1e-7, 0.02) << row("ramp-down", 200, "limit-cycle", 5e-4, 0.065)
+        << row("ramp-down", 150, "limit-cycle", 4e-4, 0.5) << row("ramp-down", 140, "centred", 1e-7, 0.02)
+        << row("nonlinear-critical", 150, "limit-cycle", 4e-4, 0.5);
+  }
+  {
+    std::ofstream out(b);
+    out << header << row("ramp-down", 200, "limit-cycle", 4.5e-4, 0.065) << row("ramp-down", 190, "centred", 0, 0.02)
+        << row("nonlinear-critical", 200, "limit-cycle", 4.5e-4, 0.065) << row("linear-critical", 385, "", 0, 0);
+  }
+  const fs::path bin = dir_ / "bin", capture = dir_ / "capture";
+  fs::create_directories(bin);
+  fs::create_directories(capture);
+  int status = -1;
+  const std::string real = run_command("command -v gnuplot", &status);
+  {
+    std::ofstream script(bin / "gnuplot");
+    script << "#!/bin/sh\ncp \"$(dirname \"$1\")\"/* " << capture.string() << "/\nexec "
+           << real.substr(0, real.find('\n')) << " \"$@\"\n";
+  }
+  fs::permissions(bin / "gnuplot", fs::perms::owner_all);
+  const std::string out = (dir_ / "both.png").string(), path = "PATH=" + bin.string() + ":/usr/bin:/bin ";
+  const std::string text = run_command(path + kCli + " plot bifurcation " + a.string() + " " + b.string() +
+                                           " --labels spline,multipoint --out " + out + " 2>&1",
+                                       &status);
+  ASSERT_EQ(status, 0) << text;
+  ASSERT_TRUE(fs::exists(out)) << text;
+  auto read = [](const fs::path& f) {
+    std::ifstream in(f);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  // A data file's (speed, amplitude) rows after its comment line.
+  auto series = [](const fs::path& f) {
+    std::ifstream in(f);
+    std::string comment;
+    std::getline(in, comment);
+    std::vector<std::pair<double, double>> rows;
+    for (double v, amplitude; in >> v >> amplitude;) rows.emplace_back(v, amplitude);
+    return rows;
+  };
+  const auto first = series(capture / "0-cycles.dat"), second = series(capture / "1-cycles.dat");
+  ASSERT_EQ(first.size(), 2u);
+  ASSERT_EQ(second.size(), 1u);
+  EXPECT_EQ(first[0].first, 150.0);
+  EXPECT_NEAR(first[0].second, 0.4, 1e-12);  // [mm]
+  EXPECT_EQ(first[1].first, 200.0);
+  EXPECT_NEAR(first[1].second, 0.5, 1e-12);
+  EXPECT_EQ(second[0].first, 200.0);
+  EXPECT_NEAR(second[0].second, 0.45, 1e-12);
+  const std::string gp = read(capture / "plot.gp");
+  EXPECT_NE(gp.find("spline: stable cycles, V_nl = 150.00 m/s\""), std::string::npos) << gp;
+  EXPECT_NE(gp.find("multipoint: stable cycles, V_nl = 200.00 m/s, V_c = 385.00 m/s\""), std::string::npos) << gp;
+  EXPECT_EQ(std::count_if(fs::directory_iterator(capture), fs::directory_iterator(),
+                          [](const fs::directory_entry& e) { return e.path().extension() == ".dat"; }),
+            2);
+
+  const struct {
+    std::string args, message;
+  } bad[] = {
+      {a.string() + " " + b.string() + " --labels spline", "names 1 diagrams for 2 files"},
+      {a.string() + " " + (dir_ / "history.csv").string(), "not a CSV of wrc bifurcation"},
+  };
+  {
+    std::ofstream history(dir_ / "history.csv");
+    history << "t [s],y [m]\n0,0\n";
+  }
+  for (const auto& c : bad) {
+    const std::string error =
+        run_command(kCli + " plot bifurcation " + c.args + " --out " + (dir_ / "bad.png").string() + " 2>&1 >/dev/null",
+                    &status);
+    EXPECT_NE(status, 0) << c.args;
+    EXPECT_NE(error.find(c.message), std::string::npos) << c.args << ": " << error;
+    EXPECT_EQ(std::count(error.begin(), error.end(), '\n'), 1) << error;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "bad.png"));
+}
 
 // Bad input: one line on stderr naming the bad value, no picture.
 TEST_F(PlotTest, BadOptionsGiveOneLineErrors) {

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The layers of the house: each folder of code is one layer, named by the include prefix its
 # headers are reached by ("core/geometry", "bus", "contactd", ...). A layer may include its own
 # headers and those of the layers it is declared to depend on (and theirs, transitively), never any

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # lcm-gen support for Debian's LCM 1.3.1, which ships no CMake package config
 # (no CMake config, broken pkg-config without glib). Generates C++ headers (INTERFACE target) and a
 # Java jar of all types so that lcm-spy can decode every message.

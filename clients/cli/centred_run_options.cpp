@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cli/centred_run_options.hpp"
 
 #include <iostream>

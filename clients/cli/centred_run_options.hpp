@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The run of `wrc stability` and `wrc bifurcation`: the run parameters from --params,

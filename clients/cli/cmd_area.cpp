@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc area: the contact area of one wheel (the paper's figures 1-3): distances between the
 // undeformed surfaces along the common normal on a grid of the common tangent plane.
 

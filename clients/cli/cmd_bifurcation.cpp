@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc bifurcation: the hunting bifurcation diagram of the wheelset on straight track by time
 // simulation (core/dynamics/hunting_continuation.hpp, docs/bifurcation.md), in-process with the
 // chosen contact model: the centred branch from a small disturbance, the stable limit-cycle branch

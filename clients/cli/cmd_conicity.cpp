@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc conicity: equivalent conicity by harmonic linearisation at one or more amplitudes.
 
 #include <cstdio>

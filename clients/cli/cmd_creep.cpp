@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc creep: creep forces on one Hertzian contact patch by FASTSIM or Kalker's linear theory.
 // Prints the forces on the wheel in SI units: CSV header `fx,fy,mz` and one row, or a text block.
 

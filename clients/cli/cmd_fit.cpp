@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc fit: the precomputation of the spline contact model from the command line, with a progress
 // bar: in this process with its accuracy report against the exact geometry, or on wrc-geometryd
 // (--service, cli/fit_on_service.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc geometry: rigid-wheelset contact geometry (both wheels touching, roll and height solved)
 // over a range of lateral shifts, as CSV or an aligned table.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc irregularities: a track-irregularity file (CSV, docs/track.md) generated from a published
 // spectrum (ERRI low/high, FRA classes 1-6), for `wrc run --irregularities` and
 // `wrc plot irregularities`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc launch [services...]: starts the services of a launch profile and supervises them until
 // Ctrl-C or SIGTERM: restart with back-off when one dies, kill and restart when its heartbeats
 // stop (hung or SIGSTOPped), every child stopped on exit. Creates the bus key on first use

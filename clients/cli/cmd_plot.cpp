@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot KIND: the pictures of wrc (the paper's figures and the usual contact-geometry charts),
 // drawn by gnuplot into PNG or SVG. Each kind lives in cli/plot/kind_<name>.cpp.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc points: every potential common point of one wheel for one wheelset pose.
 
 #include <cmath>

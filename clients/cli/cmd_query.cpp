@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc query: one contact query to a running contact service (wrc-contactd --model M) and its
 // patches, one row per patch. The service is found by its heartbeat: a READY instance of model M
 // that computes with the asked geometry (its heartbeat's geometry_key equals the key of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc record / wrc replay: the bus to an LCM log file and a log back onto the bus with
 // lcm-logplayer, so that `wrc spy` and `wrc plot run FILE` see a run as if live. The recorded
 // messages keep their authentication trailers; wrc's services drop a replayed copy of a message
@@ -6,7 +7,7 @@
 //
 // Recording is done here, not by lcm-logger: lcm-logger keeps LCM's default subscription queue of
 // 30 messages and discards what it has not yet written when it is stopped, so on a loaded machine
-// a run's burst of states was lost (how many: README, "Message flow"). This recorder queues up to kQueueCapacity messages, writes them with LCM's
+// a run's burst of states was lost (how many: docs/performance.md). This recorder queues up to kQueueCapacity messages, writes them with LCM's
 // own log writer (the file is an ordinary LCM log that lcm-logplayer, lcm-spy and lcm::LogFile
 // read), and on Ctrl-C writes every message already received before it closes the file.
 #include <unistd.h>

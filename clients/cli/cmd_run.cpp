@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc run: one wheelset run on wrc-dynamicsd (started, with the contact services it needs, when
 // none runs), with a progress bar, the state history as CSV and the summary as JSON
 // (cli/run_options.hpp: options -> request; cli/run_session.hpp: the run itself).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc spy: lcm-spy with the project's message types on its class path, so that every wrc message
 // is decoded. Debian's /usr/bin/lcm-spy passes -Xincgc, which Java 17 rejects; the
 // JDK_JAVA_OPTIONS=-XX:+IgnoreUnrecognizedVMOptions setting lets it start. lcm-spy finds types
@@ -19,15 +20,14 @@ namespace {
 int run_spy(const std::vector<std::string>& args) {
   Options options("spy", "[options]",
                   {{"--lcm-url", true, "LCM URL to watch", "LCM's default"},
-                   {"--jar", true, "types jar", "<build>/lcmtypes/wrc_lcmtypes_java.jar"},
+                   {"--jar", true, "types jar", "<build>/lcmtypes/wrc_lcmtypes_java.jar, installed <prefix>/share/java/"},
                    {"--print-command", false, "print the environment and command instead of running it", ""}},
                   args);
   if (options.help_requested()) {
     std::cout << options.help() << "\nNeeds a display (X11); on a headless machine use Xvfb.\n";
     return 0;
   }
-  const std::string jar =
-      options.text("--jar", (std::filesystem::path(bus::build_dir()) / "lcmtypes/wrc_lcmtypes_java.jar").string());
+  const std::string jar = options.text("--jar", bus::lcm_types_jar());
   if (!std::filesystem::is_regular_file(jar)) {
     throw UsageError("types jar '" + jar + "' does not exist (build the project first: clients/wrc build)");
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc stability: linear stability of the wheelset on straight track (core/dynamics/
 // linear_stability.hpp, docs/stability.md), in-process with the chosen contact model: the
 // eigenvalues against speed, the least damped mode per speed, the linear critical speed with its

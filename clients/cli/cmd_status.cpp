@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc status: lists the service processes on the bus from their heartbeats, with the first 12 hex
 // digits of the geometry key and of the model hash each computes with ("-" when none) and the
 // messages each dropped (unsigned/bad signature/replayed/malformed), and below it what the process

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc swap: hot swap of the contact model of the runs on the bus (CONTACT_SELECT). The selection
 // is republished for a second so that it survives packet loss; the dynamics acts on a new
 // selection number once, at its next step boundary.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Subcommands of the `wrc` front end. Each subcommand lives in its own cmd_<name>.cpp and

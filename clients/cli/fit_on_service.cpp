@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cli/fit_on_service.hpp"
 
 #include <unistd.h>

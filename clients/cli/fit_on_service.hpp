@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// `wrc fit --service`: the spline model precomputed by wrc-geometryd on the bus (started for the

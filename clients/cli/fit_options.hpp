@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The spline-fit options of the command line (wrc fit; the same names as SplineFitOptions).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The FASTSIM grid option of the front end (--grid MxN: elements per strip x strips), for the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cli/in_process_contact.hpp"
 
 #include "core/models/contact_model_factory.hpp"

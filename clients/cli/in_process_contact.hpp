@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A contact model evaluated in this process, without the bus (`wrc stability`, a sweep's runs):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Log files of started services removed when the command is ended by a signal (Ctrl-C, kill), so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc-cli: dispatches `wrc-cli <command> [options]` to the registered subcommands.
 // The shell front end clients/wrc sets up and builds the project, then execs this program.
 

@@ -1,10 +1,10 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The front end's names for the one option parser of wrc (options/options.hpp), shared with
 /// every service.
 
-#include <cmath>
-
+#include "core/numerics/inclusive_range.hpp"
 #include "options/options.hpp"
 
 namespace wrc::cli {
@@ -15,10 +15,8 @@ using wrc::Positional;
 using wrc::UsageError;
 
 /// Values from, from + step, ... up to to inclusive (a range option's --X-from, --X-to, --X-step):
-/// how many there are [-]. A to that the steps reach within 1e-9 of a step counts, so rounding in
-/// the options' decimal values does not drop the last one. Needs step > 0 and to >= from.
-inline long inclusive_step_count(double from, double to, double step) {
-  return std::lround(std::floor((to - from) / step + 1e-9)) + 1;
-}
+/// how many there are [-], by the one rule of core/numerics/inclusive_range.hpp. Needs step > 0
+/// and to >= from (the callers check them first, naming their options).
+inline long inclusive_step_count(double from, double to, double step) { return inclusive_range_count(from, to, step); }
 
 }  // namespace wrc::cli

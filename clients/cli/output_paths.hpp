@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Output files of the front end checked before any work starts: a command that writes FILE at

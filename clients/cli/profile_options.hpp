@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Profile and track options shared by the geometry commands (geometry, points, conicity, query).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A progress bar on stderr for long work (precomputation, runs): fraction done, elapsed and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// `wrc run`'s options and the run request they describe: the run's own (--model, --summary,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// What `wrc run` writes: the summary as JSON (final state, counters of run_counter_table(),
@@ -21,7 +22,7 @@ nlohmann::json summary_json(const run_summary_t& summary, const protocol::RunReq
 /// Writes the summary JSON to path. @throws std::runtime_error when it cannot.
 void write_summary(const std::string& path, const nlohmann::json& summary);
 
-/// Writes the states by simulated time [s] as CSV (SI units), every header "name [unit]" (README lists
+/// Writes the states by simulated time [s] as CSV (SI units), every header "name [unit]" (docs/cli.md lists
 /// the columns). @throws std::runtime_error when it cannot.
 void write_history(const std::string& path, const std::map<double, wheelset_state_t>& history);
 

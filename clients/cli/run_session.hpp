@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// One `wrc run` as a session: the services the run needs started (wrc-dynamicsd, the contact

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cli/service_starter.hpp"
 
 #include <signal.h>
@@ -158,7 +159,7 @@ std::unique_ptr<StartedService> ensure_service(lcm::LCM& lcm, const bus::Heartbe
   const std::string log = (std::filesystem::temp_directory_path() /
                            ("wrc-" + context.command + "-" + model + "-" + context.instance + ".log"))
                               .string();
-  std::cerr << context.command << ": no " << model << " service heard; starting " << executable << " (log " << log
+  std::cerr << context.command << ": no " << model << " service heard; starting " << *path << " (log " << log
             << ")\n";
   auto started = std::make_unique<StartedService>(*path, args, log);
   const double t0 = bus::monotonic_seconds();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Services a command needs, found by their heartbeats or started from the build tree for the

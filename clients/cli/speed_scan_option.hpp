@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A scan of forward speeds on the command line, FROM:TO:STEP [m/s] (`wrc stability --speeds`,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A parameter set as JSON, generated from its table (core/numerics/parameter_table.hpp): what

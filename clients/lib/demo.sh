@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The main job of wrc (`clients/wrc demo`), run after set-up and build by clients/wrc:
 # shows what the product computes today, from the exact geometry to the contact services on the bus.
 # By default the services run on a private LCM bus (a network namespace of this demo, see

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # netns.sh COMMAND [ARGS...]: runs COMMAND on a private LCM bus.
 # Preferred: a private network namespace (`unshare -n`, or `unshare -rn` without root) with
 # loopback up, multicast on and a 224.0.0.0/4 route, so LCM's default udpm URL works there and

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Set-up shared by the `wrc` front end: install missing Debian packages, configure and build.
 # Sourced by clients/wrc; defines wrc_setup. Debian packages only (the machines reach no other
 # registry); every package is installed only when missing.

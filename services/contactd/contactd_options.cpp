@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "contactd/contactd_options.hpp"
 
 #include <stdexcept>

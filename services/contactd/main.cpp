@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc-contactd: one contact model (onepoint, interp, multipoint or spline) as a service on the wrc
 // bus. It builds the wheelset geometry and the model (heartbeat state STARTING meanwhile, the
 // build time in its log; the spline model's data come from wrc-geometryd:

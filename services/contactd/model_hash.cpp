@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "contactd/model_hash.hpp"
 
 #include "core/identity/sha256.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The model hash a contact service publishes (heartbeat_t.model_hash, contact_reply_t.model_hash):

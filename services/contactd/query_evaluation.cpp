@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "contactd/query_evaluation.hpp"
 
 #include <exception>

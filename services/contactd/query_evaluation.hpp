@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// What wrc-contactd does with a query: every configuration evaluated by the model, every failure

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "contactd/spline_model_source.hpp"
 
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// How wrc-contactd --model spline gets its model: it asks wrc-geometryd (geometry_request_t on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "dynamicsd/bus_contact.hpp"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// ContactEvaluator over the bus: a batch of configurations as one contact_query_t to

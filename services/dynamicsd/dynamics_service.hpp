@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// wrc-dynamicsd's run management: START/STOP commands (RUN_COMMAND), live swaps

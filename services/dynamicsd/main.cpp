@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc-dynamicsd: the wheelset dynamics service. On a run_command_t (RUN_COMMAND) it integrates
 // the rigid wheelset on straight track with SUNDIALS IDA, asking the selected contact service
 // (CONTACT_QUERY.<model>) for every configuration, swaps the model on CONTACT_SELECT at the next

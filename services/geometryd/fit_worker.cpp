@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "geometryd/fit_worker.hpp"
 
 #include <exception>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The one worker thread of wrc-geometryd: fits spline models (make_geometry, fit_spline_geometry,

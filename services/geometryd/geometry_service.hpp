@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The request side of wrc-geometryd: geometry_request_t on GEOMETRY_REQUEST (decoded from the

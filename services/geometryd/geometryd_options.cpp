@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "geometryd/geometryd_options.hpp"
 
 #include <cstdlib>

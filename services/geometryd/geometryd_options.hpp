@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Command line of wrc-geometryd beyond the options every service shares (bus/service/service_options.hpp):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc-geometryd: the geometry precomputation service of the wrc bus. It answers every
 // geometry_request_t on GEOMETRY_REQUEST with the spline contact model (spline_model_t, request
 // id echoed) on the request's reply channel or SPLINE_MODEL: from its model cache

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The model cache of wrc-geometryd: one file per model, <dir>/<model_key>.splinemodel, in the

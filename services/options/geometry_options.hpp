@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The profile and track options (--wheel, --rail, --rail-cant, --gauge,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The one command-line option parser of wrc: every `wrc <command>` of the front end and every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Command-line options generated from a parameter table (core/numerics/parameter_table.hpp):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc-pingd: the diagnostic service of the wrc bus. It answers every ping_request_t on PING
 // (addressed to its instance or to any) with a ping_reply_t echoing request id and payload on
 // the request's reply channel, and sends heartbeats (model "pingd"). It has no computation, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The bridge between a parameter table (core/numerics/parameter_table.hpp) and a message type:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Pieces shared by the benchmarks that compare the bus layer with plain LCM (bench_bus,
 // bench_contact_service): the bare request/reply client and stopping the processes they start.

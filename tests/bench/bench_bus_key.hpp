@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The benchmarks' bus key: a fresh key file in a temporary directory of the run, installed in
 // this process and handed to the services it starts through $WRC_BUS_KEY (the user's own key is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bus baseline: round-trip latency between two processes on a real udpm bus.
 //   BareLcm    : plain lcm-cpp, typed subscribe on both sides (the floor)
 //   BusLayer   : wrc::bus::RequestClient -> wrc-pingd (RequestServer + ServiceLoop)

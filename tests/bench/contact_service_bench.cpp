@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contact service round trip against its floors, measured interleaved in one run (same machine
 // noise for all):
 //   bare_ping     : plain lcm-cpp echo of an empty ping_request_t (the bus baseline of bus_bench)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Benchmarks of the contact-mechanics kernels (services/core/contact): FASTSIM per patch on 10x10,
 // 20x20 and 40x40 grids in the linear and saturated regimes and with flange-contact spin, the Hertz
 // solve per patch (shape inversion plus loading) and the Kalker-coefficient lookup. Time per call in ns.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The paper's benchmark (parameters/benchmark.json, or WRC_BENCH_PARAMS=FILE) with every contact
 # model, over the bus and with the contact model in the dynamics process (--in-process, for
 # comparison only), each from several starts perturbed at rounding level (y0 = 0, 1e-9, 1e-8,

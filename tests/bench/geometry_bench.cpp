@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Benchmarks of the exact contact geometry: one potential-point evaluation of one
 // wheel, one rigid-wheelset solve (cold and warm start), and the table y = -10..10 mm in 0.01 mm
 // steps at 11 yaw angles. Counters: scans and roll iterations per solve.
@@ -89,7 +90,7 @@ void BM_RigidSolveWarmYawed(benchmark::State& state) {
 }
 BENCHMARK(BM_RigidSolveWarmYawed)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 
-// The geometry table of the README: y from -10 to 10 mm in 0.01 mm steps (2001 values) at 11 yaw angles
+// The geometry table of docs/performance.md: y from -10 to 10 mm in 0.01 mm steps (2001 values) at 11 yaw angles
 // from -10 to 10 mrad, warm-started along y.
 void BM_Table2001x11(benchmark::State& state) {
   const RigidWheelsetSolver solver(geometry(), options_for(state));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // In-process benchmark of the contact models (services/core/models): evaluations per second of
 // onepoint, interp, multipoint and spline (both wheels, FASTSIM 20x20, rigid and elastic), the time
 // interp spends building its table and the spline model its fit (sampling and least squares), what
@@ -131,7 +132,7 @@ void BM_SplinePrecompute(benchmark::State& state) {
 BENCHMARK(BM_SplinePrecompute)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 // Interp's table: 121 x 3 x 3 nodes, both wheels (the default grid), built in the constructor
-// (37 ms: README, "Performance").
+// (37 ms: docs/performance.md).
 void BM_InterpPrecompute(benchmark::State& state) {
   for (auto _ : state) {
     wrc::InterpolatedModel model(geometry());

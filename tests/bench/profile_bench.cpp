@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cost of Profile::evaluate() (one virtual call) for the analytic and file profiles.
 // Run: build-dir/tests/bench_profile. The lateral coordinates sweep the whole domain in a
 // pseudo-random order so that branch prediction and the spline's binary search see varied input.

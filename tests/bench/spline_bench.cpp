@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// Benchmarks of the tensor B-spline kernels (services/core/spline): the per-wheel spline query (the
 /// 3-D cubic basis over y, roll and yaw evaluated once, 20 functions' values contracted, one

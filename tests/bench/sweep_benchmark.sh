@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # sweep_benchmark.sh [WRC_CLI]: a benchmark, not a test. The same 16-run 2-parameter grid (speed x
 # friction, benchmark wheelset, one-point contact) swept with --jobs 1 and with --jobs 2, and the
 # ratio of their wall times (at most 0.6 is what issue 20 asks of two cores). The two CSVs must be

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # 1 km of curved, irregular track at 30 m/s (issue 19's benchmark): parameters/track-curve-R600-1km.json
 # (100 m straight, 90 m transition, 620 m of R = 600 m with 130 mm cant, 90 m transition, 100 m
 # straight; cant deficiency 99 mm at 30 m/s) with irregularities from the ERRI low-level spectrum

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # slurm_sweep_test.sh WRC_CLI: `wrc sweep --slurm` against a real single-node Slurm, and the same
 # sweep run locally: the two CSVs must be the same (every column but wall_time [s]).
 #

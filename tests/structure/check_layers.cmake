@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 cmake_minimum_required(VERSION 3.19)
 # Reads every #include "..." of every layer's .hpp and .cpp files against the layers it may
 # include (cmake/Layers.cmake writes LAYERS: "<prefix>|<folder>|<allowed prefixes>" per line).

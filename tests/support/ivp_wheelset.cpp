@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "support/ivp_wheelset.hpp"
 
 #include <ida/ida.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The "wheelset" problem of the IVP test set (Simeon, Fuehrer, Rentrop 1991; Bari test set for IVP

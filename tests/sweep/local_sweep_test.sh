@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # local_sweep_test.sh WRC_CLI: `wrc sweep` on this machine, end to end: mistakes refused before
 # anything runs (naming the key, the point or the option), a 2x2 grid with two failing runs (rows
 # with their error), the CSV's columns, resuming (a cut CSV is completed to the same table, a

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # same_as_run_test.sh WRC_CLI: a sweep's run (in the sweep's own process, no bus) ends exactly as
 # `wrc run --in-process` on wrc-dynamicsd over the bus with the same options: the same final
 # state, counters and run quantities, to the last bit. ctest runs it on a private bus

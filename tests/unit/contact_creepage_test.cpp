@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Unit tests of the creepages from wheelset motion (services/core/contact/creepage.hpp), against the
 // linearised table of docs/contact-mechanics.md, "Creepages", with the track frame x forward, y left, z up.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Unit tests of FASTSIM, centre-value variant (services/core/contact/fastsim.hpp): linear limit,
 // strip-analytic pure creep, saturation, symmetry, a convergence study and the large-spin case.
 //

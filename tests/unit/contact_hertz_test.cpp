@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Unit tests of the complete elliptic integrals and the Hertz solution (services/core/contact).
 
 #include <gtest/gtest.h>

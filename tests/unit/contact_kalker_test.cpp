@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Unit tests of Kalker's coefficients and the linear theory (services/core/contact).
 
 #include <gtest/gtest.h>

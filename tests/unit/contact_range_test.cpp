@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every contact model refuses configurations outside the range it is valid for (contact_range.hpp):
 // an elastic penetration far beyond Hertz (IMPOSSIBLE_CONFIGURATION), a wheelset lifted clear of
 // both rails in the elastic formulation (NoContactError, NO_CONTACT on the bus), a rigid gap far

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The wheelset on a track layout (core/track, docs/track.md): the layout's curvature and cant
 // along the distance (continuous through transitions, the signs of the conventions), its file
 // (round trip, errors naming the file, segment and key), and the dynamics in curves: a free

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hunting runs and the ramp-down continuation (core/dynamics/hunting_run.hpp,
 // hunting_continuation.hpp, docs/bifurcation.md).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The wheelset problem of the IVP test set (tests/support/ivp_wheelset.hpp), integrated with
 // IDA and compared with the test set's published reference solution at t = 10 s; the constraints are
 // checked along the whole solution. Background and the numbers measured: docs/ivp-wheelset.md.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The measurement of an oscillation's last cycles (core/dynamics/limit_cycle.hpp,
 // docs/bifurcation.md) on synthetic signals whose amplitude, period, mean and growth are known.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Linear stability (core/dynamics/linear_stability.hpp, docs/stability.md): the numerically
 // linearised wheelset against the classical closed form (Wickens) built from the same contact, the
 // kinematic (Klingel) frequency of the free wheelset, the symmetry of the centred state and its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rigid one-point contact in the wheelset dynamics (WheelsetSimulation with the onepoint model,
 // in-process), checked against the exact geometry independently of the model's own event
 // functions: at every accepted step each wheel follows the lowest minimum of its distance

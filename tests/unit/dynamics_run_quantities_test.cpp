@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a run reports of the wheel forces (docs/run-quantities.md): in the benchmark's quasi-steady
 // state on straight track the axle's track-shift force balances the applied lateral load and the
 // sum of Q the vertical load (less the suspension's shares); the summary's maxima are at least every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The rules a run's wheel forces are judged by, each against an independent computation: Nadal's
 // limit against the friction-angle form tan(delta - atan mu) and a value worked out by hand,
 // Prud'homme's limit in SI units, the S1002 flange angle against the built-in profile's flank, and

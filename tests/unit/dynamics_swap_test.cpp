@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The swap between the rigid and the elastic formulation in both directions, the one
 // WheelsetDynamics.SwapBetweenRigidAndElasticIsConsistent (dynamics_wheelset_test.cpp) leaves out
 // included: rigid (interp) -> elastic (multipoint) -> rigid (interp) in one run, and a run that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Y, Q, the creep forces, T gamma and p_max of one wheel from the patches of one contact result of
 // a real model (one-point, S1002 on UIC60, a displaced, yawed and moving wheelset so that every
 // creepage is non-zero), against a computation written out here from the patch fields: the contact

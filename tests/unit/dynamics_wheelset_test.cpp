@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The wheelset dynamics (WheelsetSimulation, in-process contact): energy conservation without
 // friction and damping, the kinematic (Klingel) wavelength of a free wheelset, mirror symmetry,
 // the force balance of the benchmark's quasi-steady state, swaps (reproducible with schedule_swap,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A test helper: fn() must throw std::invalid_argument whose message contains a given text.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The rigid-wheelset solver's fast mode (only the lowest local minima are looked for, with a
 // quadratic lower bound of the distance certifying everything else) gives the same solution as
 // the full potential-point scan, cold and warm, across contact-point jumps.

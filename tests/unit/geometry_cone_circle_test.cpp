@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Conic wheel on a circular rail head: the one case with a closed-form contact point. Checks the
 // curve C, the potential-point search and the rigid-wheelset solver against it.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contact area of the paper's figures 1-3: distance between the undeformed surfaces along the
 // common normal on a grid of the common tangent plane E, and the region where it is below eps0.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// The contact point's fields (core/geometry/contact_point_fields.hpp): every field of a point
 /// with distinct values lands in its own index, positions relative to the pose, and the point

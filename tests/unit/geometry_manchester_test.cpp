@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real profile files of the Manchester contact benchmark (profiles/MBench_*; Shackleton &
 // Iwnicki, distributed with CONTACT under Apache-2.0) against the analytic profiles, through the
 // whole rigid-wheelset geometry.
@@ -75,12 +76,12 @@ TEST(GeometryManchester, RollAngleMatchesBenchmarkBeforeTheFlangeJump) {
   EXPECT_NEAR(std::fabs(at60.pose.roll), 0.63e-3, 0.02e-3);
   EXPECT_LT(at60.left().contact_angle, 0.5);   // flange root, not yet the flank
   EXPECT_GT(at65.left().contact_angle, 1.0);   // on the flange flank (about 66 degrees)
-  EXPECT_GT(std::fabs(at65.pose.roll), 4e-3);  // CONTACT: 4.38 mrad; here 4.55 mrad (see README)
+  EXPECT_GT(std::fabs(at65.pose.roll), 4e-3);  // CONTACT: 4.38 mrad; here 4.55 mrad (see docs/profiles.md)
 }
 
 // At y = 6.5 mm (flange contact) CONTACT gives |roll| = 4.38 mrad. The flange is steep there, so
 // the roll depends strongly on where the rail sits laterally, and that run's rail placement is
-// known only to about 0.05 mm (README). The band is therefore derived, not chosen: the change of
+// known only to about 0.05 mm (docs/profiles.md). The band is therefore derived, not chosen: the change of
 // roll when the wheelset moves 0.05 mm either way at the same yaw (the same as moving the rail),
 // plus 0.005 mrad for the reference's rounding to two decimals of a mrad. wrc's 4.55 mrad must lie
 // within CONTACT's value +- that band, and the band must stay a fraction of the value (below
@@ -97,7 +98,7 @@ TEST(GeometryManchester, RollInFlangeContactWithinThePlacementBand) {
   // Today: roll 4.547 mrad, 4.248 and 4.810 mrad at -+0.05 mm, band 0.303 mrad.
   EXPECT_LT(band, 0.1 * 4.38e-3);
   EXPECT_NEAR(roll, 4.38e-3, band) << "inner " << inner << ", outer " << outer;
-  // wrc's own value as the README quotes it (4.55 mrad, to the 0.005 mrad of its last digit).
+  // wrc's own value as docs/profiles.md quotes it (4.55 mrad, to the 0.005 mrad of its last digit).
   EXPECT_NEAR(roll, 4.55e-3, 0.005e-3);
 }
 

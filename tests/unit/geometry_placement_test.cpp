@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Placement of the rails in the track frame: gauge point, top of rail, inclination, and the rail
 // surface graph z(y) with its derivatives.
 

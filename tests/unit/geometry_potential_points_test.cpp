@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The potential-point search finds every zero of d(distance)/ds along C: checked against a dense
 // independent sign-change scan, on a wavy test wheel with seven potential points and on S1002/UIC60
 // configurations with several, and at near-tangencies where two roots are close.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mirror symmetry of the S1002/UIC60 wheelset: mirroring the track about its centre plane maps
 // (y, roll, yaw) to (-y, -roll, -yaw) and swaps the left and right wheels.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // With yaw the curve C leaves the vertical plane through the axle: the common point moves ahead
 // of or behind the axle (by about r0 * R'(s) * yaw, up to centimetres on the flange). Checked
 // against a brute-force minimum of the vertical distance over the whole 2-D wheel surface.

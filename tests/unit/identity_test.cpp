@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Identities: SHA-256 against the FIPS 180-2 test vectors; the geometry key changes with every
 // field of the geometry input (each profile by its content) and not with the path a file is
 // reached by; geometry_arguments names every field.

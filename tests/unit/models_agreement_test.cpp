@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The three contact models side by side (Arnold, section 3): they agree where each wheel has a
 // single potential common point, and differ where the paper says they differ: two minima of the
 // distance close together on tread and flange root (multi-point: two ellipses sharing the load;

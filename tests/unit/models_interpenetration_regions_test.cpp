@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sharing of a wheel's approach among minima of one connected overlap
 // (interpenetration_regions.hpp): separate regions keep their full depth, the deepest minimum always
 // keeps its own, a minimum born at a fold starts from 0, and the depths are continuous where the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Elastic division of a rigid wheel's load among several Hertz contacts (load_division.hpp):
 // the normal forces sum to the load, every reached point shares one vertical approach, points
 // beyond it carry nothing, and the closed forms of one and two identical points are reproduced.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hertzian one-point contact model (services/core/models/one_point_model.hpp): symmetry of a
 // centred S1002/UIC60 wheelset, Kalker's linear theory as the small-creep limit and saturation at
 // mu N through the whole model (geometry -> Hertz -> creepages -> FASTSIM), rigid/elastic

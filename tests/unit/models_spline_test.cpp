@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The spline contact model ("spline") against the exact one-point model: the same patches away
 // from the jumps of the common point, the exact geometry in flange contact, OutsideModelError
 // outside its box, and across a tread jump, where one-point contact jumps, a load moving

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Contact models at their boundary: malformed queries throw std::invalid_argument naming the field
 // and the value (for every model), impossible configurations throw ContactConfigurationError, the
 // factory knows its names, and the conformal-contact fallback for B <= 0 works as documented.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The contact constraint every model returns per wheel (WheelConstraint): the gap's gradient
 // against central differences of the gap itself, the event function of the one-point branches at
 // a real jump of S1002 on UIC60, and the branch rules on synthetic potential points.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The natural interpolating spline of odd degree (track irregularities are interpolated by the
 // degree-7 one): exactness for the polynomials it must reproduce, smoothness across the samples,
 // the natural end conditions, interpolation accuracy against a cubic spline, and bad input.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// brent_root at the edges of what it promises (brent.hpp): a root at either end of the interval
 /// is returned as it is, without a single evaluation; a flat root (a triple root, a function that

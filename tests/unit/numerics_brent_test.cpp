@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// brent_root: converges to the tolerance on a smooth root, and reports (never hides) running out
 /// of iterations: converged = false, a bracket that still holds the root, and require_converged()

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// solve_tridiagonal: the dense solution of the same system (Eigen's partial-pivot LU) for
 /// diagonally dominant systems of every size from 1 to 40, exact on a system with a known

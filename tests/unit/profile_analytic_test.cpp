@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of the simple analytic test profiles (cone, circle) and of the profile factory.
 #include <gtest/gtest.h>
 

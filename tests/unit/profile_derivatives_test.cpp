@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every profile's slope and second derivative against central finite differences of its height
 // (and of its slope), away from breakpoints where the second derivative jumps by design.
 #include <gtest/gtest.h>

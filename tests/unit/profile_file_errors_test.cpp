@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every bad-input case of the profile readers gives a ProfileError naming the file, the line and
 // the reason (files in tests/data/).
 #include <gtest/gtest.h>

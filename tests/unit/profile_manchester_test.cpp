@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Manchester benchmark files (profiles/, Shackleton & Iwnicki, from CONTACT, Apache-2.0) read
 // as splines, against the analytic S1002 and UIC60-MB; the spline's deviation from the file points.
 #include <gtest/gtest.h>

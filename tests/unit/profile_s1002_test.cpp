@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of the analytic S1002 wheel profile against the properties in docs/profiles.md ("S1002 wheel").
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cubic spline behind file profiles: interpolation, exactness for parabolas (the end
 // condition), C2 continuity across knots, and the thinning of close points.
 #include <gtest/gtest.h>

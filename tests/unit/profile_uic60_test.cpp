@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tests of the analytic UIC60 rail head (EN 60E1 construction and the Manchester variant).
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A test helper: a WheelsetSimulation run to its end, every output kept.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The spline model's branches (S1002/UIC60): one fit per stretch of the tread contact point
 // between two jumps, the jump surfaces through the jumps found on the sample lines, and the C2
 // smooth maximum of two branches' touching heights near a jump, whose value, gradient and Hessian

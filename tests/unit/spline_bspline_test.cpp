@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// Unit tests of the B-spline bases (services/core/spline): the 1-D basis (partition of unity,
 /// derivatives, continuity, argument checks) and the tensor-product evaluation with its contraction

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// Unit tests of the weighted least-squares tensor-spline fit (services/core/spline): polynomial
 /// reproduction, convergence order, the effect of weights, and the argument checks.

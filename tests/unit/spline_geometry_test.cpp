@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fitted spline contact geometry of S1002 on UIC60 against the exact geometry: the paper's
 // accuracy claim for a 10 x 2 x 2 grid, mirror symmetry of the two wheels, the vertical
 // displacement's gradient against finite differences of the exact geometry, the automatic jump
@@ -51,7 +52,10 @@ TEST(SplineGeometry, DefaultModelMeetsThePapersAccuracy) {
 
 // Mirror symmetry: the right wheel at (y, roll, yaw) is the left wheel at (-y, -roll, -yaw)
 // mirrored in y. The two wheels are sampled and fitted independently, so this checks the whole
-// chain: equal z, s and angles, opposite lateral positions and normals, to 1e-9 of each scale.
+// chain: equal z, s and angles, opposite lateral positions and normals, to rounding of the two
+// fits: z to 1e-12 m, positions to 1e-11 m, and the slope dz/dy with the angle and normal that
+// follow from it to 5e-9 (z's 1e-12 m over the fit's shortest knot interval, about 0.2 mm;
+// measured 1.1e-9).
 TEST(SplineGeometry, WheelsAreMirrorImages) {
   const SplineContactGeometry& m = *quick_spline_fit().model;
   for (double y : {-0.005, -0.0021, 0.0, 0.0013, 0.0047}) {
@@ -66,10 +70,10 @@ TEST(SplineGeometry, WheelsAreMirrorImages) {
         m.evaluate(WheelSide::kRight, q, SplineDerivatives::kGradient, r);
         EXPECT_NEAR(l.value[kFieldZ], r.value[kFieldZ], 1e-12);
         EXPECT_NEAR(l.value[kFieldSWheel], r.value[kFieldSWheel], 1e-11);
-        EXPECT_NEAR(l.value[kFieldContactAngle], r.value[kFieldContactAngle], 1e-9);
+        EXPECT_NEAR(l.value[kFieldContactAngle], r.value[kFieldContactAngle], 5e-9);
         EXPECT_NEAR(l.value[kFieldWheelY], -r.value[kFieldWheelY], 1e-11);
-        EXPECT_NEAR(l.value[kFieldNormalY], -r.value[kFieldNormalY], 1e-9);
-        EXPECT_NEAR(l.z_gradient[0], -r.z_gradient[0], 1e-9);
+        EXPECT_NEAR(l.value[kFieldNormalY], -r.value[kFieldNormalY], 5e-9);
+        EXPECT_NEAR(l.z_gradient[0], -r.z_gradient[0], 5e-9);
       }
     }
   }

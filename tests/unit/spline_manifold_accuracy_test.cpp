@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The default spline model on the rigid manifold against the exact geometry (S1002/UIC60): at the
 // exact rigid wheelset (roll and height solved for both wheels touching) for |y| <= 6 mm and
 // |yaw| <= 3 mrad, at least 1 mm in y from every jump of either wheel's exact common point, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// The spline model's query takes the compiled fast path, and that path is right in the shape the
 /// model calls it. SplineModel evaluates each wheel with kSplineQueryFieldCount (22) values and

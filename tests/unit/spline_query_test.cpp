@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TensorSplineSet::query (the compiled per-degree kernels and the general path) against the
 // tensor-product evaluation of TensorBasis::evaluate + values/derivatives: the same values,
 // gradients and Hessians to rounding, for the kernel degrees (3,3,3) and (3,3,2) and for others,

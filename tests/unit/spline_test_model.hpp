@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A spline contact model of S1002 on UIC60 for unit tests, fitted once per test binary: the

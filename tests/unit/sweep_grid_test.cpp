@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The grid of `wrc sweep`: KEY=VALUES parsing (lists, FROM:TO:STEP ranges, values of their own),
 // the Cartesian product's order and index, and the errors naming the bad text.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CSV of `wrc sweep`: quoting and reading back, the layout's columns, the rows of an existing
 // CSV for resuming (matched by their values, another sweep's CSV refused) and the comparison that
 // leaves the wall time out.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Track irregularities (docs/track.md): the rail frame that carries a moved rail into every
 // contact model (pose, Jacobian and time rate against finite differences; every model's answer on
 // moved rails equals its answer for the wheelset moved the other way); the irregularity channels

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The hunting bifurcation diagram of `wrc bifurcation`'s CSV (`wrc plot bifurcation`,

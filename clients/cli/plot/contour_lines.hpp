@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Level lines of a function sampled on a rectangular grid (marching squares with linear

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// One gnuplot run of `wrc plot`: a private temporary directory for the data files and the script,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot area: the paper's figures 1-3, bottom: the contact area of one wheel in the common
 // tangent plane E, as the outlines of the region distance < eps0 for eps0 = 25, 50, ... um, with the
 // Hertz ellipse at the common point for a given normal force, and with --spline the ellipse of the

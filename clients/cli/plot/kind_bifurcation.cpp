@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot bifurcation FILE.csv [FILE2.csv ...]: the hunting bifurcation diagram of wrc
 // bifurcation's CSV, or several diagrams (one per contact model, say) in one picture.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot conicity: the equivalent conicity (harmonic linearisation of the rolling-radius
 // difference of the exact rigid-wheelset geometry) against the amplitude of the lateral motion.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot displacement: the paper's figure 4 for one wheel: over the plane of lateral shift y and
 // roll angle, the common point (its wheel profile coordinate s) and the vertical displacement of
 // the wheel (the vertical distance of the common point at the nominal height: how far the wheelset

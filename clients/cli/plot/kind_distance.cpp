@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot distance: the paper's figures 1-3, top: the vertical distance between wheel and rail
 // along the curve C relative to the common point, over the lateral position of the wheel point,
 // in a 0-1 mm and a 0-20 um view, with the potential common points marked.

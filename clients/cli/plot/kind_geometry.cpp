@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot geometry: what every contact-geometry tool shows, against the lateral shift of the
 // rigid wheelset: rolling-radius difference, contact angles, rolling radii and the contact points
 // on wheel and rail, drawn as points so that jumps of the contact point stay visible.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot irregularities FILE.csv: the four channels of a track-irregularity file (alignment,
 // vertical level, cross-level, gauge; docs/track.md) against the distance, one panel each.
 

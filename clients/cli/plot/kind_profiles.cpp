@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot profiles: the wheel and rail profiles of both wheels in the track cross-section, the
 // rigid wheelset placed at lateral shift y (roll and height solved, both wheels touching), with the
 // contact points and the other potential contact points marked.

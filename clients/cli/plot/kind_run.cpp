@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot run: the paper's figures 5-6 for one or more runs: lateral displacement, the right
 // contact point and the right normal force against time, from `wrc run --history` files (one curve
 // per file, e.g. one-point and spline contact side by side); with --forces what engineers read off

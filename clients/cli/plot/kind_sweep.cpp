@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc plot sweep FILE.csv: a result of a sweep (wrc sweep) against a grid key, one line per value
 // of another key.
 

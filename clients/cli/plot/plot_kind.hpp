@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The kinds of `wrc plot KIND`: each lives in its own plot/kind_<name>.cpp and registers itself,

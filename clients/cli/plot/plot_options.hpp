@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// What every `wrc plot` kind shares: the output options (--out, --width, --height) and the words

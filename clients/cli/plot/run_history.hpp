@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A wheelset run's time history as `wrc run --history FILE.csv` writes it (header line

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The plot of a sweep's CSV (`wrc plot sweep`, `wrc sweep --plot`): one result column against a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cli/sweep/in_process_run.hpp"
 
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A run of `wrc run`'s request in this process, without the bus: the geometry, the contact model

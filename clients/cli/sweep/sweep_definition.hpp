@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// What a sweep is, written once into its work directory (sweep.json) so that every run of it,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cli/sweep/sweep_results.hpp"
 
 #include <charconv>
@@ -157,10 +158,14 @@ std::vector<ResultColumn> result_columns(const std::vector<std::string>& extract
       const nlohmann::json* leaf = at_path(summary, item);
       if (std::find(extractable().begin(), extractable().end(), top) == extractable().end() || !leaf ||
           leaf->is_object() || leaf->is_array())
-        throw UsageError("--extract " + item +
-                         ": neither a group (final, maxima, counters, critical_speed) nor the path of a value in a run "
+      {
+        std::string groups;
+        for (const std::string& g : extract_groups()) groups += (groups.empty() ? "" : ", ") + g;
+        throw UsageError("--extract " + item + ": neither a group (" + groups +
+                         ") nor the path of a value in a run "
                          "summary under final_state, run_quantities, counters, parameters, t_end, model, formulation "
                          "(e.g. run_quantities.y_over_q.left.t)");
+      }
       paths.push_back(item);
     }
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// What a sweep extracts from each run (--extract), as columns of its CSV, and the run of one grid

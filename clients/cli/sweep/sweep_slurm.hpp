@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A sweep on an existing Slurm cluster (`wrc sweep --slurm`): one job array whose task k runs the

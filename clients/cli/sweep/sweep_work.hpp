@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A sweep's work directory (default: the CSV's path with ".work"), on a filesystem every run can

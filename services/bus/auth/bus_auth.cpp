@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bus/auth/bus_auth.hpp"
 
 #include <cstdlib>
@@ -34,8 +35,6 @@ std::string prepare_bus_key(const std::string& option, const std::string& who) {
   ::setenv("WRC_BUS_KEY", path.c_str(), 1);
   return path;
 }
-
-bool bus_key_installed() { return installed() != nullptr; }
 
 MessageAuth& bus_auth() {
   if (!installed()) throw std::logic_error("no bus key loaded: call load_bus_key() (or open_lcm()) first");

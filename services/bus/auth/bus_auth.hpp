@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The process's message authentication: one bus key and one sender nonce per process, used by
@@ -23,8 +24,6 @@ void load_bus_key(const std::string& option = "");
 /// ...`), installs it, and sets $WRC_BUS_KEY to its path so that started services use the same
 /// file. Returns the path.
 std::string prepare_bus_key(const std::string& option, const std::string& who);
-/// True once a key is installed.
-bool bus_key_installed();
 /// The installed authentication. Throws std::logic_error when no key is installed (a process
 /// must load the key before it touches the bus).
 MessageAuth& bus_auth();

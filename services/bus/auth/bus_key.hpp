@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The shared bus key: 32 random bytes under which every wrc message is authenticated

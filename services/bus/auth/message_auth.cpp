@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bus/auth/message_auth.hpp"
 
 #include <openssl/crypto.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Authentication of wrc messages: a trailer appended after the LCM encoding of a message.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Replay protection for one subscription: a signed message (bus/auth/message_auth.hpp) is accepted

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Publishing a wrc message: its LCM encoding followed by the authentication trailer

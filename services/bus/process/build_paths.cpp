@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bus/process/build_paths.hpp"
 
 #include <unistd.h>
@@ -32,7 +33,18 @@ std::string source_dir() {
   for (std::string line; std::getline(cache, line);) {
     if (line.rfind(key, 0) == 0) return line.substr(key.size());
   }
+  // An installed tree: the data beside bin/ (cmake/Install.cmake).
+  std::error_code ec;
+  if (const fs::path data = fs::path(build_dir()) / "share/wrc"; fs::is_directory(data / "profiles", ec))
+    return data.string();
   return {};
+}
+
+std::string lcm_types_jar() {
+  const fs::path built = fs::path(build_dir()) / "lcmtypes/wrc_lcmtypes_java.jar";
+  const fs::path installed = fs::path(build_dir()) / "share/java/wrc_lcmtypes_java.jar";
+  std::error_code ec;
+  return (fs::exists(built, ec) || !fs::exists(installed, ec) ? built : installed).string();
 }
 
 std::optional<std::string> find_service_executable(const std::string& name, const std::string& build) {
@@ -48,6 +60,10 @@ std::optional<std::string> find_service_executable(const std::string& name, cons
     if (const fs::path candidate = dir.path() / name; is_executable_file(candidate)) {
       return candidate.string();
     }
+  }
+  // An installed tree: the services beside the running executable (bin/).
+  if (const fs::path self = fs::read_symlink("/proc/self/exe", ec); !ec) {
+    if (const fs::path beside = self.parent_path() / name; is_executable_file(beside)) return beside.string();
   }
   return std::nullopt;
 }

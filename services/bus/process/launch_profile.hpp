@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Launch profiles: which service processes `wrc launch` starts. A profile is a text file with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bus/process/line_atomic_stderr.hpp"
 
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Whole-line writes to standard error. The launcher gives all services one log; a line that a

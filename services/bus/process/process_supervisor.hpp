@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Starts and supervises child processes for `wrc launch`: a child that dies is restarted after

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Clean shutdown on SIGINT/SIGTERM: the handler only sets a flag; the service loop sees it

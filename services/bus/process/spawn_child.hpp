@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Starting a child process that cannot outlive its parent (services started by `wrc query`, by

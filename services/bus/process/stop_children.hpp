@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Stopping child processes the one way wrc does it everywhere (`wrc launch`, the services `wrc

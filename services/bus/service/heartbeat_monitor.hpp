@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Listens to heartbeats and keeps the table of service processes on the bus: alive while

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Periodic heartbeat of a service process: who it is (model, instance, pid, request channel),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Load figures of a service as reported in its heartbeat, and the window they are measured on.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The main loop every service runs: dispatch LCM messages with handleTimeout, send heartbeats

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The main() of a service with options of its own: whole-line stderr, the options every service

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The heartbeat activity of a process that answers requests (heartbeat_t::activity): what it

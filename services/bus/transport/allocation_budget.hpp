@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A limit on what one thread may allocate with `new` while a scope is open. LCM's generated C++

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Channel names of the wrc bus and the optional prefix that lets several simulations share one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Time sources of the bus layer: wall-clock microseconds for message headers, a monotonic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Guarded decoding of LCM-encoded bytes: never a crash, never more memory than a small multiple

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The one receive path of every wrc subscription. For each datagram, in this order:
@@ -29,7 +30,7 @@
 namespace wrc::bus {
 
 /// [B] largest message a subscription accepts unless told otherwise (inline spline models are
-/// up to 60 kB; bigger data travel as files, see README).
+/// up to 60 kB; bigger data travel as files, see docs/deployment.md).
 inline constexpr std::size_t kDefaultMaxMessageBytes = 1 << 20;
 
 /// What the receive path knows about an accepted message besides its content.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Fills the common header_t of outgoing messages: time, sequence number, sender.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bus/transport/lcm_url.hpp"
 
 #include <algorithm>

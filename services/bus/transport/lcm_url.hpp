@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The LCM URL a wrc process opens. Every process on a udpm bus receives every datagram of the
 /// multicast group (LCM filters channels after reading them), so a process that is descheduled
 /// for a few milliseconds while a run's contact traffic flows (thousands of queries and replies a
 /// second) overflows the kernel's default 208 KiB socket buffer and loses whatever arrives next,
-/// e.g. a run's states (what was lost where: README, "Message flow"). wrc therefore asks for a larger receive buffer whenever the user names no URL.
+/// e.g. a run's states (what was lost where: docs/performance.md). wrc therefore asks for a larger receive buffer whenever the user names no URL.
 
 #include <string>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Counting and logging of rejected messages (undecodable, out of range, not answerable).

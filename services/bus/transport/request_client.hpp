@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Client side of request/reply over LCM: every request carries a request id and a reply

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Inputs and outputs shared by the creep-force laws (linear_creep.hpp, fastsim.hpp): one elliptic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Kalker's creepages at a wheel-rail contact point from the rigid wheelset motion, in the general

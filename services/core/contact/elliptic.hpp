@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Complete elliptic integrals of the first and second kind, K and E, by the arithmetic-geometric

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// FASTSIM: Kalker's simplified theory of rolling contact (Kalker 1982, VSD 11:1-13) on an elliptic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Hertz theory for two elastic bodies of identical material touching at one point: the contact

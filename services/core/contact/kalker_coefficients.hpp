@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Kalker's creepage coefficients C11, C22, C23, C33 of the linear theory of rolling contact, for an

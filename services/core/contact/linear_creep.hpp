@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Kalker's linear theory of rolling contact (no saturation): valid for small creepages, where the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/consistent_initialisation.hpp"
 
 #include <algorithm>
@@ -168,7 +169,7 @@ void consistent_derivatives(const InitialisationContext& context, std::vector<do
   std::vector<double> r(static_cast<size_t>(n));
   if (formulation == ContactFormulation::kElastic) {
     equations.residual(formulation, y.data(), yp.data(), context.contact_at(y.data()), branches, r.data());
-    for (int k = 0; k <= kUnknownSpinRate; ++k) yp[k] = -r[k] / equations.derivative_coefficient(formulation, k);
+    for (int k = 0; k <= kUnknownSpinRate; ++k) yp[k] = -r[k] / equations.derivative_coefficient(k);
     return;
   }
   // Rigid: mu = 0, q' = v; v' and N from the equations of motion and the constraints on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Consistent values to (re)start the integration from: the rigid state projected onto its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Where the dynamics gets its contact forces from: a batch of configurations in, one result per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The contact-point branches a rigid-contact run follows on each wheel: the point of one-point

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// One hunting run (docs/bifurcation.md): the wheelset on straight track at one speed, from a given

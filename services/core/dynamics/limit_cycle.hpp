@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The oscillation of a sampled signal (the lateral shift y of a hunting wheelset): its peaks and

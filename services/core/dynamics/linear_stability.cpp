@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/linear_stability.hpp"
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 
 #include "core/dynamics/consistent_initialisation.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "core/numerics/inclusive_range.hpp"
 
 namespace wrc {
 namespace {
@@ -109,14 +111,11 @@ std::vector<double> stability_speeds(double from, double to, double step) {
   if (!std::isfinite(to) || !(to >= from))
     bad("the last speed " + number(to) + " m/s must be finite and >= the first, " + number(from) + " m/s");
   if (!std::isfinite(step) || !(step > 0.0)) bad("the step " + number(step) + " m/s must be finite and > 0");
-  // Inclusive of `to` within rounding of the steps.
-  const double count = std::floor((to - from) / step * (1.0 + 1e-12) + 1e-9) + 1.0;
-  if (count > static_cast<double>(kMaxStabilitySpeeds))
-    bad("the step " + number(step) + " m/s gives " + number(count) + " speeds, more than " +
+  const long count = inclusive_range_count(from, to, step);
+  if (count > kMaxStabilitySpeeds)
+    bad("the step " + number(step) + " m/s gives " + std::to_string(count) + " speeds, more than " +
         std::to_string(kMaxStabilitySpeeds));
-  std::vector<double> speeds;
-  for (long i = 0; i < static_cast<long>(count); ++i) speeds.push_back(std::min(to, from + static_cast<double>(i) * step));
-  return speeds;
+  return inclusive_range(from, to, step);
 }
 
 LinearStability::LinearStability(WheelsetParameters parameters, std::shared_ptr<ContactEvaluator> contact,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Linear stability of the wheelset on straight track (docs/stability.md): the equations of

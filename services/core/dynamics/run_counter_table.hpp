@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The counters of a run, declared once: per member of RunCounters its name (the summary's and,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The counters of one run, summed across every integrator restart (IDAReInit resets IDA's own);

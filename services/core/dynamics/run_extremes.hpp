@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The largest values of what engineers read off a run (docs/run-quantities.md), each with where it

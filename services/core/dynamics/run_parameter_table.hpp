@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The run parameters, declared once: per member of RunSpec its key (the parameter file's, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The run parameter file (`wrc run --params FILE`): a JSON object whose keys are those of

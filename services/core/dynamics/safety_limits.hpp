@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The two limits a run's wheel forces are judged against (docs/run-quantities.md): Nadal's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/sundials_support.hpp"
 
 #include <stdexcept>

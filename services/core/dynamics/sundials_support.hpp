@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Small RAII owners of SUNDIALS objects (context, serial vectors, IDA memory, dense matrix and

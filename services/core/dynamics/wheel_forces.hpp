@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The force of the rail on one wheel, summed over that wheel's patches of a contact result, and what

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// What a run reports of one wheel's contact at an output time or step (docs/run-quantities.md:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/wheelset_equations.hpp"
 
 #include <cmath>
@@ -62,11 +63,10 @@ Eigen::Vector4d WheelsetEquations::mass_diagonal() const {
   return Eigen::Vector4d(parameters_.mass, parameters_.mass, parameters_.roll_inertia, parameters_.yaw_inertia);
 }
 
-double WheelsetEquations::derivative_coefficient(ContactFormulation f, int k) const {
+double WheelsetEquations::derivative_coefficient(int k) const {
   if (k < kPoseUnknowns) return 1.0;
   if (k < kUnknownSpinRate) return mass_diagonal()[k - kPoseUnknowns];
   if (k == kUnknownSpinRate) return parameters_.spin_inertia;
-  (void)f;
   return 0.0;  // normal forces and multipliers are algebraic
 }
 

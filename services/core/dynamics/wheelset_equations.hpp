@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The equations of motion of a rigid wheelset at constant speed along the track (docs/dynamics.md;
@@ -98,7 +99,7 @@ class WheelsetEquations {
                 const FollowedBranches& branches, double* residual) const;
 
   /// dF/dy' (constant, diagonal): the coefficient of each y'_k in row k [SI].
-  double derivative_coefficient(ContactFormulation f, int k) const;
+  double derivative_coefficient(int k) const;
 
   /// The generalised forces (y, z, roll, yaw) and the axle moment of everything but the
   /// constraint forces: external loads, suspension, contact (elastic: all of it; rigid: creep

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Everything a wheelset run needs besides the contact model: the wheelset's masses, the loads,

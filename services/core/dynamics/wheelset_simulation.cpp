@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/wheelset_simulation.hpp"
 
 #include "core/dynamics/consistent_initialisation.hpp"
@@ -199,7 +200,7 @@ int WheelsetSimulation::jacobian_callback(double cj, const double* y, const doub
       const ContactResult& c = b >= 0 ? results[static_cast<size_t>(b)] : base;
       equations_.residual(formulation_, perturbed[k].data(), yp, c, branches_, column.data());
       for (int i = 0; i < n; ++i) SM_ELEMENT_D(jac, i, k) = (column[i] - r[i]) / step[k];
-      SM_ELEMENT_D(jac, k, k) += cj * equations_.derivative_coefficient(formulation_, k);
+      SM_ELEMENT_D(jac, k, k) += cj * equations_.derivative_coefficient(k);
     }
     return 0;
   } catch (const ContactConfigurationError& e) {

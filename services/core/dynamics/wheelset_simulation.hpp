@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A wheelset run: the equations of wheelset_equations.hpp integrated by SUNDIALS IDA step by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/wickens_from_model.hpp"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The parameters of the classical wheelset model (wickens_wheelset.hpp) taken from wrc's own

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The classical linear model of a suspended wheelset on straight track (Wickens 1965; derived in

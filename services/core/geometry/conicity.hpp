@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Equivalent conicity by harmonic linearisation of the rolling-radius difference (EN 15302 style).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The contact area of the paper's figures 1-3: the region of the common tangent plane E where the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The curve C of the paper (section 3): wheel-surface points whose normal lies in a rail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A contact point as numbers relative to the wheelset's pose: the one list of the ContactPoint

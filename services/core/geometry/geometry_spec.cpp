@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/geometry/geometry_spec.hpp"
 
 #include "core/profile/profile_factory.hpp"

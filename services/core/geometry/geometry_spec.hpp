@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The geometry input of wrc: wheel and rail profile, the cant built into the rail profile, and

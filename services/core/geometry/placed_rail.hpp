@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A rail profile placed in the track frame: inclined, at its gauge position, top of rail at z = 0.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// All potential common points of one wheel: zeros of the derivative of the distance along C.

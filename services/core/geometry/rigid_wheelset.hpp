@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Rigid-wheelset contact geometry: for lateral shift y and yaw psi, the roll angle and height at

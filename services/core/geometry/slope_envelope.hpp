@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Upper bounds of |f'| and |f''| of a function over short bins, for step-size control: a root of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Track and wheelset dimensions that place the wheel and rail profiles in the track frame.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The track parameters, declared once: per member of TrackParameters its key (the geometry

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A wheel profile and a rail profile placed on a track: the exact contact geometry of both

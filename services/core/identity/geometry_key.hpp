@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The one identity of a geometry input on the bus: geometry_key(spec) is the SHA-256 of a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// SHA-256 (FIPS 180-4) by OpenSSL's EVP interface: the one digest wrc uses for geometry keys and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The one interface every contact model implements (Hertzian one-point, interpolated Hertzian,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/model_interface/contact_model_options.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Settings shared by the contact models built by make_contact_model(): the potential-point scan,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/model_interface/patch_builder.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The pieces every Hertzian contact model shares: the Hertz ellipse at a contact point (with the

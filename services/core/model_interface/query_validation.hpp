@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The one rule a ContactQuery obeys at the model boundary, checked before any computation: which

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The frame of one rail moved by a RailOffset: a contact model evaluates a wheel against its rail

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// How far one rail lies from its place in the track frame at the wheelset's position along the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The rigid-body motion of the wheelset that the creepages need, from a ContactQuery.

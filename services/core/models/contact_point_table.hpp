@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The table of the interpolated Hertzian model (MEDYNA), on the rigid manifold: at each node

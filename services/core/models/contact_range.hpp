@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The range of configurations the Hertzian contact models are valid for, checked on a computed

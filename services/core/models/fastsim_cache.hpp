@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// One FASTSIM solver per grid size, built on first use and kept for the model's lifetime.

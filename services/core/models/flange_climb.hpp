@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Detects a wheel whose flange has climbed onto or over its rail. The exact geometry still finds

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The base of the Hertzian contact models (one-point, interpolated, multi-point, spline): what

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// How the approach of a wheel is shared among the local minima of its distance that lie in one

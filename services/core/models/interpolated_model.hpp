@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Interpolated Hertzian contact as in MEDYNA (Arnold, section 3): Hertzian one-point contact at a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Elastic division of a given wheel load among several Hertz contacts of one rigid wheel (the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Hertzian multi-point contact (Arnold, section 3; [JS94]): a Hertz ellipse at every potential

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/models/one_point_model.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Hertzian one-point contact (Arnold, section 2/3): one Hertz ellipse per wheel at its common

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Arnold's unified approach (section 4) as a contact model: the contact point, the vertical

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The constraint of one wheel (WheelConstraint) from a contact point of the exact geometry or of

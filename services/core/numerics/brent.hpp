@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Brent's method for a root of a continuous function inside a sign-changing bracket.

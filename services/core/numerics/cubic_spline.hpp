@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// An interpolating cubic spline y(x) with precomputed per-interval polynomials (C2).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Finding the interval of a sorted knot sequence that holds x, in constant time for knots that are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A length for a message: metres written in millimetres, the unit railway engineers read profile

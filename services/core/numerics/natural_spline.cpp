@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/numerics/natural_spline.hpp"
 
 #include <array>
@@ -9,63 +10,14 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 
+#include "core/numerics/bspline_span.hpp"
 #include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
 
-constexpr int kMaxOrder = kMaxNaturalSplineDegree + 1;
-using DerivativeTable = std::array<std::array<double, kMaxOrder>, kMaxOrder>;
-
-// The p + 1 B-splines of degree p that are non-zero on knot span `span` (knots[span] <= x <
-// knots[span + 1]) and their derivatives 0..p at x: d[k][j] = d^k/dx^k N_{span-p+j}(x). Cox-de Boor
-// recursion for the values of every degree, then the derivative recursion
-// N'_{j,q} = q (N_{j,q-1} / (u_{j+q} - u_j) - N_{j+1,q-1} / (u_{j+q+1} - u_{j+1})) applied k times.
-DerivativeTable basis_derivatives(const std::vector<double>& knots, int p, int span, double x) {
-  // values[q][j]: the degree-q B-spline N_{span-q+j, q}(x), j = 0..q.
-  DerivativeTable values{};
-  values[0][0] = 1.0;
-  for (int q = 1; q <= p; ++q) {
-    for (int j = 0; j <= q; ++j) {
-      const int i = span - q + j;  // global index of N_{i,q}
-      double v = 0.0;
-      if (j > 0) {  // N_{i,q-1} is values[q-1][j-1]
-        const double w = knots[i + q] - knots[i];
-        if (w > 0) v += (x - knots[i]) / w * values[q - 1][j - 1];
-      }
-      if (j < q) {  // N_{i+1,q-1} is values[q-1][j]
-        const double w = knots[i + q + 1] - knots[i + 1];
-        if (w > 0) v += (knots[i + q + 1] - x) / w * values[q - 1][j];
-      }
-      values[q][j] = v;
-    }
-  }
-  DerivativeTable d{};
-  for (int k = 0; k <= p; ++k) {
-    // coefficient[j'] of N_{span-(p-k)+j', p-k} in the k-th derivative of each N_{span-p+j, p}.
-    for (int j = 0; j <= p; ++j) {
-      std::array<double, kMaxOrder> c{};
-      c[static_cast<std::size_t>(j)] = 1.0;  // indices relative to span - p, degree p
-      int q = p;
-      for (int step = 0; step < k; ++step, --q) {
-        // d/dx sum_i c_i N_{i,q} = q sum_i (c_i - c_{i-1}) / (u_{i+q} - u_i) N_{i,q-1}
-        std::array<double, kMaxOrder> next{};
-        for (int r = 0; r <= p; ++r) {
-          const int i = span - p + r;
-          const double w = knots[i + q] - knots[i];
-          const double previous = r > 0 ? c[static_cast<std::size_t>(r - 1)] : 0.0;
-          next[static_cast<std::size_t>(r)] = w > 0 ? q * (c[static_cast<std::size_t>(r)] - previous) / w : 0.0;
-        }
-        c = next;
-      }
-      // Evaluate sum_r c_r N_{span-p+r, q}(x): the non-zero ones are r = p - q .. p.
-      double sum = 0.0;
-      for (int r = p - q; r <= p; ++r) sum += c[static_cast<std::size_t>(r)] * values[q][r - (p - q)];
-      d[k][j] = sum;
-    }
-  }
-  return d;
-}
+using DerivativeTable = BSplineSpanTable;
+static_assert(kMaxNaturalSplineDegree <= kMaxBSplineSpanDegree, "the span's table holds every degree");
 
 std::string sample_text(std::size_t i, double x) {
   return "sample " + std::to_string(i) + " (x = " + number_text(x) + ")";
@@ -106,7 +58,7 @@ NaturalSpline::NaturalSpline(int degree, std::vector<double> x, const std::vecto
   std::vector<DerivativeTable> at_sample(n);
   for (int i = 0; i <= intervals; ++i) {
     const int span = std::min(i, intervals - 1) + p;
-    at_sample[static_cast<std::size_t>(i)] = basis_derivatives(knots, p, span, x_[static_cast<std::size_t>(i)]);
+    at_sample[static_cast<std::size_t>(i)] = bspline_span_derivatives(knots, p, span, x_[static_cast<std::size_t>(i)]);
   }
   // Rows: the m - 1 conditions at x_0, the n interpolation conditions, the m - 1 at x_{n-1}.
   std::vector<Eigen::Triplet<double>> entries;
@@ -135,7 +87,7 @@ NaturalSpline::NaturalSpline(int degree, std::vector<double> x, const std::vecto
   // Taylor coefficients at the start of each interval: f^(k)(x_i) / k!.
   taylor_.resize(static_cast<std::size_t>(intervals) * static_cast<std::size_t>(p + 1));
   for (int i = 0; i < intervals; ++i) {
-    const DerivativeTable d = basis_derivatives(knots, p, i + p, x_[static_cast<std::size_t>(i)]);
+    const DerivativeTable d = bspline_span_derivatives(knots, p, i + p, x_[static_cast<std::size_t>(i)]);
     double factorial = 1.0;
     for (int k = 0; k <= p; ++k) {
       if (k > 0) factorial *= k;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The natural interpolating spline of odd degree 2m - 1 (Schoenberg): of all functions through

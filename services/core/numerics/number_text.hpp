@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Numbers as text, the one way for every layer: a whole text read as one number (strtod's syntax,

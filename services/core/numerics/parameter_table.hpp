@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A declarative table of one parameter set: per member its key, command-line option, unit,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The one way wrc reads an input file (profiles, run parameters, track layouts, irregularities):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// WRC_SIMD_CLONES: compile a hot numerical function twice, for x86-64-v3 (AVX2, FMA) and for the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The solution of a tridiagonal linear system by the Thomas algorithm.

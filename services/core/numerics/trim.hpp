@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// White space off both ends of a text: what every reader of a text file (profiles, track

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The built-in profiles: one list of their names, for the profile factory that builds them and

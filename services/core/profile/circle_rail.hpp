@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A circular rail head, the simplest rail test profile: v(u) = sqrt(R^2 - u^2) - R.

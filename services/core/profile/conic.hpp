@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A flange-less conical wheel, the simplest test profile: F(s) = -slope * s.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The profile abstraction: a wheel or rail cross-section as a piecewise smooth (C1, C2 inside each

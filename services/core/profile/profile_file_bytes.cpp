@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/profile/profile_file_bytes.hpp"
 
 #include "core/numerics/regular_file.hpp"

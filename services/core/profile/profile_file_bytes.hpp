@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The one rule for reading a profile file, whoever reads it (the profile readers, the geometry

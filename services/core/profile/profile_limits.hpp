@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The limits a profile file must respect to be read: its size, the magnitude of each value and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Checks that profile points describe a wheel or rail profile that can exist (size, height,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Small text helpers shared by the profile file readers (internal to the profile module).

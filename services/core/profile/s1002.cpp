@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/profile/s1002.hpp"
 
 #include <algorithm>

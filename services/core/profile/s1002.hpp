@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The S1002 wheel profile (UIC 510-2 / EN 13715, flange thickness 32.5 mm) from its analytic

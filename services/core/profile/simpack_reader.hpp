@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Reader for SIMPACK rail-wheel profile files (.prw wheel, .prr rail).

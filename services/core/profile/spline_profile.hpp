@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A profile given by points (from a file), represented by a C2 interpolating cubic spline.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The UIC60 rail head (EN 13674-1 60E1 construction) and its Manchester-benchmark variant.

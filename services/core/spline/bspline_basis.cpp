@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
-/// B-spline basis on clamped knots. At construction the Cox-de Boor triangle (Piegl & Tiller, The
-/// NURBS Book, algorithm A2.3) gives each interval's degree + 1 non-zero functions as polynomials;
+/// B-spline basis on clamped knots. At construction the Cox-de Boor recursion (core/numerics/
+/// bspline_span.hpp) gives each interval's degree + 1 non-zero functions as polynomials;
 /// they are stored in Bernstein form, so that an evaluation is a few multiply-adds per function
 /// and derivative order (no division, no triangle) with fixed-size local arrays.
 
@@ -14,70 +15,13 @@
 #include <string>
 #include <utility>
 
+#include "core/numerics/bspline_span.hpp"
 #include "core/numerics/simd_clones.hpp"
 
 namespace wrc {
 namespace {
 
 [[noreturn]] void fail(const std::string& message) { throw std::invalid_argument("BSplineBasis: " + message); }
-
-// Construction only (the pieces' Bernstein coefficients). Basis functions N_{i..i+P} of degree P on
-// interval i of breakpoints b (m + 1 values) at x, and derivatives up to order `orders` (0..2) into
-// d1 / d2. The knot t_j of the clamped sequence is
-// b[clamp(j - P, 0, m)], so the knot vector is never materialised. inverse holds this interval's
-// reciprocal knot differences inv(j, r) = 1 / (t_{span+r+1} - t_{span+1-j+r}), r < j <= P.
-// Derivatives from the lower-degree functions of the same triangle:
-//   N'_{k,j} = j (N_{k,j-1} / (t_{k+j} - t_k) - N_{k+1,j-1} / (t_{k+j+1} - t_{k+1})),
-// applied once for d1 and twice for d2 (no division, a few dozen operations for cubics).
-template <int P>
-void evaluate_degree(const double* b, int m, int i, const double* inverse, double x, int orders, double* value,
-                     double* d1, double* d2) {
-  auto knot = [b, m](int j) { return b[std::clamp(j - P, 0, m)]; };
-  auto inv = [inverse](int j, int r) { return inverse[j * (P + 1) + r]; };
-  const int span = i + P;  // index of the knot interval in the full knot sequence
-  // ndu[r][j], r <= j: the degree-j functions N_{span-j+r, j} (the Cox-de Boor triangle).
-  double ndu[P + 1][P + 1];
-  double left[P + 1], right[P + 1];
-  ndu[0][0] = 1.0;
-  for (int j = 1; j <= P; ++j) {
-    left[j] = x - knot(span + 1 - j);
-    right[j] = knot(span + j) - x;
-    double saved = 0.0;
-    for (int r = 0; r < j; ++r) {
-      const double temp = ndu[r][j - 1] * inv(j, r);
-      ndu[r][j] = saved + right[r + 1] * temp;
-      saved = left[j - r] * temp;
-    }
-    ndu[j][j] = saved;
-  }
-  for (int r = 0; r <= P; ++r) value[r] = ndu[r][P];
-  if (orders == 0) return;
-  // out[r] = j (lower[r-1] inv(j, r-1) - lower[r] inv(j, r)), r = 0..j: the derivative of the
-  // degree-j functions from the j coefficients `lower` of degree j - 1.
-  auto raise = [&inv](int j, const double* lower, double* out) {
-    for (int r = 0; r <= j; ++r) {
-      double v = 0.0;
-      if (r >= 1) v += lower[r - 1] * inv(j, r - 1);
-      if (r <= j - 1) v -= lower[r] * inv(j, r);
-      out[r] = j * v;
-    }
-  };
-  double lower[P + 1], middle[P + 1];
-  if constexpr (P == 0) {
-    d1[0] = 0.0;
-  } else {
-    for (int r = 0; r < P; ++r) lower[r] = ndu[r][P - 1];
-    raise(P, lower, d1);
-  }
-  if (orders < 2) return;
-  if constexpr (P < 2) {
-    for (int r = 0; r <= P; ++r) d2[r] = 0.0;
-  } else {
-    for (int r = 0; r < P - 1; ++r) lower[r] = ndu[r][P - 2];
-    raise(P - 1, lower, middle);  // first derivatives of the degree P - 1 functions
-    raise(P, middle, d2);
-  }
-}
 
 }  // namespace
 
@@ -99,33 +43,24 @@ BSplineBasis::BSplineBasis(int degree, std::vector<double> breakpoints)
       fail(msg.str());
     }
   }
-  // Reciprocal knot differences per interval i: inverse[j][r] = 1 / (t_{i+P+r+1} - t_{i+P+1-j+r})
-  // for r < j <= P, the divisors of the Cox-de Boor triangle (the knots do not depend on x).
+  // Per interval, its degree + 1 functions and their first derivatives at both ends (x1 within
+  // this piece: the span's polynomials), from the Cox-de Boor recursion on the clamped knots.
   const int P = degree_, m = intervals();
-  auto knot = [this, P, m](int j) { return breakpoints_[static_cast<size_t>(std::clamp(j - P, 0, m))]; };
-  std::vector<double> inverse(static_cast<size_t>(P + 1) * (P + 1), 0.0);
+  const std::vector<double> knot_sequence = knots();
   pieces_.assign(static_cast<size_t>(m) * kPieceSize, 0.0);
   inverse_widths_.resize(static_cast<size_t>(m));
   for (int i = 0; i < m; ++i) {
     const int span = i + P;
-    for (int j = 1; j <= P; ++j)
-      for (int r = 0; r < j; ++r)
-        inverse[static_cast<size_t>(j * (P + 1) + r)] = 1.0 / (knot(span + r + 1) - knot(span + 1 - j + r));
-    // The piece's functions and first derivatives at both ends of the interval (x1 within this
-    // piece), from the triangle.
     const double x0 = breakpoints_[static_cast<size_t>(i)], x1 = breakpoints_[static_cast<size_t>(i) + 1];
     const double h = x1 - x0;
+    const BSplineSpanTable at0 = bspline_span_derivatives(knot_sequence, P, span, x0);
+    const BSplineSpanTable at1 = bspline_span_derivatives(knot_sequence, P, span, x1);
     double v0[kMaxSplineDegree + 1], d0[kMaxSplineDegree + 1], v1[kMaxSplineDegree + 1], d1[kMaxSplineDegree + 1];
-    double unused[kMaxSplineDegree + 1];
-    switch (P) {
-      case 0: evaluate_degree<0>(breakpoints_.data(), m, i, inverse.data(), x0, 1, v0, d0, unused);
-              evaluate_degree<0>(breakpoints_.data(), m, i, inverse.data(), x1, 1, v1, d1, unused); break;
-      case 1: evaluate_degree<1>(breakpoints_.data(), m, i, inverse.data(), x0, 1, v0, d0, unused);
-              evaluate_degree<1>(breakpoints_.data(), m, i, inverse.data(), x1, 1, v1, d1, unused); break;
-      case 2: evaluate_degree<2>(breakpoints_.data(), m, i, inverse.data(), x0, 1, v0, d0, unused);
-              evaluate_degree<2>(breakpoints_.data(), m, i, inverse.data(), x1, 1, v1, d1, unused); break;
-      default: evaluate_degree<3>(breakpoints_.data(), m, i, inverse.data(), x0, 1, v0, d0, unused);
-               evaluate_degree<3>(breakpoints_.data(), m, i, inverse.data(), x1, 1, v1, d1, unused); break;
+    for (int r = 0; r <= P; ++r) {
+      v0[r] = at0[0][static_cast<size_t>(r)];
+      d0[r] = at0[1][static_cast<size_t>(r)];
+      v1[r] = at1[0][static_cast<size_t>(r)];
+      d1[r] = at1[1][static_cast<size_t>(r)];
     }
     // Bernstein (Bezier) coefficients of each function on t = (x - x0) / h in [0, 1] from its
     // end values and slopes (a degree-P Bezier curve leaves beta_0 with slope P (beta_1 - beta_0)

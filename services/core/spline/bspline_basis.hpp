@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A univariate B-spline basis of selectable degree on user-placed or uniform breakpoints, with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The fitted spline contact geometry of a wheelset (Arnold's unified approach, section 4): per

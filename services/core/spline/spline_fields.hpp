@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The quantities the spline contact model fits per wheel over (y, roll, yaw): one list, used by

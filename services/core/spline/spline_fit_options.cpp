@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/spline/spline_fit_options.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// What the spline contact model is fitted over and how: the configuration box, knots, degrees,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The scalar spline fit options, declared once: per member of SplineFitOptions its key (the

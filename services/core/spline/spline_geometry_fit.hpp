@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The precomputation of the spline contact model: sample the exact geometry of both wheels over

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/spline/spline_validation.hpp"
 
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Accuracy of a fitted spline contact model against the exact geometry on a validation set that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// Tensor-product B-spline evaluation, contraction with many functions' coefficients, and the
 /// weighted least-squares fit by sparse normal equations (Eigen SimplicialLDLT).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Tensor products of B-spline bases over up to four variables (y, roll, yaw and, as an option

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// One exact-geometry sample of one wheel for the spline fit: the contact point on the tread

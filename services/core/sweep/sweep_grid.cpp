@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/sweep/sweep_grid.hpp"
 
 #include <charconv>
@@ -7,6 +8,8 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include "core/numerics/inclusive_range.hpp"
 
 namespace wrc::sweep {
 namespace {
@@ -49,17 +52,12 @@ bool split_range(const std::string& item, double& from, double& to, double& step
 }  // namespace
 
 std::vector<std::string> range_values(double from, double to, double step) {
-  const std::string text = shortest_text(from) + ":" + shortest_text(to) + ":" + shortest_text(step);
-  if (!std::isfinite(from) || !std::isfinite(to) || !std::isfinite(step))
-    throw std::invalid_argument("range " + text + ": values must be finite");
-  if (!(step > 0.0)) throw std::invalid_argument("range " + text + ": the step must be positive");
-  if (to < from) throw std::invalid_argument("range " + text + ": TO is below FROM (FROM:TO:STEP)");
-  const double steps = std::floor((to - from) / step + 1e-9);
-  if (steps + 1.0 > static_cast<double>(kMaxAxisValues))
-    throw std::invalid_argument("range " + text + ": more than " + std::to_string(kMaxAxisValues) + " values");
+  const long count = inclusive_range_count(from, to, step);
+  if (static_cast<std::size_t>(count) > kMaxAxisValues)
+    throw std::invalid_argument("range " + shortest_text(from) + ":" + shortest_text(to) + ":" + shortest_text(step) +
+                                ": more than " + std::to_string(kMaxAxisValues) + " values");
   std::vector<std::string> values;
-  for (long i = 0; i <= static_cast<long>(steps); ++i)
-    values.push_back(shortest_text(rounded(from + static_cast<double>(i) * step)));
+  for (const double v : inclusive_range(from, to, step)) values.push_back(shortest_text(rounded(v)));
   return values;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The grid of a parameter sweep (`wrc sweep --grid KEY=VALUES`): per key its values, as text

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The CSV of a sweep: one row per run, in grid order, and reading it back to resume. Columns:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Track irregularities generated from a published power spectral density (docs/track.md):

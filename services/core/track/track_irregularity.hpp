@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Track irregularities along the distance travelled: the four channels of a track's geometric

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Track irregularities as a measuring car or a user writes them: CSV, one header line naming the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The design geometry of the track along the distance travelled (docs/track.md): straights,

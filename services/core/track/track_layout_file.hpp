@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A track layout as a user writes it (docs/track.md, parameters/track-*.json): one JSON object

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/contact/contact_query_codec.hpp"
 
 #include <cmath>

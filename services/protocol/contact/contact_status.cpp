@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/contact/contact_status.hpp"
 
 #include "wrc/contact_reply_t.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The statuses of a contact reply (contact_reply_t.lcm) by name and severity: the one table used

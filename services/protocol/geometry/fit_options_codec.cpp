@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/geometry/fit_options_codec.hpp"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// SplineFitOptions <-> spline_fit_options_t: the options of a spline fit as requests to

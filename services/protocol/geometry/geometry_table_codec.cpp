@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/geometry/geometry_table_codec.hpp"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The exact samples behind a spline fit as geometry_table_t, inline or as a table file (the same

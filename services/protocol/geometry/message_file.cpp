@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/geometry/message_file.hpp"
 
 #include <iterator>

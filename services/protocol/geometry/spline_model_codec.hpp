@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A fitted SplineContactGeometry <-> spline_model_t (coefficients inline), the model's cache key,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/geometry/spline_model_file.hpp"
 
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The spline model on disk: the model file (the LCM encoding of spline_model_t with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// GeometrySpec <-> track_t: the profiles (by name and content hash) and the track of a geometry

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/run/irregularity_codec.hpp"
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// Track irregularities (core/track/track_irregularity.hpp) <-> the irregularity fields of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/run/run_command_codec.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// The START command of a run and its library counterpart: RunRequest (model, geometry, the

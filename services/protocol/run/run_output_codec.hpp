@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// What a run publishes, in message form: WheelsetSnapshot -> wheelset_state_t, RunCounters ->

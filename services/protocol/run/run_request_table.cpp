@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/run/run_request_table.hpp"
 
 #include "core/dynamics/run_parameter_table.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "protocol/run/track_layout_codec.hpp"
 
 #include <stdexcept>

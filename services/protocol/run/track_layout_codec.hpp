@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A track layout (core/track/track_layout.hpp) <-> the layout fields of run_command_t

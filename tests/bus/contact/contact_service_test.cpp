@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc-contactd as real processes on a real udpm bus (private network namespace, clients/lib/netns.sh):
 // every model answers exactly as the in-process model does (the service adds nothing), invalid
 // and impossible queries get error replies naming the cause, malformed messages are counted while

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Two wrc-dynamicsd of one name on one bus (two launchers, say): the later one goes DUPLICATE and
 // stays passive, so a run is executed and summarised by one process, not by both (both used to run every
 // run and publish two summaries).

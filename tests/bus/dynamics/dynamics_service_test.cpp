@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc-dynamicsd as a real process with real contact services, driven by `wrc run` and `wrc swap`
 // (every test in a private network namespace): every model runs and writes its summary; a live
 // swap made from another process is listed and reproduced bit for bit by --swap-at; a swap to a
@@ -345,7 +346,7 @@ TEST_F(DynamicsServiceTest, PacketLossGivesTheSameFinalState) {
 // statuses) for the whole test: the launcher kills no service (single lost heartbeats are not
 // silence, busy loops are covered by the heartbeat keeper), and a one-point and a spline run end
 // bit for bit where the same runs end on the clean bus. WRC_LOSS_SECONDS (default 0) keeps the
-// loss and a stream of runs going for that long first (the 10-minute campaign of README's
+// loss and a stream of runs going for that long first (the 10-minute campaign of docs/validation.md's
 // reliability section); the check on the kills covers all of it.
 TEST_F(DynamicsServiceTest, LossyBusKillsNoServiceAndRunsEndTheSame) {
   if (!in_netns()) GTEST_SKIP() << "packet loss is only injected inside a private network namespace";

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A flood of 100 000 signed heartbeats, each from a process of its own (its own sender nonce) and
 // a READY instance of onepoint of its own whose name sorts before the real service's, all naming
 // the real service's pid and geometry key, with the longest plausible period (10 s): under `wrc

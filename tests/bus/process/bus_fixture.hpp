@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Fixture of the multi-process tests: a bus key of the test's own (installed here, and in
 // $WRC_BUS_KEY for the processes it starts), an LCM instance on the test's private bus (the

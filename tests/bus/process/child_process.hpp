@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // A child process started by a multi-process test: it dies with the test (PR_SET_PDEATHSIG),
 // can be signalled and waited for with a deadline, and is killed and reaped on destruction.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `wrc status` and `wrc spy` as the user runs them, and the types jar lcm-spy depends on.
 #include <cstdio>
 #include <filesystem>

@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: Apache-2.0
 // `wrc geometry`, `points`, `area`, `conicity` and `creep` as the user runs them (the built front end,
-// WRC_CLI_PATH): exit status, the CSV header as README / --help document it, and the values against
+// WRC_CLI_PATH): exit status, the CSV header as docs/cli.md / --help document it, and the values against
 // independent references: closed forms of a conic wheel on a circular rail head (derived in
 // tests/unit/geometry_cone_circle_test.cpp and geometry_contact_area_test.cpp and re-derived here
 // from elementary geometry, not from the library), mirror symmetry of S1002/UIC60, Kalker's linear
 // theory evaluated by hand with the coefficients tabulated in docs/contact-mechanics.md, and the
-// FASTSIM discretisation error documented in README. Bad input fails with one line naming the value.
+// FASTSIM discretisation error documented in docs/validation.md. Bad input fails with one line naming the value.
 // None of these tests needs the bus; they run in the process-test binary because they run processes.
 #include <algorithm>
 #include <chrono>
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -151,7 +153,7 @@ const char* const kGeometryHeader =
     "y,z,roll,r_left,r_right,delta_r,angle_left,angle_right,s_left,s_right,u_left,u_right,x_left,x_right,"
     "n_left,n_right,minima_left,minima_right";
 
-// Verifies the documented CSV header (README "What is there" and the column list of --help), and
+// Verifies the documented CSV header (docs/cli.md and the column list of --help), and
 // that the centred S1002/UIC60 wheelset (y = 0) is level: roll 0, equal radii, contact angles and
 // wheel coordinates, delta_r 0. Tolerances: the solver makes the two wheels' heights equal to
 // 1e-12 m, and a roll error changes that difference with a lever of about 2a = 1.5 m, so roll is 0
@@ -261,7 +263,7 @@ const char* const kPointsHeader =
     "s,u,x,y,z,distance,angle,rolling_radius,wheel_curvature,rail_curvature,local_min,common";
 
 // Verifies `points --y 0.005` (S1002/UIC60, left wheel, tread and flange root both close): several
-// potential points (README: 3 on S1002/UIC60 at 5 mm), flange first (s increasing); exactly one
+// potential points (docs/cli.md: 3 on S1002/UIC60 at 5 mm), flange first (s increasing); exactly one
 // common point, which is a local minimum and the lowest one (on a tie the one farthest from the
 // flange, i.e. the largest s). Consecutive critical points of the smooth distance along C alternate
 // between minima and maxima. Independent geometry at zero roll and yaw: the wheel point lies below
@@ -452,7 +454,7 @@ TEST(AreaCommand, GridIsTheGapAroundTheCommonPoint) {
 // conicity
 
 // Verifies `conicity` of a cone of slope 0.025 on a knife-edge rail (circle:0.0001) on the cone
-// track, header amplitude,conicity (README, --help), one row per amplitude:
+// track, header amplitude,conicity (docs/cli.md, --help), one row per amplitude:
 //  * against the harmonic linearisation computed here from the closed-form rigid wheelset
 //    (lambda_e = 1/(2 pi A) integral delta_r(A sin t) sin t dt, midpoint rule on 512 points, exact
 //    to round-off for this smooth, nearly linear delta_r): the solver's 1e-12 m in height gives at
@@ -552,7 +554,7 @@ TEST(CreepCommand, LinearTheoryMatchesKalker) {
   }
 }
 
-// Verifies `creep --model fastsim` in the linear regime against the linear theory: README documents
+// Verifies `creep --model fastsim` in the linear regime against the linear theory: docs/validation.md documents
 // the FASTSIM (centre-value) discretisation error there as +0.125 % at 20x20 and +0.50 % at 10x10,
 // i.e. +1/(2 n^2) with n strips (the midpoint rule over the strips of the parabolic strip areas;
 // along a strip the centre value integrates the linear traction exactly). The creepage 1e-7 keeps
@@ -647,18 +649,22 @@ constexpr double kBeforeAnyService = 1.5;  // [s]
 class EarlyErrors : public BusTest {
  protected:
   // Runs `wrc-cli args`, which must fail before any work: a non-zero status, exactly one line
-  // (stdout and stderr together) holding every one of names, within kBeforeAnyService, and no
-  // heartbeat of any service on the test's private bus.
+  // (stdout and stderr together) holding every one of names, and no heartbeat of any service on
+  // the test's private bus. "Before any work" is checked without a clock: the command runs with
+  // an LCM URL whose provider does not exist, so a command that opened the bus (to discover or
+  // start a service) would fail with the bus's error instead of the one expected. The time it
+  // took is printed (it stays far below kBeforeAnyService).
   void expect_one_line_error_at_once(const std::string& args, const std::vector<std::string>& names) {
     SCOPED_TRACE(args.substr(0, 300));
     int status = 0;
     const auto start = std::chrono::steady_clock::now();
-    const std::string out = run_command(kCli + " " + args + " 2>&1", &status);
+    const std::string out = run_command("LCM_DEFAULT_URL=nosuchprovider://nowhere " + kCli + " " + args + " 2>&1", &status);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_NE(status, 0);
     EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out.substr(0, 2000);
     for (const auto& name : names) EXPECT_NE(out.find(name), std::string::npos) << out.substr(0, 2000);
-    EXPECT_LT(seconds, kBeforeAnyService) << out.substr(0, 2000);
+    std::cout << "[ measured ] failed after " << seconds << " s (service discovery would take " << kBeforeAnyService
+              << " s)\n";
     handle_until([] { return false; }, 0.2);  // what arrived while the command ran
     EXPECT_EQ(monitor_->size(), 0u) << "a service sent heartbeats";
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `wrc fit` as the user runs it: a small model fitted from the command line writes a JSON report
 // with every fitted parameter's max_error and rms_error (z among them), the validation set and
 // what it leaves out, the jumps and knots of both wheels, the timing, and the fit options and the

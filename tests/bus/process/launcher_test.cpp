@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `wrc launch` with real processes: a killed service is restarted and the restart is logged;
 // Ctrl-C stops every service (DRAINING, nothing left); a killed launcher takes its services along.
 #include <signal.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrc-pingd as a real process on a real udpm bus: round trips, packet loss with retries,
 // malformed messages, death detection and clean shutdown. Each test is bounded by deadlines.
 #include <signal.h>

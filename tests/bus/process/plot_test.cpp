@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `wrc plot KIND` as the user runs it: each kind writes a PNG of the size asked for (read from the
 // PNG header) or an SVG from a small case; several bifurcation diagrams hand gnuplot the series
 // they should; a bad option and a missing gnuplot give one-line errors.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
 /// A spline model that wrc-geometryd fits in well under a second, for the bus tests that need a

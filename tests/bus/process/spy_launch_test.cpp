@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `wrc spy`'s real launch path (not --print-command): it execs `lcm-spy` found on PATH with the
 // project's types jar on CLASSPATH (before any CLASSPATH the user had), the JVM option that lets
 // Debian's lcm-spy script start on Java 17, and --lcm-url passed through. A stand-in lcm-spy first

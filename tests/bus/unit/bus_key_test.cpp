@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bus key file: created 0600 in a 0700 directory, read back, refused with a reason when
 // missing, open to others, of another length, or not hex; the path's precedence.
 #include <gtest/gtest.h>

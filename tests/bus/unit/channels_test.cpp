@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Channel names: prefix rules, length limit, regex escaping.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// The contact query adapter (services/protocol/contact/contact_query_codec.hpp) both ways, for the
 /// fields and functions contact_query_codec_test.cpp leaves out: to_query_message and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// Contact queries fail over (services/dynamicsd/bus_contact.hpp), over memq://: an instance that
 /// claims to be the leader of its model (READY, the smallest name) and never answers, as a hung

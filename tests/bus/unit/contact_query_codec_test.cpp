@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// The contact service's message adapter in-process (services/protocol/contact/contact_query_codec.hpp):
 /// every message field lands in its own library field (all values distinct, so a swap shows),

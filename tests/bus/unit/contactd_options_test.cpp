@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// wrc-contactd's own options (services/contactd/contactd_options.hpp): a full command line lands
 /// in the model and geometry fields; a bad value, a missing value, an unknown option or model and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checked decoding: wrong type, truncated bytes and trailing bytes are reported, never thrown.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Decoding cannot crash or balloon: every malformed message of issue 8 is reported as a reason,
 // within an allocation budget of a small multiple of its size; the process's peak memory stays
 // where it was.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The heartbeat keeper (HeartbeatPublisher::start_keeper) over memq://: while the owner's loop is
 // busy (no tick() for many periods, but less than max_busy) heartbeats keep coming once per period
 // from the keeper thread, so a service answering a burst of requests or retrying a contact query

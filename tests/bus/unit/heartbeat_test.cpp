@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Heartbeats over memq://: identity, state changes, load, geometry key and model hash, and dead
 // detection after 3 periods.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Launch profiles: parsing, comments, selection, and errors naming file, line and service.
 #include <gtest/gtest.h>
 

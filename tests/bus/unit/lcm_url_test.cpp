@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The URL rule of bus/transport/lcm_url.hpp: a udpm URL without recv_buf_size gets one no larger than the
 // kernel allows; anything else is kept as the user wrote it.
 #include "bus/transport/lcm_url.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // std::cerr made line-atomic: lines written in many pieces by several threads at once reach
 // standard error whole, one line per write, none cut by another; a line longer than the atomic
 // size arrives complete, and what a thread leaves without '\n' is written when it ends.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // Helpers for single-process bus tests over memq://.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Message authentication: the trailer verifies only for the same key, channel and bytes; the MAC
 // is OpenSSL's HMAC-SHA-256; an unsigned message is told from a forged one.
 #include <gtest/gtest.h>

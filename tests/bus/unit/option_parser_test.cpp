@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The option parser's declared-only lookups and declared defaults (options/options.hpp).
 #include <stdexcept>
 #include <functional>

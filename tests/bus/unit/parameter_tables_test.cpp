@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The parameter tables and every entry point they drive agree: each key set to a non-default
 // valid value reads the same through the parameter file, the command line and the message; a
 // value just outside each range is refused by all of them, and by the library, with the table's

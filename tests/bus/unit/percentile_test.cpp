@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // percentile(): the sample at rank round(p (n - 1)) of the sorted samples, whatever their order.
 #include <gtest/gtest.h>
 

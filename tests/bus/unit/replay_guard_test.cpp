@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replay protection: each (nonce, sequence) once, a little reordering tolerated, old and future
 // messages refused, the table bounded.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scheduled swaps of a run command: each limit with its own message (issue 21 item 8: 10 000
 // swaps were said to "not match the swap lists" while the limit is kMaxScheduledSwaps). The track
 // layout of a run command: every segment through the LCM encoding exactly, and each bad field

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Latency window: mean, 95th percentile and maximum over the most recent samples only.
 #include <gtest/gtest.h>
 

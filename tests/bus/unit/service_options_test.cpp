@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Common service options: parsed, passed through, or refused with a message naming the value.
 #include <gtest/gtest.h>
 

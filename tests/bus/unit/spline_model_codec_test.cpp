@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The spline model on the bus and on disk (services/protocol/geometry/): a fitted
 // model survives encoding, the model file and decoding bit for bit; a corrupted file, a wrong
 // function list or a wrong model hash are refused naming what does not match; fit options and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The launcher's hang check (bus/process/process_supervisor.hpp) on real child processes, with
 // heartbeats fed in by hand: silence kills a child fast only when its process state confirms it
 // is stopped (SIGSTOP), otherwise only after a silence no lossy network produces; heartbeats

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Process supervisor with real short-lived processes: restart with growing back-off and a log
 // line per death; stop_all ends a child that ignores SIGTERM with SIGKILL.
 #include <gtest/gtest.h>
@@ -6,7 +7,11 @@
 #include <sys/prctl.h>
 #include <sys/wait.h>
 
+#include <unistd.h>
+
+#include <cstdio>
 #include <sstream>
+#include <string>
 #include <thread>
 
 #include "bus/process/process_supervisor.hpp"
@@ -45,12 +50,20 @@ TEST(ProcessSupervisor, StopKillsStubbornChild) {
   std::ostringstream log;
   SupervisorPolicy policy;
   policy.grace = 0.2;
-  ProcessSupervisor supervisor({{"stubborn", "/bin/sh", {"-c", "trap '' TERM; while :; do sleep 0.05; done"}}},
-                               policy, log);
+  // The shell says it has installed its trap by creating a marker file, which the test polls for.
+  const std::string marker = ::testing::TempDir() + "stubborn_" + std::to_string(::getpid());
+  std::remove(marker.c_str());
+  ProcessSupervisor supervisor(
+      {{"stubborn", "/bin/sh", {"-c", "trap '' TERM; : > '" + marker + "'; while :; do sleep 0.05; done"}}}, policy,
+      log);
   supervisor.start_all();
   const pid_t pid = supervisor.children()[0].pid;
   ASSERT_GT(pid, 0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // let the shell install its trap
+  const double ready_by = monotonic_seconds() + 10.0;
+  while (::access(marker.c_str(), F_OK) != 0 && monotonic_seconds() < ready_by)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_EQ(::access(marker.c_str(), F_OK), 0) << "the child never installed its trap";
+  std::remove(marker.c_str());
   const double start = monotonic_seconds();
   supervisor.stop_all();
   EXPECT_GE(monotonic_seconds() - start, 0.19);

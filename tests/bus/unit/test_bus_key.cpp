@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every unit test of the bus runs with a bus key installed (a fixed test key: these tests never
 // leave the process, memq://), as open_lcm() would install the user's key in a real process.
 #include <gtest/gtest.h>

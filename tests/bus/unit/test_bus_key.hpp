@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 // The bus key every unit test of the bus runs with (installed before the first test).
 #include "bus/auth/bus_key.hpp"

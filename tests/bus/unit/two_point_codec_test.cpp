@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file
 /// Rigid two-point contact over the bus (services/protocol/contact/contact_query_codec.hpp): the second point
 /// of each wheel (its tracked s and load in wheelset_configuration_t, its constraint in

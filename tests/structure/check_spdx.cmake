@@ -1,0 +1,31 @@
+# SPDX-License-Identifier: Apache-2.0
+cmake_minimum_required(VERSION 3.19)
+# Every source file of the tree under ROOT (C++, lcmtypes, CMake, shell scripts, the front end
+# clients/wrc and .ci/run) names its licence in an SPDX line among its first three lines. Build
+# folders are left out. Fails listing every file without one.
+if(NOT IS_DIRECTORY "${ROOT}")
+  message(FATAL_ERROR "ROOT = '${ROOT}' is not the source tree")
+endif()
+file(GLOB_RECURSE files RELATIVE "${ROOT}"
+  "${ROOT}/*.cpp" "${ROOT}/*.hpp" "${ROOT}/*.lcm" "${ROOT}/*.cmake" "${ROOT}/*CMakeLists.txt" "${ROOT}/*.sh")
+list(APPEND files clients/wrc .ci/run)
+set(missing 0)
+set(checked 0)
+foreach(file IN LISTS files)
+  if(file MATCHES "^build" OR file MATCHES "/build[^/]*/" OR NOT EXISTS "${ROOT}/${file}")
+    continue()
+  endif()
+  math(EXPR checked "${checked} + 1")
+  file(STRINGS "${ROOT}/${file}" head LIMIT_COUNT 3)
+  if(NOT head MATCHES "SPDX-License-Identifier: Apache-2.0")
+    message(SEND_ERROR "${file}: no 'SPDX-License-Identifier: Apache-2.0' in its first three lines")
+    math(EXPR missing "${missing} + 1")
+  endif()
+endforeach()
+if(checked LESS 100)
+  message(FATAL_ERROR "only ${checked} source files found under '${ROOT}': not the source tree")
+endif()
+if(missing GREATER 0)
+  message(FATAL_ERROR "${missing} of ${checked} source files name no licence")
+endif()
+message(STATUS "${checked} source files, each with its SPDX line")

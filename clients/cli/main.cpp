@@ -11,13 +11,6 @@
 #include "bus/process/line_atomic_stderr.hpp"
 #include "cli/command.hpp"
 
-namespace wrc::cli {
-std::vector<Command>& command_registry() {
-  static std::vector<Command> registry;
-  return registry;
-}
-}  // namespace wrc::cli
-
 namespace {
 void print_usage(std::ostream& out) {
   auto commands = wrc::cli::command_registry();

@@ -7,6 +7,8 @@
 
 #include "core/numerics/number_text.hpp"
 #include "core/spline/spline_fit_table.hpp"
+#include "core/spline/spline_fields.hpp"
+#include "core/spline/wheel_sample.hpp"
 
 namespace wrc {
 namespace {
@@ -63,6 +65,15 @@ void SplineFitOptions::validate() const {
     bad("yaw_samples = " + std::to_string(yaw_samples) + " must be at least intervals + degree in yaw (" +
         std::to_string(intervals[2] + degrees[2]) + ") and at most 101");
   require_positive(search.step, "search.step", "m");
+  if (const double bytes = fit_memory_bytes(); !(bytes <= kMaxFitMemory)) {
+    std::ostringstream msg;
+    msg << "sample_step_y = " << shortest_number_text(sample_step_y) << " m (--sample-step) over the box y in ["
+        << shortest_number_text(y_min) << ", " << shortest_number_text(y_max) << "] m (--box) with " << roll_samples << " x " << yaw_samples
+        << " lines (--samples) needs about " << number_text(bytes / 1073741824.0, 3)
+        << " GiB; a fit may take at most " << number_text(kMaxFitMemory / 1073741824.0, 3)
+        << " GiB (a coarser step, a smaller box or fewer lines)";
+    bad(msg.str());
+  }
   if (threads < 0 || threads > 64) bad("threads = " + std::to_string(threads) + " must be 0..64");
 }
 
@@ -95,6 +106,22 @@ std::array<int, 3> SplineFitOptions::parse_triple(const std::string& text, const
     out[k] = v;
   }
   return out;
+}
+
+double SplineFitOptions::fit_memory_bytes() const {
+  // In doubles, so that no count overflows: (y_max - y_min) / sample_step_y may be anything.
+  const double per_line = std::floor((y_max - y_min) / sample_step_y + 0.5) + 1.0;
+  const double samples = per_line * roll_samples * yaw_samples;  // per wheel
+  const double sample_bytes = static_cast<double>(sizeof(WheelSample));
+  // Coefficients per function: a branch's basis in y reaches past its jumps at the same spacing,
+  // at most twice its intervals (spline_geometry_fit.cpp).
+  const int y_intervals = y_breakpoints.empty() ? intervals[0] : static_cast<int>(y_breakpoints.size()) - 1;
+  const double coefficients = (2.0 * y_intervals + degrees[0]) * (intervals[1] + degrees[1]) * (intervals[2] + degrees[2]);
+  const double band = (2.0 * degrees[0] + 1) * (2.0 * degrees[1] + 1) * (2.0 * degrees[2] + 1);
+  constexpr double kFixed = 16.0 * 1048576.0;  // sampling threads' heaps and stacks, the profiles' tables
+  return kFixed + samples * sample_bytes * (2.0 + kMaxFitBranches)  // grids of both wheels, continuations
+         + samples * (kSplineFieldCount + 4) * 8.0                   // one branch's values, points, weight
+         + coefficients * band * 16.0 + coefficients * kSplineFieldCount * 8.0;  // normal equations, solution
 }
 
 int SplineFitOptions::y_samples() const {

@@ -21,6 +21,13 @@ enum class KnotPlacement {
 /// Everything that determines a fitted spline contact model besides the geometry. Boxes and
 /// breakpoints are the LEFT wheel's; the right wheel uses the mirror image (y, roll, yaw) ->
 /// (-y, -roll, -yaw), sampled from its own exact geometry.
+/// The most memory a fit may take [B]: 1 GiB (the machines wrc runs on have 4 GB or more, and a
+/// fit shares them with the services and the runs).
+inline constexpr double kMaxFitMemory = 1073741824.0;
+/// The most branches (stretches of the tread contact point between jumps) a wheel's fit may have
+/// [-]: S1002 on UIC60 has 3; a fit that finds more is refused (its memory bound assumes this).
+inline constexpr int kMaxFitBranches = 8;
+
 struct SplineFitOptions {
   // Box of the left wheel. A wheelset query needs both wheels inside their boxes, and the right
   // box is the mirror image, so the wheelset's range in y is [max(y_min, -y_max), min(y_max,
@@ -89,6 +96,12 @@ struct SplineFitOptions {
 
   /// Samples of each line in y: (y_max - y_min) / sample_step_y, rounded, + 1 [-].
   int y_samples() const;
+
+  /// The most memory a fit of these options needs [B], known before any sampling: both wheels'
+  /// exact samples (kept for the report), one wheel's continuations of up to kMaxFitBranches
+  /// branches, one branch's fitted values and its normal equations, and 16 MB for the sampling
+  /// threads and the profiles' tables. validate() refuses options above kMaxFitMemory.
+  double fit_memory_bytes() const;
 
   /// Canonical text of every option (numbers with 17 digits): part of the model's cache key.
   std::string canonical_text() const;

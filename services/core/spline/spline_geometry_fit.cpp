@@ -361,6 +361,11 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
     // its own stretch, its continuation past each of its jumps up to the transition (and one
     // sample more), followed as a non-lowest minimum while it exists, and filled values elsewhere.
     const size_t branches = jumps + 1;
+    if (branches > static_cast<size_t>(kMaxFitBranches))
+      throw std::invalid_argument("spline fit: the " + std::string(side_name(side)) + " wheel's tread contact point has " +
+                                  std::to_string(jumps) + " jumps on every sample line, " + std::to_string(branches) +
+                                  " branches; a fit may have at most " + std::to_string(kMaxFitBranches) +
+                                  " (its memory bound assumes it); --transition 0 fits once across the jumps");
     start = std::chrono::steady_clock::now();
     std::vector<std::vector<WheelSample>> continued(branches, std::vector<WheelSample>(count));
     // traces[m][2 line + (dir < 0)]: jump m on the line, followed upwards (branch m) or downwards.

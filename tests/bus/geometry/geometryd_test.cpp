@@ -388,6 +388,9 @@ TEST_F(GeometryServiceTest, StopsPromptlyDuringAFit) {
   const double t0 = monotonic_seconds();
   ASSERT_TRUE(service_->wait(5.0, &status)) << read_text(log_);
   std::cout << "[ measured ] SIGTERM to exit during a fit: " << monotonic_seconds() - t0 << " s\n";
+  handle_until([] { return false; }, 0.1);
+  for (const wrc::progress_t& p : progress_[51])  // it did not wait: no progress told of the fit's end
+    EXPECT_EQ(std::string(p.message).rfind("done", 0), std::string::npos) << p.message;
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
   handle_until([] { return false; }, 0.1);
   ASSERT_FALSE(beats_.empty());

@@ -84,6 +84,16 @@ TEST_F(BusTest, FitCommandWritesTheAccuracyReport) {
   const std::string bad = run_command(std::string(WRC_CLI_PATH) + " fit --knots 0x2x2 --report " + report + " 2>&1", &status);
   EXPECT_NE(status, 0);
   EXPECT_NE(bad.find("--knots: '0'"), std::string::npos) << bad;
+  // Work without a bound is refused before any sampling, naming the option (the fit's memory
+  // rule, SplineFitOptions::fit_memory_bytes(); the box's range from the option table).
+  const std::string fine = run_command(std::string(WRC_CLI_PATH) + " fit --sample-step 1e-7 --report " + report + " 2>&1", &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(fine.find("(--sample-step)"), std::string::npos) << fine;
+  EXPECT_NE(fine.find("at most 1 GiB"), std::string::npos) << fine;
+  const std::string wide =
+      run_command(std::string(WRC_CLI_PATH) + " fit --box -1e300:1e300,0.001,0.005 --report " + report + " 2>&1", &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(wide.find("y_min"), std::string::npos) << wide;
   const std::string no_report = run_command(std::string(WRC_CLI_PATH) + " fit 2>&1", &status);
   EXPECT_NE(status, 0);
   EXPECT_NE(no_report.find("--report"), std::string::npos) << no_report;

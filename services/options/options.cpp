@@ -79,6 +79,10 @@ Options::Options(std::string program, std::string label, std::string synopsis, s
       values_.emplace_back(name, *inline_value);
     } else {
       if (i + 1 >= args.size()) throw UsageError("option " + name + " needs a value");
+      // "--y --yaw 0.001": the value forgotten, the next option taken for it.
+      if (args[i + 1].rfind("--", 0) == 0)
+        throw UsageError("option " + name + " needs a value, but the next argument is the option '" + args[i + 1] +
+                         "' (give " + name + "=VALUE for a value that starts with --)");
       values_.emplace_back(name, args[++i]);
     }
   }

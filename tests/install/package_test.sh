@@ -18,7 +18,8 @@ fail() { echo "FAIL: $*"; exit 1; }
   { tail -30 "$dir/cpack.log"; fail "cpack failed"; }
 deb=$(ls "$dir"/package/wrc_*.deb 2>/dev/null | head -1)
 [ -n "$deb" ] || { ls -R "$dir/package" | head; fail "no wrc_*.deb"; }
-dpkg-deb --info "$deb" | grep -q "Depends:.*liblcm" || { dpkg-deb --info "$deb"; fail "the package does not depend on LCM"; }
+info=$(dpkg-deb --info "$deb")  # (not piped into grep -q: pipefail would see dpkg-deb's SIGPIPE)
+grep -q "Depends:.*liblcm" <<<"$info" || { echo "$info"; fail "the package does not depend on LCM"; }
 root=$dir/root
 dpkg-deb -x "$deb" "$root"
 

@@ -440,11 +440,11 @@ TEST_F(GeometryServiceTest, RejectsInvalidRequestsAndSurvivesGarbage) {
     EXPECT_EQ(models_.count(c.id), 0u);
   }
 
-  // A fit that throws (a box beyond the flange: no tread contact) fails; the service stays up.
-  SplineFitOptions beyond = small_fit_options();
-  beyond.y_min = 0.10;
-  beyond.y_max = 0.12;
-  send(make_request(37, beyond));
+  // A fit that throws (a gauge of 1.6 m, valid but wider than the wheelset: no tread contact)
+  // fails; the service stays up.
+  auto wide = make_request(37, small_fit_options());
+  wide.track.gauge = 1.6;
+  send(wide);
   const auto failed = wait_progress(37, "failed: ", 10.0);
   ASSERT_TRUE(failed) << read_text(log_);
   EXPECT_NE(failed->message.find("no tread contact point"), std::string::npos) << failed->message;

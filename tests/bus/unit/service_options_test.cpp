@@ -58,5 +58,8 @@ TEST(ServiceOptions, RefusesBadValues) {
   expect_refused({"--instance", "a b"}, "--instance: 'a b' must be 1-24 letters, digits, '_' or '-'");
   expect_refused({"--instance", "abcdefghijklmnopqrstuvwxy"}, "--instance: 'abcdefghijklmnopqrstuvwxy' must be 1-24");
   expect_refused({"--lcm-url"}, "option --lcm-url needs a value");
+  // A forgotten value: the next option is not taken for it, and both are named.
+  expect_refused({"--instance", "--heartbeat-period", "0.5"},
+                 "option --instance needs a value, but the next argument is the option '--heartbeat-period'");
 }
 }  // namespace

@@ -21,6 +21,7 @@
 #include "cli/plot/plot_options.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/speed_scan_option.hpp"
+#include "cli/pose_ranges.hpp"
 #include "core/dynamics/hunting_continuation.hpp"
 #include "core/dynamics/linear_stability.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
@@ -117,8 +118,8 @@ int run_bifurcation(const std::vector<std::string>& args) {
   const std::vector<double> speeds = parse_speed_scan(o.text("--speeds", "30:90:5"), "--speeds");
   if (speeds.size() < 2) throw UsageError("--speeds: give at least 2 speeds");
   ContinuationSettings settings;
-  settings.small_disturbance.y = o.number("--disturbance", {-0.05, 0.05});
-  settings.large_disturbance.y = o.number("--start-amplitude", {-0.05, 0.05});
+  settings.small_disturbance.y = o.number("--disturbance", kLateralShiftRange);
+  settings.large_disturbance.y = o.number("--start-amplitude", kLateralShiftRange);
   settings.run.settle_time = o.number("--settle-time", {1e-3, 1e4});
   settings.run.window = o.number("--window", {1e-3, 1e4});
   settings.run.max_time = o.number("--max-time", {1e-3, 1e4});

@@ -9,6 +9,7 @@
 #include "cli/command.hpp"
 #include "cli/options.hpp"
 #include "cli/profile_options.hpp"
+#include "cli/pose_ranges.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
 
@@ -31,10 +32,10 @@ int run_geometry(const std::vector<std::string>& args) {
                  "z is the height of the wheelset centre above the top-of-rail plane.\n";
     return 0;
   }
-  const double y_from = opt.required_number("--y-from", {-0.05, 0.05});
-  const double y_to = opt.required_number("--y-to", {-0.05, 0.05});
+  const double y_from = opt.required_number("--y-from", kLateralShiftRange);
+  const double y_to = opt.required_number("--y-to", kLateralShiftRange);
   const double step = opt.required_number("--y-step", {1e-7, 0.05});
-  const double yaw = opt.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
+  const double yaw = opt.number("--yaw", kYawRange);
   const bool csv = opt.choice("--format", {"csv", "table"}) == "csv";
   if (y_to < y_from) throw UsageError("--y-to " + std::to_string(y_to) + " is below --y-from " + std::to_string(y_from));
   const long count = inclusive_step_count(y_from, y_to, step);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cli/profile_options.hpp"
+#include "cli/pose_ranges.hpp"
 
 namespace wrc::cli {
 
@@ -17,9 +18,9 @@ OptionSpec side_option_spec() { return {"--wheel-side", true, "left or right", "
 
 WheelsetPose pose_from_options(const Options& options, double z) {
   WheelsetPose pose;
-  pose.y = options.required_number("--y", {-0.05, 0.05});
+  pose.y = options.required_number("--y", kLateralShiftRange);
   pose.roll = options.number("--roll", {-0.1, 0.1});
-  pose.yaw = options.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
+  pose.yaw = options.number("--yaw", kYawRange);
   pose.z = z;
   return pose;
 }

@@ -155,7 +155,17 @@ static double check_range(double value, const std::string& name, const std::stri
 
 double Options::number(const std::string& name, NumberRange range) const {
   auto v = find(name);
-  if (!v) return default_number(name);
+  if (!v) {
+    // The declared default obeys the same range as a value typed: a table and a call site that
+    // disagree, or a range that another option moved (--backoff-max below --backoff-min), are
+    // refused naming the option instead of running with an out-of-range value.
+    const double d = default_number(name);
+    if (!(d >= range.min && d <= range.max))
+      throw UsageError(name + ": its default " + declared(name).default_text + " lies outside the range that applies (" +
+                       shortest_number_text(range.min) + " to " + shortest_number_text(range.max) + "); give " +
+                       name + " a value");
+    return d;
+  }
   return check_range(parse_finite(*v, name), name, *v, range.min, range.max);
 }
 
@@ -170,6 +180,10 @@ int Options::integer(const std::string& name, IntegerRange range) const {
   if (!v) {
     const double d = default_number(name);
     if (d != std::floor(d)) throw std::logic_error(program_ + ": option " + name + " has no whole number as its default");
+    if (!(d >= range.min && d <= range.max))
+      throw UsageError(name + ": its default " + declared(name).default_text + " lies outside the range that applies (" +
+                       shortest_number_text(range.min) + " to " + shortest_number_text(range.max) + "); give " +
+                       name + " a value");
     return static_cast<int>(d);
   }
   const double d = parse_finite(*v, name);

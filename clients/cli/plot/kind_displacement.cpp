@@ -10,6 +10,7 @@
 #include "cli/plot/plot_kind.hpp"
 #include "cli/plot/plot_options.hpp"
 #include "cli/profile_options.hpp"
+#include "cli/pose_ranges.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
 
 namespace wrc::cli::plot {
@@ -35,7 +36,7 @@ int run_displacement(const std::vector<std::string>& args) {
   }
   const double y_max = opt.number("--y-max", {1e-5, 0.05});
   const double roll_max = opt.number("--roll-max", {1e-5, 0.1});
-  const double yaw = opt.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
+  const double yaw = opt.number("--yaw", kYawRange);
   const WheelSide side = side_from_options(opt);
   const int nodes = opt.integer("--grid", {2, 1001});
   const GeometrySpec spec = geometry_spec_from_options(opt);

@@ -9,6 +9,7 @@
 #include "cli/plot/plot_kind.hpp"
 #include "cli/plot/plot_options.hpp"
 #include "cli/profile_options.hpp"
+#include "cli/pose_ranges.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
 
 namespace wrc::cli::plot {
@@ -29,10 +30,10 @@ int run_geometry(const std::vector<std::string>& args) {
                  "on the wheel profile (s) and on the rail profile (u). Points, not lines: jumps stay visible.\n";
     return 0;
   }
-  const double y_from = opt.number("--y-from", {-0.05, 0.05});
-  const double y_to = opt.number("--y-to", {-0.05, 0.05});
+  const double y_from = opt.number("--y-from", kLateralShiftRange);
+  const double y_to = opt.number("--y-to", kLateralShiftRange);
   const double step = opt.number("--y-step", {1e-7, 0.05});
-  const double yaw = opt.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
+  const double yaw = opt.number("--yaw", kYawRange);
   if (!(y_to > y_from)) throw UsageError(format("--y-to %g is not above --y-from %g", y_to, y_from));
   const long count = inclusive_step_count(y_from, y_to, step);
   if (count > 200000) throw UsageError(format("--y-step %g gives more than 200000 shifts", step));

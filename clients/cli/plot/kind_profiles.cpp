@@ -9,6 +9,7 @@
 #include "cli/plot/plot_kind.hpp"
 #include "cli/plot/plot_options.hpp"
 #include "cli/profile_options.hpp"
+#include "cli/pose_ranges.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
 
 namespace wrc::cli::plot {
@@ -30,8 +31,8 @@ int run_profiles(const std::vector<std::string>& args) {
                  "left, right wheel right, each around its rail.\n";
     return 0;
   }
-  const double y = opt.number("--y", {-0.05, 0.05});
-  const double yaw = opt.number("--yaw", {-kMaxValidatedYaw, kMaxValidatedYaw});
+  const double y = opt.number("--y", kLateralShiftRange);
+  const double yaw = opt.number("--yaw", kYawRange);
   const GeometrySpec spec = geometry_spec_from_options(opt);
   const WheelsetGeometry geometry = make_geometry(spec);
   const ImageRequest image = image_from_options(opt, "profiles.png");

@@ -23,6 +23,13 @@ namespace wrc {
 /// along the flange that the rail edges can be misplaced. Contact models reject larger yaw.
 constexpr double kMaxValidatedYaw = 0.06;
 
+/// Largest |lateral shift| [m] a geometry command (--y, --y-from, --y-to) or a spline box may ask
+/// for: 50 mm, far beyond flange contact of any standard wheelset (S1002 on UIC60 climbs from
+/// about 7 mm on) and inside the profiles' domains. (A contact query accepts any wheelset on a
+/// track, up to kMaxLateralShift = 0.5 m of query_validation.hpp, and lets the model say whether
+/// it touches.)
+constexpr double kMaxGeometryLateralShift = 0.05;
+
 /// Wheelset on track: the same wheel profile on both wheels (mirrored for the right wheel) and the
 /// same rail profile on both rails (mirrored for the right rail).
 class WheelsetGeometry {

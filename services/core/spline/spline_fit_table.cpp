@@ -10,9 +10,9 @@ const std::vector<Parameter<SplineFitOptions>>& spline_fit_table() {
   constexpr auto kNumber = ParameterKind::kNumber;
   static const std::vector<Parameter<O>> table{
       member_parameter<O>({"y_min", "", "m", "left wheel's box: lowest lateral shift (--box)", kNumber,
-                           closed(-0.05, 0.05)}, &O::y_min),
+                           closed(-kMaxGeometryLateralShift, kMaxGeometryLateralShift)}, &O::y_min),
       member_parameter<O>({"y_max", "", "m", "left wheel's box: highest lateral shift (--box)", kNumber,
-                           closed(-0.05, 0.05)}, &O::y_max),
+                           closed(-kMaxGeometryLateralShift, kMaxGeometryLateralShift)}, &O::y_max),
       member_parameter<O>({"roll_max", "", "rad", "roll in [-roll_max, roll_max] (--box; beyond 0.05 a wheel lifts)",
                            kNumber, {0.0, Bound::kOpen, 0.05, Bound::kClosed}}, &O::roll_max),
       member_parameter<O>({"yaw_max", "", "rad", "yaw in [-yaw_max, yaw_max] (--box; the validated geometry)",

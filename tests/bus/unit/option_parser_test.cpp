@@ -49,5 +49,22 @@ TEST(OptionParser, TheDeclaredDefaultIsTheValueOfAnAbsentOption) {
   EXPECT_THROW(parse({"--yaw", "0.07"}).number("--yaw", {-0.06, 0.06}), UsageError);
 }
 
+// The default obeys the range as a typed value does: an absent option whose default lies outside
+// the range of the call (a range another option moved, say) is refused naming it.
+TEST(OptionParser, TheDefaultIsRangeChecked) {
+  const Options o = parse({});
+  for (auto lookup : std::vector<std::function<void()>>{[&] { o.number("--yaw", {0.02, 1.0}); },
+                                                        [&] { o.integer("--grid", {100, 200}); }}) {
+    try {
+      lookup();
+      ADD_FAILURE() << "an out-of-range default passed";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("its default"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("give --"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(o.number("--yaw", {0.01, 1.0}), 0.01);  // the range's end included
+}
+
 }  // namespace
 }  // namespace wrc

@@ -19,6 +19,7 @@
 #include "cli/progress_bar.hpp"
 #include "cli/service_starter.hpp"
 #include "core/identity/geometry_key.hpp"
+#include "core/numerics/number_text.hpp"
 #include "protocol/geometry/fit_options_codec.hpp"
 #include "protocol/geometry/spline_model_codec.hpp"
 #include "protocol/geometry/track_codec.hpp"
@@ -84,7 +85,7 @@ int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOp
     const double now = bus::monotonic_seconds();
     if (bus::ShutdownSignal::requested()) throw std::runtime_error("interrupted while waiting for the model");
     if (now > deadline)
-      throw std::runtime_error("no spline model from wrc-geometryd within --wait " + std::to_string(wait) + " s");
+      throw std::runtime_error("no spline model from wrc-geometryd within --wait " + shortest_number_text(wait) + " s");
     // A request lost on the way is sent again; once the service answers with progress, it is working on it.
     if (!heard && now >= next_send) {
       stamper.stamp(request.header);

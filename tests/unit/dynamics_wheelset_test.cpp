@@ -240,6 +240,9 @@ TEST(RunParameterFile, RoundTripAndErrors) {
   };
   EXPECT_NE(error(R"({"speeed": 3})").find("p.json: speeed: unknown parameter"), std::string::npos);
   EXPECT_NE(error(R"({"speed": -3})").find("speed = -3"), std::string::npos);
+  // g = 0 would make the load's apparent gravity V^2 kappa / g = 0 / 0 on straight track (the run
+  // failed at t = 0 with y_dot = NaN in its first query): refused.
+  EXPECT_NE(error(R"({"gravity": 0})").find("gravity = 0"), std::string::npos) << error(R"({"gravity": 0})");
   EXPECT_NE(error(R"({"include_gravity": 1})").find("include_gravity: must be true or false"), std::string::npos);
   EXPECT_NE(error(R"({"max_steps": 2.5})").find("not a whole number"), std::string::npos);
   EXPECT_NE(error("[1, 2]").find("one JSON object"), std::string::npos);

@@ -67,7 +67,9 @@ const std::vector<Parameter<WheelsetParameters>>& wheelset_parameter_table() {
                             &W::lateral_force),
         member_parameter<W>({"include_gravity", nullptr, "-", "true: m g acts on top of vertical_force"},
                             &W::include_gravity),
-        member_parameter<W>({"gravity", nullptr, "m/s^2", "g", ParameterKind::kNumber, kNonNegative}, &W::gravity),
+        member_parameter<W>({"gravity", nullptr, "m/s^2",
+                             "g, > 0: the load acts as a weight along the apparent gravity (V^2 kappa / g)",
+                             ParameterKind::kNumber, kPositive}, &W::gravity),
     };
     append(t, lift_parameters(suspension_table(), &W::suspension));
     append(t, lift_parameters(material_table(), &W::material));

@@ -8,10 +8,11 @@
 
 #include "cli/command.hpp"
 #include "cli/options.hpp"
-#include "cli/profile_options.hpp"
 #include "cli/pose_ranges.hpp"
+#include "cli/profile_options.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
+#include "core/numerics/inclusive_range.hpp"
 
 namespace wrc::cli {
 namespace {
@@ -38,7 +39,7 @@ int run_geometry(const std::vector<std::string>& args) {
   const double yaw = opt.number("--yaw", kYawRange);
   const bool csv = opt.choice("--format", {"csv", "table"}) == "csv";
   if (y_to < y_from) throw UsageError("--y-to " + std::to_string(y_to) + " is below --y-from " + std::to_string(y_from));
-  const long count = inclusive_step_count(y_from, y_to, step);
+  const long count = inclusive_range_count(y_from, y_to, step);
   if (count > 2000000) throw UsageError("--y-step gives more than 2e6 rows");
 
   const WheelsetGeometry geometry = geometry_from_options(opt);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "cli/profile_options.hpp"
 #include "cli/pose_ranges.hpp"
+#include "cli/profile_options.hpp"
 
 namespace wrc::cli {
 

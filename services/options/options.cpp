@@ -144,10 +144,13 @@ std::string Options::required_text(const std::string& name) const {
   return *v;
 }
 
-static double check_range(double value, const std::string& name, const std::string& text, double min, double max) {
-  if (value < min || value > max) {
+// value (typed as text, or the declared default) within [min, max]; the refusal names the option,
+// the text and the range, then hint.
+static double check_range(double value, const std::string& name, const std::string& text, double min, double max,
+                          const std::string& hint = "") {
+  if (!(value >= min && value <= max)) {
     std::ostringstream msg;
-    msg << name << ": " << text << " is outside [" << min << ", " << max << "]";
+    msg << name << ": " << text << " is outside [" << min << ", " << max << "]" << hint;
     throw UsageError(msg.str());
   }
   return value;
@@ -159,12 +162,8 @@ double Options::number(const std::string& name, NumberRange range) const {
     // The declared default obeys the same range as a value typed: a table and a call site that
     // disagree, or a range that another option moved (--backoff-max below --backoff-min), are
     // refused naming the option instead of running with an out-of-range value.
-    const double d = default_number(name);
-    if (!(d >= range.min && d <= range.max))
-      throw UsageError(name + ": its default " + declared(name).default_text + " lies outside the range that applies (" +
-                       shortest_number_text(range.min) + " to " + shortest_number_text(range.max) + "); give " +
-                       name + " a value");
-    return d;
+    return check_range(default_number(name), name, "its default " + declared(name).default_text, range.min, range.max,
+                       "; give " + name + " a value");
   }
   return check_range(parse_finite(*v, name), name, *v, range.min, range.max);
 }
@@ -180,11 +179,8 @@ int Options::integer(const std::string& name, IntegerRange range) const {
   if (!v) {
     const double d = default_number(name);
     if (d != std::floor(d)) throw std::logic_error(program_ + ": option " + name + " has no whole number as its default");
-    if (!(d >= range.min && d <= range.max))
-      throw UsageError(name + ": its default " + declared(name).default_text + " lies outside the range that applies (" +
-                       shortest_number_text(range.min) + " to " + shortest_number_text(range.max) + "); give " +
-                       name + " a value");
-    return static_cast<int>(d);
+    return static_cast<int>(check_range(d, name, "its default " + declared(name).default_text, range.min, range.max,
+                                        "; give " + name + " a value"));
   }
   const double d = parse_finite(*v, name);
   if (d != std::floor(d)) throw UsageError(name + ": '" + *v + "' is not a whole number");

@@ -84,6 +84,11 @@ std::string write_points(const GnuplotJob& job, const std::string& name,
   return quoted(job.data_path(name)) + " using 1:2";
 }
 
+// Appends a series to plots ("plot A, B, ..."): the points' source, its style and its key title.
+void add_series(std::string& plots, const std::string& source, const std::string& with, const std::string& title) {
+  plots += std::string(plots.empty() ? "plot " : ", ") + source + " with " + with + " title " + quoted(title);
+}
+
 // A vertical line at speed v [m/s] with a label at height [graph fraction].
 std::string speed_marker(double v, const char* dash, const std::string& colour, double height, const std::string& text) {
   return format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt %s lw 1.5 lc rgb '%s'\n"
@@ -121,8 +126,7 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
   for (const Style& s : styles) {
     auto it = p.points.find(s.key);
     if (it == p.points.end() || it->second.empty()) continue;
-    plots += std::string(plots.empty() ? "plot " : ", ") + write_points(job, std::string(s.key) + ".dat", it->second) +
-             " with " + s.with + " title " + quoted(s.title);
+    add_series(plots, write_points(job, std::string(s.key) + ".dat", it->second), s.with, s.title);
   }
   std::string script = "set title " + quoted(title) + " noenhanced\n" + kAxes;
   if (p.linear > 0)
@@ -156,9 +160,9 @@ void draw_bifurcations(const std::vector<LabelledBifurcation>& diagrams, const I
     std::sort(cycles.begin(), cycles.end());
     auto add = [&](const std::string& name, const std::vector<std::pair<double, double>>& pts, const std::string& with,
                    const std::string& text) {
-      if (pts.empty()) return;
-      plots += std::string(plots.empty() ? "plot " : ", ") + write_points(job, format("%zu-", d) + name + ".dat", pts) +
-               " with " + with + " lc rgb '" + colour + "' title " + quoted(text);
+      if (!pts.empty())
+        add_series(plots, write_points(job, format("%zu-", d) + name + ".dat", pts), with + " lc rgb '" + colour + "'",
+                   text);
     };
     std::string text = diagram.label + ": stable cycles";
     if (p.nonlinear > 0) text += format(", V_nl = %.2f m/s", p.nonlinear);
@@ -169,10 +173,10 @@ void draw_bifurcations(const std::vector<LabelledBifurcation>& diagrams, const I
     auto failed = p.points.find("failed");
     if (failed != p.points.end())
       add("failed", failed->second, "points pt 2 ps 1.5", diagram.label + ": failed (amplitude when it stopped)");
-    const double height = 0.95 - 0.12 * static_cast<double>(d);
+    const double label_height = 0.65 - 0.12 * static_cast<double>(d);  // [graph fraction], one step per diagram
     if (p.nonlinear > 0)
-      script += speed_marker(p.nonlinear, "3", colour, height - 0.3, format("%s V_nl", diagram.label.c_str()));
-    if (p.linear > 0) script += speed_marker(p.linear, "2", colour, height - 0.3, format("%s V_c", diagram.label.c_str()));
+      script += speed_marker(p.nonlinear, "3", colour, label_height, format("%s V_nl", diagram.label.c_str()));
+    if (p.linear > 0) script += speed_marker(p.linear, "2", colour, label_height, format("%s V_c", diagram.label.c_str()));
   }
   if (plots.empty()) throw std::runtime_error("no cycle or failed run in any diagram to draw");
   job.render(script + plots + "\n", image);

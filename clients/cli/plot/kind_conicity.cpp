@@ -9,6 +9,7 @@
 #include "cli/plot/plot_options.hpp"
 #include "cli/profile_options.hpp"
 #include "core/geometry/conicity.hpp"
+#include "core/numerics/inclusive_range.hpp"
 
 namespace wrc::cli::plot {
 namespace {
@@ -32,7 +33,7 @@ int run_conicity(const std::vector<std::string>& args) {
   const double step = opt.number("--a-step", {1e-7, 0.02});
   const int samples = opt.integer("--samples", {8, 100000});
   if (!(a_to >= a_from)) throw UsageError(format("--a-to %g is below --a-from %g", a_to, a_from));
-  const long count = inclusive_step_count(a_from, a_to, step);
+  const long count = inclusive_range_count(a_from, a_to, step);
   if (count > 10000) throw UsageError(format("--a-step %g gives more than 10000 amplitudes", step));
   const GeometrySpec spec = geometry_spec_from_options(opt);
   const WheelsetGeometry geometry = make_geometry(spec);

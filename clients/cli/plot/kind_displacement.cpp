@@ -9,8 +9,8 @@
 
 #include "cli/plot/plot_kind.hpp"
 #include "cli/plot/plot_options.hpp"
-#include "cli/profile_options.hpp"
 #include "cli/pose_ranges.hpp"
+#include "cli/profile_options.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
 
 namespace wrc::cli::plot {

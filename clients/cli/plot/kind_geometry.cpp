@@ -8,9 +8,10 @@
 
 #include "cli/plot/plot_kind.hpp"
 #include "cli/plot/plot_options.hpp"
-#include "cli/profile_options.hpp"
 #include "cli/pose_ranges.hpp"
+#include "cli/profile_options.hpp"
 #include "core/geometry/rigid_wheelset.hpp"
+#include "core/numerics/inclusive_range.hpp"
 
 namespace wrc::cli::plot {
 namespace {
@@ -35,7 +36,7 @@ int run_geometry(const std::vector<std::string>& args) {
   const double step = opt.number("--y-step", {1e-7, 0.05});
   const double yaw = opt.number("--yaw", kYawRange);
   if (!(y_to > y_from)) throw UsageError(format("--y-to %g is not above --y-from %g", y_to, y_from));
-  const long count = inclusive_step_count(y_from, y_to, step);
+  const long count = inclusive_range_count(y_from, y_to, step);
   if (count > 200000) throw UsageError(format("--y-step %g gives more than 200000 shifts", step));
   const GeometrySpec spec = geometry_spec_from_options(opt);
   const WheelsetGeometry geometry = make_geometry(spec);

@@ -424,11 +424,10 @@ std::array<WheelOutput, 2> WheelsetSimulation::wheel_outputs(const std::vector<d
     w.s_wheel = c.wheels[static_cast<size_t>(i)].s_wheel;
     w.contact_angle = c.wheels[static_cast<size_t>(i)].contact_angle;
     w.normal_force = equations_.normal_force(formulation_, y.data(), c, i, branches_);
-    // Rigid contact: the patches carry the constraint's multiplier (a spline transition shares it
-    // over two patches whose normal forces add up to it as vectors, not as magnitudes).
-    const WheelForces f = formulation_ == ContactFormulation::kRigid && w.normal_force > 0.0
-                              ? wheel_forces(c, i, w.normal_force)
-                              : wheel_forces(c, i);
+    // The wheel's normal force: rigid, the constraint's multiplier, which a spline transition
+    // shares over two patches (their normal forces add up to it as vectors, not as magnitudes);
+    // elastic, the patches' own sum, what wheel_forces() takes by default.
+    const WheelForces f = w.normal_force > 0.0 ? wheel_forces(c, i, w.normal_force) : wheel_forces(c, i);
     set_force_outputs(f, w.normal_force, i, w);
     if (forces) (*forces)[static_cast<size_t>(i)] = f;
   }

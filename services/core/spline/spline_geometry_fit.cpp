@@ -457,9 +457,11 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
         hi = std::min(box.y_max, own_hi + wheel.jumps[b].y_reach + kBranchMargin);
       }
       // intervals[0] intervals over the own stretch, and the continuations at the same spacing (a
-      // wider transition adds knots rather than coarsening the branch), at least two samples each.
+      // wider transition adds knots rather than coarsening the branch), at most twice intervals[0]
+      // (what fit_memory_bytes() assumes) and at least two samples each.
       const double own_span = std::max(own_hi - own_lo, 2.0 * options.sample_step_y);
-      const int wanted = static_cast<int>(std::ceil(options.intervals[0] * (hi - lo) / own_span - 1e-9));
+      const int wanted = std::min(2 * options.intervals[0],
+                                  static_cast<int>(std::ceil(options.intervals[0] * (hi - lo) / own_span - 1e-9)));
       const int max_intervals = std::max(1, static_cast<int>(std::floor((hi - lo) / (2.0 * options.sample_step_y))));
       const std::vector<double> y_breaks = sample_values(lo, hi, std::min(wanted, max_intervals) + 1);
       report.y_breakpoints.push_back(y_breaks);

@@ -25,6 +25,14 @@ void require_positive(double value, const char* where, const char* name, const c
   throw std::invalid_argument(msg.str());
 }
 
+void require_within(double value, const char* name, const char* unit, double low, double high) {
+  if (value >= low && value <= high) return;
+  std::ostringstream msg;
+  msg << "interpolation grid: " << name << " = " << value << " " << unit << " must be in [" << low << ", " << high
+      << "] " << unit;
+  throw std::invalid_argument(msg.str());
+}
+
 }  // namespace
 
 void InterpolationGrid::validate() const {
@@ -41,6 +49,8 @@ void InterpolationGrid::validate() const {
         << kMaxValidatedYaw << " rad of the contact geometry";
     throw std::invalid_argument(msg.str());
   }
+  require_within(transition, "transition", "m", 0.0, kMaxTransition);
+  require_within(transition_load, "transition_load", "N", kMinTransitionLoad, kMaxTransitionLoad);
 }
 
 void ContactModelOptions::validate() const {

@@ -6,11 +6,13 @@
 /// interpolated Hertzian model.
 
 #include "core/geometry/potential_points.hpp"
+#include "core/model_interface/jump_transition.hpp"
 
 namespace wrc {
 
 /// The interpolation configurations of the interpolated Hertzian model (MEDYNA style, on the rigid
-/// manifold): equally spaced nodes y_i in [-y_max, y_max] and yaw_k in [-yaw_max, yaw_max]; at each
+/// manifold): equally spaced nodes y_i in [-y_max, y_max] (around each jump of the common point,
+/// its band's two ends instead: ContactPointTable) and yaw_k in [-yaw_max, yaw_max]; at each
 /// (y_i, yaw_k) the rigid wheelset's roll phi_r and height, and roll_points roll nodes
 /// phi_r + delta_j with delta_j equally spaced in [-roll_band, roll_band] (an odd count, so that
 /// delta = 0, the rigid roll itself, is a node). Interpolated by cubic Hermite pieces in y and in
@@ -25,9 +27,19 @@ struct InterpolationGrid {
   double roll_max = 0.015;
   int yaw_points = 3;        ///< nodes in yaw [-], 2..9 (the Lagrange polynomial's degree + 1)
   double yaw_max = 0.010;    ///< half range in yaw [rad], > 0, <= kMaxValidatedYaw
+  /// Cap on the half-width, in the difference of the two points' touching heights, of the band
+  /// around a jump of the common point over which the table ramps from one point to the other
+  /// [m], in [0, kMaxTransition]; the half-width is the smaller of this and the Hertz approach at
+  /// transition_load, as the spline model's (core/model_interface/jump_transition.hpp). A jump
+  /// whose other branch folds away within that range (S1002/UIC60's centred jump), and every jump
+  /// when this is 0, is smoothed over one y cell (MEDYNA's table).
+  double transition = kDefaultTransition;
+  /// Normal load per wheel whose Hertz approach sets the bands [N], in [1, 1e6].
+  double transition_load = kDefaultTransitionLoad;
 
   /// Throws std::invalid_argument naming the first count out of its range (y_points 2..10000,
-  /// roll_points odd 3..9, yaw_points 2..9) or range that is not positive and finite.
+  /// roll_points odd 3..9, yaw_points 2..9), range that is not positive and finite, or transition
+  /// value outside its range.
   void validate() const;
 };
 

@@ -104,6 +104,19 @@ std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const Pat
   return patch_from_penetration(point, shape, delta, context);
 }
 
+void add_shared_patches(const ContactPatch& blended, double height_slope, const std::array<SharedPoint, 2>& parts,
+                        const PatchContext& context, ContactResult& result) {
+  for (const SharedPoint& part : parts) {
+    const double g_k = part.height_slope;
+    const double force =
+        part.share * blended.normal_force * std::sqrt((1.0 + g_k * g_k) / (1.0 + height_slope * height_slope));
+    if (!(force > 0.0)) continue;
+    ContactPatch p = patch_from_force(part.point, part.shape, force, context);
+    if (context.query.formulation == ContactFormulation::kElastic) p.penetration = blended.penetration;
+    result.patches.push_back(std::move(p));
+  }
+}
+
 double normal_penetration(const ContactPoint& point) { return -point.distance * std::cos(point.contact_angle); }
 
 PatchForces patch_forces(const ContactPatch& patch) {

@@ -5,6 +5,7 @@
 /// conformal-contact fallback), one complete ContactPatch (Hertz, creepages, FASTSIM) from a normal
 /// force or from a penetration, and the penetration implied by a vertical overlap.
 
+#include <array>
 #include <optional>
 
 #include "core/contact/fastsim.hpp"
@@ -60,6 +61,30 @@ std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const Pat
 /// inversion at the point's curvatures).
 std::optional<ContactPatch> one_point_patch(const ContactPoint& point, const PatchShape& shape,
                                             const PatchContext& context);
+
+/// One of the two points a wheel touches at within a jump's transition (the spline model's and
+/// the interpolated model's blend of two branches of the common point).
+struct SharedPoint {
+  ContactPoint point;
+  PatchShape shape;
+  double share = 0;        ///< its share of the blended contact's load [-], in [0, 1]
+  /// d z_touch / dy of its branch [-], or as well its normal's inclination n_y / n_z (their
+  /// squares, which is all the split uses, agree where the normal has no x part)
+  double height_slope = 0;
+};
+
+/// A wheel's contact within a jump's transition, where it touches at both points: the normal
+/// force of the blended contact (the wheel's load, or from the blended gap) shared as the smooth
+/// maximum shares the constraint's gradient, each part a Hertz patch of its own point and shape
+/// (blending the Hertz fields of a tread and a flange-root patch would make an ellipse neither
+/// has). Part k's normal is that of its branch's slope g_k, its force share_k N cos(gamma) /
+/// cos(gamma_k): the parts' vertical forces add up to the blend's, their lateral forces to
+/// N cos(gamma) (sum share_k g_k) = the blend's, where g = sum share_k g_k is the blend's slope.
+/// Elastic formulation: each part reports the blend's penetration.
+/// @param blended the blended contact's patch (its normal force N [N]).
+/// @param height_slope g, the blended contact's d z_touch / dy (or inclination) [-].
+void add_shared_patches(const ContactPatch& blended, double height_slope, const std::array<SharedPoint, 2>& parts,
+                        const PatchContext& context, ContactResult& result);
 
 /// The approach of the surfaces along the normal implied by the point's vertical overlap:
 /// delta = -distance cos(contact_angle) [m] (< 0: a gap). A vertical rigid approach d of the wheel

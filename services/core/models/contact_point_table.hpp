@@ -15,6 +15,7 @@
 #include "core/geometry/contact_point_fields.hpp"
 #include "core/geometry/wheelset_geometry.hpp"
 #include "core/model_interface/contact_model_options.hpp"
+#include "core/models/jump_transitions.hpp"
 
 namespace wrc {
 
@@ -24,6 +25,14 @@ struct TableContact {
   ContactPoint point;
   /// d point.distance / d(y, z, roll, yaw) of the interpolated distance [-, -, m/rad, m/rad].
   Eigen::Vector4d gap_gradient{0, 1, 0, 0};
+  /// Within a jump's band: the two points that carry the load, the lower-y branch's [0] and the
+  /// higher-y one's [1], each its share [-] and its normal's inclination n_y / n_z [-] (shares
+  /// add up to 1, the inclinations weighted by them to the blended point's, inclination);
+  /// false outside every band.
+  bool shared = false;
+  std::array<ContactPoint, 2> branch_points;
+  std::array<double, 2> branch_shares{0, 0}, branch_inclinations{0, 0};
+  double inclination = 0;  ///< the blended point's n_y / n_z [-] (set when shared)
 };
 
 /// Common-point parameters on the rigid manifold, interpolated.
@@ -31,6 +40,14 @@ struct TableContact {
 /// Nodes: y_i, yaw_k (InterpolationGrid); at each, the rigid roll phi_r and height z_r of the
 /// exact geometry (RigidWheelsetSolver: both wheels touch), and per wheel the exact common point at
 /// the roll nodes phi_r + delta_j (delta_j in [-roll_band, roll_band], delta = 0 a node).
+///
+/// The y nodes are the grid's equally spaced ones, except around each jump of a common point on
+/// the rigid manifold (at any yaw node): there the nodes inside the band in which an elastic
+/// contact loads both points (find_jump_transitions(), InterpolationGrid::transition) give way to
+/// two nodes at the band's ends, so that the table ramps from one point to the other over the
+/// physical width of the transition, not over one grid cell. At the band's ends each point is
+/// exact; across the band the gap is the cubic through both branches' heights and slopes, the
+/// same end data as the spline model's smooth maximum (docs/spline-model.md).
 ///
 /// The gap of a wheel is distance(y, z, roll, yaw) = z + D(y, roll - phi_r(y, yaw), yaw):
 ///  - phi_r(y, yaw): cubic Hermite in y with the exact slope d phi_r / dy at the nodes (implicit
@@ -47,18 +64,23 @@ struct TableContact {
 ///
 /// The other parameters (the contact point's fields, core/geometry/contact_point_fields.hpp; the
 /// normal renormalised): cubic Hermite with monotone (Fritsch-Carlson) slopes in y and in delta
-/// (held beyond the band), Lagrange in yaw; exact at the nodes, without overshoot at the common
-/// point's jumps, which are thereby smoothed over one y cell (Arnold, section 3). The
-/// interpolated point is always marked a local minimum.
+/// (held beyond the band), Lagrange in yaw; exact at the nodes. In the cell of a jump on the
+/// rigid manifold (delta = 0, at its yaw node) they are the two points' fields continued linearly
+/// from the cell's ends, f = (1 - w) f_a + w f_b, with the spline model's load share
+/// w = u^3 (10 - 15 u + 6 u^2), u = (1 + t) / 2, t the height difference over h taken linear in y
+/// on each side of the jump (-1 at the cell's lower end, 0 at the jump, 1 at the upper): the
+/// second point's share grows as the elastic contact's does, not as a cubic in y (Arnold,
+/// section 3, smooths a jump over one cell by the interpolation itself). The interpolated point is
+/// always marked a local minimum.
 class ContactPointTable {
  public:
-  /// Solves the rigid wheelset at every (y_i, yaw_k) and evaluates the exact common point of both
-  /// wheels at every roll node (y_points yaw_points rigid solves and 2 y_points yaw_points
-  /// roll_points potential-point scans).
-  /// @throws std::invalid_argument for an invalid grid; ContactConfigurationError naming the node
+  /// Solves the rigid wheelset at every (y_i, yaw_k), finds the jumps and their bands, and
+  /// evaluates the exact common point of both wheels at every roll node (about y_points yaw_points
+  /// rigid solves and 2 y_points yaw_points roll_points potential-point scans, and the walks past
+  /// each jump). Uses options.interp, options.search and options.lateral_curvature_floor.
+  /// @throws std::invalid_argument for invalid options; ContactConfigurationError naming the node
   ///         when a wheel has no contact there (y_max too large for the profiles).
-  ContactPointTable(const WheelsetGeometry& geometry, const InterpolationGrid& grid,
-                    const PotentialPointSearch& search = {});
+  explicit ContactPointTable(const WheelsetGeometry& geometry, const ContactModelOptions& options = {});
 
   /// The interpolated contact of one wheel at pose (x only shifts positions; the distance is
   /// affine in z with unit slope).
@@ -68,17 +90,25 @@ class ContactPointTable {
   /// evaluate(side, pose).point.
   ContactPoint at(WheelSide side, const WheelsetPose& pose) const { return evaluate(side, pose).point; }
 
-  /// The interpolated rigid roll phi_r(y, yaw) [rad] (both wheels' gaps vanish there).
+  /// The interpolated rigid roll phi_r(y, yaw) of the exact geometry [rad]: both wheels' gaps
+  /// vanish there outside the jumps' bands (inside, the blend lifts one wheel's touching height
+  /// by up to the band's half-width, and the table's rigid pose rolls by as much over the gauge).
   /// @throws OutsideModelError as evaluate().
   double rigid_roll(double y, double yaw) const;
-  /// The interpolated rigid height z_r(y, yaw) [m]: the z at which both gaps vanish at
-  /// roll = rigid_roll(y, yaw). @throws OutsideModelError as evaluate().
+  /// The interpolated rigid height z_r(y, yaw) [m]: the z at which the left wheel's gap vanishes
+  /// at roll = rigid_roll(y, yaw), and the right one's too outside the jumps' bands.
+  /// @throws OutsideModelError as evaluate().
   double rigid_height(double y, double yaw) const;
 
   const InterpolationGrid& grid() const { return grid_; }
-  /// Node coordinate i in y [m], roll offset j about the rigid roll [rad], yaw k [rad] (equally
-  /// spaced from -max to +max).
-  double y_node(int i) const { return node(i, grid_.y_points, grid_.y_max); }
+  /// Number of y nodes: grid().y_points, less those inside the jumps' bands, plus the bands' ends.
+  int y_node_count() const { return static_cast<int>(y_nodes_.size()); }
+  /// Node coordinate i in y [m] (increasing from -y_max to y_max), roll offset j about the rigid
+  /// roll [rad], yaw k [rad] (equally spaced from -max to +max).
+  double y_node(int i) const { return y_nodes_[static_cast<size_t>(i)]; }
+  /// The jumps of the common points on the rigid manifold at every yaw node, with their bands
+  /// (empty when InterpolationGrid::transition is 0).
+  const std::vector<JumpTransition>& jump_transitions() const { return transitions_; }
   double roll_offset(int j) const { return node(j, grid_.roll_points, grid_.roll_band); }
   double yaw_node(int k) const { return node(k, grid_.yaw_points, grid_.yaw_max); }
   /// The rigid roll at node (y_i, yaw_k) from the exact geometry [rad].
@@ -95,16 +125,43 @@ class ContactPointTable {
     return -half_range + 2.0 * half_range * i / (count - 1);
   }
   size_t index(int k, int i) const {
-    return static_cast<size_t>(k) * static_cast<size_t>(grid_.y_points) + static_cast<size_t>(i);
+    return static_cast<size_t>(k) * y_nodes_.size() + static_cast<size_t>(i);
   }
   // Offset of field f's value at node (k, j, i); its y slope follows at + kFields.
   size_t offset(int k, int j, int i) const {
     return ((static_cast<size_t>(k) * static_cast<size_t>(grid_.roll_points) + static_cast<size_t>(j)) *
-                static_cast<size_t>(grid_.y_points) +
+                y_nodes_.size() +
             static_cast<size_t>(i)) *
            (2 * kFields);
   }
+  // The y cell of y and the local coordinate t in [0, 1] in it.
+  void locate_y(double y, int& cell, double& t) const;
+  // A jump's band at one yaw node: its node range, the cell of the jump, and at every node of the
+  // range the other point on the manifold (kBandValues per node: the fields of the table, then the
+  // distance's y slope).
+  static constexpr int kBandValues = kFields + 1;
+  struct Band {
+    int yaw_node = 0, low = 0, high = 0, jump_cell = 0;
+    bool usable = false;  // the other point was found at every node
+    std::vector<double> other;
+  };
+  // The usable band of wheel side at yaw node k that covers cell (nullptr: none).
+  const Band* band_at(int k, WheelSide side, int cell) const;
+  // The manifold line's (delta = 0) values at y in cell of a band: f[kFields] and fy[2] (d/dy of
+  // the distance and of its roll derivative), from the two points' branches.
+  // branch[b] receives branch b's fields.
+  void blend_branches(const Band& band, const JumpTransition& jump, int k, WheelSide side, int cell, double y,
+                      double* f, double* fy, double (*branch)[kFields]) const;
+  // The two branches' points in c (TableContact::shared) from their fields' shifts off the
+  // blended ones, at the blend's distance shifted likewise [m].
+  void add_branches(const double (*branch_shift)[kFields], WheelSide side, const WheelsetPose& pose, double distance,
+                    const ContactPointFields& blended, TableContact& c) const;
   InterpolationGrid grid_;
+  std::vector<double> y_nodes_;
+  std::vector<JumpTransition> transitions_;
+  // Per transition: its yaw node, and its band.
+  std::vector<int> transition_yaw_node_;
+  std::vector<Band> bands_;
   // Per wheel, layout [yaw][roll][y][value 0..kFields-1, y slope 0..kFields-1].
   std::array<std::vector<double>, 2> values_;
   // Rigid roll and its exact y slope, layout [yaw][y][roll, slope].

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/models/interpolated_model.hpp"
 
+#include <array>
 #include <chrono>
 #include <limits>
 #include <stdexcept>
@@ -16,7 +17,7 @@ namespace {
 ContactPointTable timed_table(const WheelsetGeometry& geometry, const ContactModelOptions& options, double& seconds) {
   options.validate();
   const auto start = std::chrono::steady_clock::now();
-  ContactPointTable table(geometry, options.interp, options.search);
+  ContactPointTable table(geometry, options);
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return table;
 }
@@ -31,6 +32,15 @@ WheelConstraint InterpolatedModel::add_wheel_patches(WheelSide side, const Patch
                                                      ContactResult& result) const {
   const TableContact contact = table_.evaluate(side, context.query.pose);
   std::optional<ContactPatch> patch = one_point_patch(contact.point, context, options_.lateral_curvature_floor);
+  if (patch && contact.shared) {
+    // Within a jump's band the wheel touches at both points (add_shared_patches()).
+    std::array<SharedPoint, 2> parts;
+    for (size_t b = 0; b < 2; ++b)
+      parts[b] = {contact.branch_points[b], contact_shape(contact.branch_points[b], options_.lateral_curvature_floor),
+                  contact.branch_shares[b], contact.branch_inclinations[b]};
+    add_shared_patches(*patch, contact.inclination, parts, context, result);
+    patch.reset();
+  }
   if (patch) result.patches.push_back(std::move(*patch));
   // The interpolation is continuous: no jumps, no event. The gap gradient is the exact derivative
   // of the interpolated gap (C1), so the rigid-contact integrator's constraint and its gradient

@@ -2,6 +2,7 @@
 #include "core/models/spline_model.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -38,27 +39,15 @@ WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContex
     const ContactPoint point = splines_->contact_point(side, pose, e);
     std::optional<ContactPatch> patch = one_point_patch(point, splines_->patch_shape(e), context);
     if (patch && e.upper_share > 0.0 && e.upper_share < 1.0) {
-      // Within a transition the wheel touches at both branches' points: the normal force of the
-      // blended contact (the wheel's load, or from the blended gap) shared as the smooth maximum
-      // shares the constraint's gradient, each part a Hertz patch of its own point and shape
-      // (blending the Hertz fields of a tread and a flange-root patch would make an ellipse
-      // neither has; docs/spline-model.md).
-      // Each part's normal is that of its branch's slope g_k, and its force share_k N cos(gamma) /
-      // cos(gamma_k): the parts' vertical forces add up to the blend's, their lateral forces to
-      // N cos(gamma) (sum share_k g_k) = the blend's, since g = sum share_k g_k.
-      const double total = patch->normal_force;
-      const double g = e.z_gradient[0];
+      // Within a transition the wheel touches at both branches' points (add_shared_patches()).
+      std::array<SharedPoint, 2> parts;
       for (int k = 0; k < 2; ++k) {
         SplineEvaluation part = e;
         part.value = k == 0 ? e.lower_value : e.upper_value;
-        const double share = k == 0 ? 1.0 - e.upper_share : e.upper_share;
-        const double g_k = k == 0 ? e.lower_slope : e.upper_slope;
-        const double force = share * total * std::sqrt((1.0 + g_k * g_k) / (1.0 + g * g));
-        ContactPatch p = patch_from_force(splines_->contact_point(side, pose, part), splines_->patch_shape(part),
-                                          force, context);
-        if (context.query.formulation == ContactFormulation::kElastic) p.penetration = patch->penetration;
-        result.patches.push_back(std::move(p));
+        parts[k] = {splines_->contact_point(side, pose, part), splines_->patch_shape(part),
+                    k == 0 ? 1.0 - e.upper_share : e.upper_share, k == 0 ? e.lower_slope : e.upper_slope};
       }
+      add_shared_patches(*patch, e.z_gradient[0], parts, context, result);
       patch.reset();
     }
     if (patch) result.patches.push_back(std::move(*patch));

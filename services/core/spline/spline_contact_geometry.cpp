@@ -10,6 +10,7 @@
 
 #include "core/geometry/wheel_side.hpp"
 #include "core/identity/sha256.hpp"
+#include "core/model_interface/jump_transition.hpp"
 
 namespace wrc {
 namespace {
@@ -169,17 +170,13 @@ void SplineContactGeometry::evaluate(WheelSide side, const WheelsetPose& pose, S
     const int need = std::max(value_count, 1);
     w.branches[near].query(x.data(), need, va.data(), derivative_count, da);
     w.branches[near + 1].query(x.data(), need, vb.data(), derivative_count, db);
-    const double h = w.jumps[near].height_half_width;
-    const double diff_z = vb[kFieldZ] - va[kFieldZ];
-    const double u = std::clamp(0.5 * (1.0 + diff_z / h), 0.0, 1.0);
-    const double s = u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
-    const double s1 = 15.0 * u * u * (1.0 - u) * (1.0 - u) / h;  // dw/dd = w'(u) / (2 h)
+    const SmoothMaximum blend = smooth_maximum(va[kFieldZ], vb[kFieldZ], w.jumps[near].height_half_width);
+    const double s = blend.share;
+    const double s1 = blend.share_slope;  // dw/dd = w'(u) / (2 h)
     for (int j = 0; j < value_count; ++j)
       out.value[static_cast<size_t>(j)] = va[static_cast<size_t>(j)] + s * (vb[static_cast<size_t>(j)] - va[static_cast<size_t>(j)]);
     // z itself: the smooth maximum, z_a + h phi(d / h) (z_a or z_b outside the band).
-    const double phi = 2.0 * u * u * u * u * (2.5 + u * (-3.0 + u));
-    const double z = u >= 1.0 ? vb[kFieldZ] : va[kFieldZ] + h * phi;
-    if (value_count > kFieldZ) out.value[kFieldZ] = z;
+    if (value_count > kFieldZ) out.value[kFieldZ] = blend.value;
     if (s > 0.0 && s < 1.0) {
       out.upper_share = s;
       out.lower_value = va;
@@ -201,7 +198,7 @@ void SplineContactGeometry::evaluate(WheelSide side, const WheelsetPose& pose, S
         const double* a = da + 10 * f;
         const double* b = db + 10 * f;
         double* o = d + 10 * f;
-        o[0] = f == 0 ? z : a[0] + s * (b[0] - a[0]);
+        o[0] = f == 0 ? blend.value : a[0] + s * (b[0] - a[0]);
         // z (f = 0): no (f_b - f_a) term in its gradient, the curvature term in its Hessian; the
         // clearance (f = 1): the share's gradient term, its Hessian is not used (NaN).
         const double diff = f == 0 ? 0.0 : b[0] - a[0];

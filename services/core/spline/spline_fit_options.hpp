@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/geometry/potential_points.hpp"
+#include "core/model_interface/jump_transition.hpp"
 
 namespace wrc {
 
@@ -65,10 +66,10 @@ struct SplineFitOptions {
   /// which an elastic contact loads both points) and the height difference at which a branch
   /// ends (a fold) on the sample lines; elsewhere the model is that branch's fit alone. 0: one
   /// fit across the jumps, down-weighted within jump_band (the paper's form).
-  double transition = 1e-3;
+  double transition = kDefaultTransition;
   /// Normal load per wheel whose Hertz approach bounds the transition [N], in [1, 1e6]: the
   /// benchmark's Fz / 2.
-  double transition_load = 77357.5;
+  double transition_load = kDefaultTransitionLoad;
 
   /// Wheel profile slope angle [rad] that separates tread (and flange root) from the flange: the
   /// flange region is s below the first point, going from the taping line towards the flange,

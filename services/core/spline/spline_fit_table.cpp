@@ -2,6 +2,7 @@
 #include "core/spline/spline_fit_table.hpp"
 
 #include "core/geometry/wheelset_geometry.hpp"
+#include "core/model_interface/jump_transition.hpp"
 
 namespace wrc {
 
@@ -32,10 +33,10 @@ const std::vector<Parameter<SplineFitOptions>>& spline_fit_table() {
       member_parameter<O>({"transition", nullptr, "m",
                            "largest half-width of the blend between branch fits at a jump, in the difference of "
                            "their touching heights (0: one fit across the jumps)",
-                           kNumber, closed(0.0, 2e-3)}, &O::transition),
+                           kNumber, closed(0.0, kMaxTransition)}, &O::transition),
       member_parameter<O>({"transition_load", nullptr, "N",
                            "normal load per wheel whose Hertz approach sets the blend's half-width",
-                           kNumber, closed(1.0, 1e6)}, &O::transition_load),
+                           kNumber, closed(kMinTransitionLoad, kMaxTransitionLoad)}, &O::transition_load),
       member_parameter<O>({"flange_angle", nullptr, "rad", "profile slope angle that starts the flange region",
                            kNumber, {0.1, Bound::kOpen, 1.5, Bound::kOpen}}, &O::flange_angle),
       member_parameter<O>({"clearance_cap", "", "m", "cap of the fitted flange clearance", kNumber, kPositive},

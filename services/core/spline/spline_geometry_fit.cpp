@@ -14,9 +14,9 @@
 
 #include <Eigen/Dense>
 
-#include "core/contact/hertz.hpp"
 #include "core/model_interface/contact_model.hpp"
 #include "core/model_interface/contact_model_options.hpp"
+#include "core/model_interface/jump_transition.hpp"
 
 namespace wrc {
 namespace {
@@ -223,13 +223,10 @@ constexpr double kContinuationWeight = 0.1;
 // UIC60 differ by more than any Hertz approach the fit options allow.
 constexpr double kMaxContinuation = 3e-3;
 
-// The Hertz approach [m] of the contact described by a sample's fields under the normal load [N],
-// with the default material (ContactMaterial: G = 8.2e10 Pa, nu = 0.28).
+// The Hertz approach [m] of the contact described by a sample's fields under the normal load [N]
+// (sharing_approach()).
 double hertz_approach(const WheelSample& s, double normal_load) {
-  const ContactMaterial material;
-  return hertz_from_force(s.fields[kFieldHertzA], s.fields[kFieldHertzB],
-                          contact_modulus(material.shear_modulus, material.poisson_ratio), normal_load)
-      .penetration;
+  return sharing_approach(s.fields[kFieldHertzA], s.fields[kFieldHertzB], normal_load);
 }
 
 // What following one branch past one jump on one line found.

@@ -12,8 +12,9 @@
 namespace wrc::contactd {
 
 /// SHA-256 (64 hex digits) of model's precomputed data; empty for a model without any.
-/// "interp": ContactPointTable::data() (the grid's counts and half ranges, the rigid roll at every
-/// node, every tabulated value and slope of both wheels) as little-endian doubles
+/// "interp": ContactPointTable::data() (the grid's counts and half ranges, the transition
+/// options, the y nodes, the rigid roll at every node, every tabulated value and slope of both
+/// wheels, the jumps' bands and their continued points) as little-endian doubles
 /// (sha256_hex_of_doubles).
 /// "spline": SplineContactGeometry::data_hash() (spline_model_t.model_hash).
 std::string model_hash(const ContactModel& model);

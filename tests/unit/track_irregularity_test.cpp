@@ -305,6 +305,14 @@ TEST(TrackIrregularityFile, RoundTripUnitsAndErrorsNamingLineAndColumn) {
   expect_invalid([] { parse_track_irregularity("s [m],twist [m],alignment [m],vertical_level [m],cross_level [m],gauge [m]\n", "c.csv"); },
                  {"unknown column 'twist'"});
   expect_invalid([] { read_track_irregularity_file("/dev/zero"); }, {"/dev/zero: not a regular file"});
+  // Positions: up to 10 000 km the spline is built (samples 1 m apart at the far end; a double
+  // resolves them to 2e-9 m); beyond, a range error names the sample, not a singular system.
+  const TrackIrregularity far = parse_track_irregularity(
+      head + "9999996,0,1,0,0\n9999997,0,0,0,0\n9999998,0,0,0,0\n9999999,0,0,0,0\n10000000,0,0,0,0\n", "f.csv");
+  EXPECT_NEAR(far.at(9999996.0).vertical_level, 1e-3, 1e-12);
+  EXPECT_TRUE(std::isfinite(far.at(9999996.5).vertical_level));
+  expect_invalid([&] { parse_track_irregularity(head + "0,0,0,0,0\n1,0,0,0,0\n2,0,0,0,0\n1e15,0,0,0,0\n", "g.csv"); },
+                 {"g.csv:5:", "s = 1e+15 m is outside [-10000000, 10000000] m"});
 }
 
 // The generated channels carry the spectrum's variance over the band: over 4 km of track the

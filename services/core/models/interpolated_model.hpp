@@ -18,8 +18,10 @@ namespace wrc {
 /// OnePointModel does (same rigid and elastic rules, same curvature floor). The gap is the
 /// interpolated distance, C1, with its exact gradient; its rigid solution (both gaps 0) is the
 /// interpolated rigid wheelset, exact at the nodes. The interpolation is continuous in the
-/// configuration, so the jumps of the common point are smoothed over one y cell; at the nodes
-/// the model reproduces OnePointModel. A configuration outside the table throws
+/// configuration: a jump of the common point is smoothed over the band in which an elastic
+/// contact loads both points (a folded jump over one y cell), and within a band the wheel
+/// touches at both points, two patches (add_shared_patches()); away from the bands, at the
+/// nodes, the model reproduces OnePointModel. A configuration outside the table throws
 /// OutsideModelError naming the coordinate.
 class InterpolatedModel final : public HertzianContactModel {
  public:

@@ -42,6 +42,10 @@ TrackIrregularity::TrackIrregularity(std::vector<double> distances,
     if (!std::isfinite(s))
       throw IrregularitySampleError(i, "irregularities: sample " + std::to_string(i) + ": s = " + number_text(s) +
                                   " m is not a finite number");
+    if (!(std::fabs(s) <= kMaxIrregularityDistance))
+      throw IrregularitySampleError(i, "irregularities: sample " + std::to_string(i) + ": s = " + number_text(s) +
+                                           " m is outside [-" + number_text(kMaxIrregularityDistance) + ", " +
+                                           number_text(kMaxIrregularityDistance) + "] m");
     if (i > 0 && !(s - distances_[i - 1] >= kMinIrregularitySpacing))
       throw IrregularitySampleError(i, "irregularities: sample " + std::to_string(i) + ": s = " + number_text(s) +
                                   " m does not follow s = " + number_text(distances_[i - 1]) + " m by at least " +

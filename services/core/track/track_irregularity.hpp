@@ -33,6 +33,10 @@ inline constexpr double kMaxIrregularity = 0.03;
 /// Most samples a layout of irregularities may have [-]: 20 km at 1 m, 5 km at 0.25 m; the run
 /// command carries them on the bus (five doubles each) within its 1 MiB.
 inline constexpr std::size_t kMaxIrregularitySamples = 20000;
+/// Largest |s| of a sample [m]: 10 000 km, ten times the longest layout segment; at this distance
+/// a double still resolves the smallest spacing to 2e-9 m (farther out the spline's system loses
+/// its samples' differences and turns singular).
+inline constexpr double kMaxIrregularityDistance = 1e7;
 /// Smallest spacing of two samples [m] (a measuring trolley samples every 0.25 m or more).
 inline constexpr double kMinIrregularitySpacing = 1e-3;
 /// Degree of the spline between samples [-]: 7, C6 across the samples. The rails' rates enter the
@@ -82,7 +86,8 @@ class TrackIrregularity {
   /// No irregularities: every channel 0 everywhere.
   TrackIrregularity() = default;
   /// @param distances s of the samples [m], strictly increasing by at least
-  ///        kMinIrregularitySpacing, kMinIrregularitySamples to kMaxIrregularitySamples, finite.
+  ///        kMinIrregularitySpacing, kMinIrregularitySamples to kMaxIrregularitySamples, each
+  ///        |s| <= kMaxIrregularityDistance.
   /// @param channels each channel's samples [m], as many as distances, |value| <= kMaxIrregularity.
   /// @throws IrregularitySampleError naming the sample, channel and value that break a rule;
   ///         std::invalid_argument for a count out of range or channels of another length.

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "bus/auth/signed_publish.hpp"
+#include "bus/service/log_text.hpp"
 #include "bus/transport/clock.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
@@ -121,20 +122,15 @@ void DynamicsService::start(const run_command_t& command) {
       publish(bus::channel::kWheelsetState, m);
     });
     wall_start_ = bus::monotonic_seconds();
-    std::cerr << "wrc-dynamicsd: run " << run_id << " with " << request_.model
+    std::cerr << "wrc-dynamicsd: run " << bus::log_text(run_id) << " with " << request_.model
               << (request_.in_process ? " (in-process)" : "") << " to t = " << request_.spec.integrator.t_end
               << " s\n";
     simulation_->start();
   } catch (const std::exception& e) {
     simulation_.reset();
-    std::cerr << "wrc-dynamicsd: run " << command.run_id << " failed to start: " << e.what() << "\n";
-    run_status_t status{};
-    status.request_id = command.request_id;
-    status.run_id = command.run_id;
-    status.state = run_status_t::FAILED;
-    status.model = command.model;
-    status.message = e.what();
-    publish(bus::channel::kRunStatus, status);
+    std::cerr << "wrc-dynamicsd: run " << bus::log_text(command.run_id) << " failed to start: " << bus::log_text(e.what())
+              << "\n";
+    publish_refusal(command, e.what());
     run_summary_t summary{};
     summary.request_id = command.request_id;
     summary.run_id = command.run_id;
@@ -148,6 +144,16 @@ void DynamicsService::start(const run_command_t& command) {
   publish_status(true);
 }
 
+void DynamicsService::publish_refusal(const run_command_t& command, const std::string& reason) {
+  run_status_t status{};
+  status.request_id = command.request_id;
+  status.run_id = command.run_id;
+  status.state = run_status_t::FAILED;
+  status.model = command.model;
+  status.message = reason;
+  publish(bus::channel::kRunStatus, status);
+}
+
 void DynamicsService::apply_select() {
   const contact_select_t select = *pending_select_;
   pending_select_.reset();
@@ -159,7 +165,7 @@ void DynamicsService::apply_select() {
       const std::string missing = missing_service_reason(monitor_, select.model, select.instance, geometry_key_);
       if (!missing.empty()) {
         status_message_ = "swap to " + select.model + " refused, keeping " + simulation_->model() + ": " + missing;
-        std::cerr << "wrc-dynamicsd: " << status_message_ << "\n";
+        std::cerr << "wrc-dynamicsd: " << bus::log_text(status_message_) << "\n";
         publish_status(true);
         return;
       }
@@ -178,8 +184,9 @@ void DynamicsService::finish() {
   summary_ = summary;
   publish(bus::channel::kRunSummary, *summary_);
   const RunCounters c = simulation_->counters();
-  std::cerr << "wrc-dynamicsd: run " << request_.run_id << " ended at t = " << simulation_->time() << " s ("
-            << simulation_->message() << ") in " << wall_time_ << " s, " << c.steps << " steps, " << c.restarts
+  const std::string why = simulation_->message().empty() ? "" : " (" + bus::log_text(simulation_->message()) + ")";
+  std::cerr << "wrc-dynamicsd: run " << bus::log_text(request_.run_id) << " ended at t = " << simulation_->time()
+            << " s" << why << " in " << wall_time_ << " s, " << c.steps << " steps, " << c.restarts
             << " restarts, " << c.contact_queries << " contact queries\n";
   publish_status(true);
 }
@@ -258,9 +265,15 @@ void DynamicsService::poll(double budget) {
         finish();
       }
       start(command);
-    } else if (command.command == run_command_t::STOP && running() &&
-               (command.run_id.empty() || command.run_id == request_.run_id)) {
-      simulation_->request_stop();
+    } else if (command.command == run_command_t::STOP) {
+      if (running() && (command.run_id.empty() || command.run_id == request_.run_id)) simulation_->request_stop();
+    } else {
+      // Neither: the running run (if any) goes on; the sender learns why nothing happened.
+      const std::string reason = "command = " + std::to_string(command.command) + " is neither START (" +
+                                 std::to_string(run_command_t::START) + ") nor STOP (" +
+                                 std::to_string(run_command_t::STOP) + "); ignored";
+      std::cerr << "wrc-dynamicsd: " << reason << "\n";
+      publish_refusal(command, reason);
     }
   }
   if (pending_select_) apply_select();

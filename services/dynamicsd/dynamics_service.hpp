@@ -53,6 +53,8 @@ class DynamicsService {
   void on_command(const run_command_t& command);
   void on_select(const contact_select_t& select, std::uint64_t sender);
   void start(const run_command_t& command);
+  /// A FAILED run_status_t for command's request, with reason as its message.
+  void publish_refusal(const run_command_t& command, const std::string& reason);
   void finish();
   std::shared_ptr<ContactEvaluator> make_contact(const std::string& model);
   void apply_select();

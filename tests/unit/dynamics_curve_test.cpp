@@ -112,7 +112,10 @@ TEST(TrackLayoutFile, RoundTripAndErrorsNamingFileSegmentAndKey) {
       {"t.json", "length: duplicate key"});
   expect_invalid(
       [] { parse_track_layout("{\"segments\": [{\"type\": \"straight\", \"length\": 5, \"radius\": 6}]}", "t.json"); },
-      {"t.json: segments[0]: radius: not a key of a straight"});
+      {"t.json: segments[0]: radius: a key of a curve, not a key of a straight"});
+  expect_invalid(
+      [] { parse_track_layout("{\"segments\": [{\"type\": \"straight\", \"length\": 5, \"bank\": 6}]}", "t.json"); },
+      {"t.json: segments[0]: bank: not a key of a straight"});
   expect_invalid([] { parse_track_layout("{\"segments\": [{\"type\": \"straight\", \"length\": 1e999}]}", "t.json"); },
                  {"t.json"});
   expect_invalid(

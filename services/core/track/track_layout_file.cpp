@@ -86,7 +86,12 @@ TrackLayout parse_track_layout(const std::string& json_text, const std::string& 
     }
     for (const auto& [key, value] : item.items()) {
       (void)value;
-      if (!known.count(key)) throw std::invalid_argument(where + ": " + key + ": not a key of a " + type);
+      if (known.count(key)) continue;
+      // A key of a curve on a straight or a transition (whose curvature and cant come from its
+      // neighbours) is named as such.
+      const bool curve_key = key == "radius" || key == "direction" || key == "cant";
+      throw std::invalid_argument(where + ": " + key + ": " + (curve_key ? "a key of a curve, " : "") + "not a key of a " +
+                                  type);
     }
     s.length = number(item, "length", where);
     segments.push_back(s);

@@ -71,13 +71,15 @@ run_command_t to_message(const RunRequest& r) {
 }
 
 RunRequest from_message(const run_command_t& m) {
+  if (m.in_process != 0 && m.in_process != 1)
+    throw std::invalid_argument("in_process = " + std::to_string(m.in_process) + " is neither 0 nor 1");
   RunRequest r;
   r.run_id = m.run_id;
   r.model = m.model;
   contact_model_entry(r.model);  // throws for an unknown model, listing the known ones
   r.instance = m.instance;
   r.geometry = from_message(m.track);
-  r.in_process = m.in_process != 0;
+  r.in_process = m.in_process == 1;
   from_message_fields(run_request_table(), m, run_command_fields(), r);
   r.spec.track = layout_from_fields(m);
   r.spec.irregularity = irregularity_from_fields(m);

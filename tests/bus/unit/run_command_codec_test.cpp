@@ -50,6 +50,19 @@ TEST(RunCommandCodec, EachSwapLimitHasItsOwnMessage) {
   EXPECT_EQ(error_of(mismatch), "num_scheduled_swaps = 3 does not match the swap lists (3 times, 2 models)");
 }
 
+// in_process is a flag: 0 or 1, anything else refused naming the value (it used to mean true).
+TEST(RunCommandCodec, InProcessIsZeroOrOne) {
+  run_command_t command = command_with_swaps(0);
+  command.in_process = 1;
+  EXPECT_TRUE(from_message(command).in_process);
+  command.in_process = 0;
+  EXPECT_FALSE(from_message(command).in_process);
+  command.in_process = 5;
+  EXPECT_EQ(error_of(command), "in_process = 5 is neither 0 nor 1");
+  command.in_process = -1;
+  EXPECT_EQ(error_of(command), "in_process = -1 is neither 0 nor 1");
+}
+
 // A layout of every kind of segment crosses run_command_t (and its LCM encoding) exactly: the same
 // curvature and cant at every sampled distance; straight track crosses as no segments.
 TEST(RunCommandCodec, TheTrackLayoutCrossesExactly) {

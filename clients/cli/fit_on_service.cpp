@@ -12,6 +12,7 @@
 
 #include "bus/auth/signed_publish.hpp"
 #include "bus/process/shutdown_signal.hpp"
+#include "bus/service/heartbeat_monitor.hpp"
 #include "bus/transport/channels.hpp"
 #include "bus/transport/clock.hpp"
 #include "bus/transport/guarded_subscription.hpp"
@@ -32,6 +33,15 @@ namespace {
 
 constexpr double kResendPeriod = 2.0;     // [s] re-send the request while nothing at all is heard of it
 constexpr std::size_t kKeyDigits = 12;    // hex digits of a key shown
+constexpr int kMaxServiceLosses = 1;      // services lost with the request before the client gives up
+
+// Whether the process signing with nonce sends heartbeats: 1 yes, 0 it stopped (or was
+// forgotten), -1 never heard of (its first heartbeat may still be on its way).
+int fitter_alive(const bus::HeartbeatMonitor& monitor, std::uint64_t nonce, double now, bool seen_before) {
+  for (const bus::ServiceStatus& s : monitor.services(now))
+    if (s.nonce == nonce) return s.alive ? 1 : 0;
+  return seen_before ? 0 : -1;
+}
 
 }  // namespace
 
@@ -57,11 +67,15 @@ int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOp
   std::optional<spline_model_t> answer;
   std::string failure;
   bool heard = false;
+  std::uint64_t fitter = 0;  // signing nonce of the wrc-geometryd that answered with progress
+  bool fitter_seen = false;  // its heartbeats were heard since
   bus::GuardedSubscription<progress_t> progress(
       *session.lcm, session.names.name(bus::channel::kProgress), "fit progress",
-      [&](const progress_t& p, const bus::ReceivedMessage&) {
+      [&](const progress_t& p, const bus::ReceivedMessage& info) {
         if (p.request_id != request_id) return;
         heard = true;
+        if (info.origin.nonce != fitter) fitter_seen = false;
+        fitter = info.origin.nonce;
         if (p.message.rfind("rejected: ", 0) == 0 || p.message.rfind("failed: ", 0) == 0) failure = p.message;
         else bar.update(p.done, p.total, p.message);
       });
@@ -81,11 +95,27 @@ int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOp
             << key.substr(0, kKeyDigits) << (request.recompute ? ", recompute" : "") << ")\n";
   const double deadline = bus::monotonic_seconds() + wait;
   double next_send = 0.0;
+  int losses = 0;  // wrc-geometryd processes that stopped while they had this request
   while (!answer && failure.empty()) {
     const double now = bus::monotonic_seconds();
     if (bus::ShutdownSignal::requested()) throw std::runtime_error("interrupted while waiting for the model");
     if (now > deadline)
       throw std::runtime_error("no spline model from wrc-geometryd within --wait " + shortest_number_text(wait) + " s");
+    // The service that took the request stopped before answering (its heartbeats ceased): the
+    // next one is asked once more; a second loss ends the wait, since the request itself may be
+    // what stops them.
+    const int alive = heard && fitter != 0 ? fitter_alive(session.monitor, fitter, now, fitter_seen) : -1;
+    fitter_seen = fitter_seen || alive == 1;
+    if (alive == 0) {
+      if (++losses > kMaxServiceLosses)
+        throw std::runtime_error("wrc-geometryd stopped twice while it had this request; not sending it again (see "
+                                 "the service's log: the fit itself may be what stops it)");
+      std::cerr << "fit: wrc-geometryd stopped while it had this request; sending it once more\n";
+      heard = false;
+      fitter = 0;
+      fitter_seen = false;
+      next_send = now;
+    }
     // A request lost on the way is sent again; once the service answers with progress, it is working on it.
     if (!heard && now >= next_send) {
       stamper.stamp(request.header);

@@ -111,10 +111,18 @@ void GeometryService::on_request(const geometry_request_t& request, const bus::R
   const Waiter waiter{request.request_id, request.reply_channel.empty() ? model_channel_ : request.reply_channel, start};
   const std::string short_key = key.substr(0, kKeyPrefix);
 
+  const auto refuse_busy = [&] {
+    ++counters_.busy;
+    reject(channel, request.request_id, true, "busy (" + std::to_string(queued()) + " queued)");
+  };
   if (auto it = job_of_key_.find(key); it != job_of_key_.end()) {
     Job& job = jobs_.at(it->second);
     for (const Waiter& w : job.waiters) {
       if (w.request_id == waiter.request_id && w.reply_channel == waiter.reply_channel) return;  // re-sent: waits already
+    }
+    if (job.waiters.size() >= kMaxWaitersPerFit) {
+      refuse_busy();
+      return;
     }
     job.waiters.push_back(waiter);
     ++counters_.joined;
@@ -143,13 +151,61 @@ void GeometryService::on_request(const geometry_request_t& request, const bus::R
     if (!unusable.empty()) std::cerr << sender_ << ": cache file of model " << short_key << " unusable, refitting: " << unusable << "\n";
   }
 
+  const std::uint64_t owner = info.origin.nonce;
+  if (queued() >= kMaxQueuedFits || queued_of(owner) >= kMaxQueuedFitsPerSender) {
+    refuse_busy();
+    return;
+  }
   const std::int64_t id = next_job_++;
-  Job job{key, task_name(spec, options), {waiter}, "", 0, 0};
+  Job job;
+  job.model_key = key;
+  job.task = task_name(spec, options);
+  job.waiters = {waiter};
+  job.owner = owner;
+  job.spec = std::move(spec);
+  job.options = std::move(options);
   std::cerr << sender_ << ": request " << request.request_id << ": fitting model " << short_key << " (" << job.task
             << (request.recompute ? ", recompute" : "") << ")\n";
+  const std::string task = job.task;
+  const std::size_t before = queued() + (running_job_ != 0 ? 1 : 0);
   jobs_.emplace(id, std::move(job));
   job_of_key_.emplace(key, id);
-  worker_.submit(FitJob{id, std::move(spec), std::move(options)});
+  publish_progress(request.request_id, task, 0, 0, 0.0, -1.0,
+                   "queued (" + std::to_string(before) + (before == 1 ? " fit" : " fits") + " before it)");
+  start_next();
+}
+
+std::size_t GeometryService::queued() const {
+  std::size_t n = 0;
+  for (const auto& [id, job] : jobs_) n += !job.started;
+  return n;
+}
+
+std::size_t GeometryService::queued_of(std::uint64_t owner) const {
+  std::size_t n = 0;
+  for (const auto& [id, job] : jobs_) n += !job.started && job.owner == owner;
+  return n;
+}
+
+void GeometryService::start_next() {
+  if (running_job_ != 0) return;
+  // The owner after last_owner_ in nonce order (cyclic), then its lowest job id.
+  Job* next = nullptr;
+  std::int64_t next_id = 0;
+  for (int pass = 0; pass < 2 && !next; ++pass) {
+    for (auto& [id, job] : jobs_) {
+      if (job.started || (pass == 0 && job.owner <= last_owner_)) continue;
+      if (!next || job.owner < next->owner) {
+        next = &job;
+        next_id = id;
+      }
+    }
+  }
+  if (!next) return;
+  next->started = true;
+  running_job_ = next_id;
+  last_owner_ = next->owner;
+  worker_.submit(FitJob{next_id, next->spec, next->options});
 }
 
 void GeometryService::poll() {
@@ -168,6 +224,7 @@ void GeometryService::poll() {
       finish(event);
     }
   }
+  start_next();
 }
 
 std::string GeometryService::activity() const {
@@ -175,14 +232,16 @@ std::string GeometryService::activity() const {
     return "idle; " + std::to_string(counters_.fits) + " models fitted, " + std::to_string(counters_.from_cache) +
            " answered from the cache";
   }
-  // Jobs run in the order of their ids: the first one is the worker's.
-  const Job& running = jobs_.begin()->second;
-  std::string out = running.task;
-  if (running.total > 0) {
-    out += " (" + (running.stage.empty() ? std::string("started") : running.stage) + ", " +
-           std::to_string(100 * running.done / running.total) + " %)";
+  std::string out = "starting a fit";
+  if (const auto it = jobs_.find(running_job_); it != jobs_.end()) {
+    const Job& running = it->second;
+    out = running.task;
+    if (running.total > 0) {
+      out += " (" + (running.stage.empty() ? std::string("started") : running.stage) + ", " +
+             std::to_string(100 * running.done / running.total) + " %)";
+    }
   }
-  if (jobs_.size() > 1) out += ", " + std::to_string(jobs_.size() - 1) + " more queued";
+  if (const std::size_t n = queued(); n > 0) out += ", " + std::to_string(n) + " more queued";
   return out;
 }
 
@@ -191,6 +250,7 @@ void GeometryService::finish(const FitEvent& event) {
   if (it == jobs_.end()) return;
   Job job = std::move(it->second);
   jobs_.erase(it);
+  if (event.job == running_job_) running_job_ = 0;
   job_of_key_.erase(job.model_key);
   const std::string short_key = job.model_key.substr(0, kKeyPrefix);
   std::string outcome = "done";

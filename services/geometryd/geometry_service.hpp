@@ -12,7 +12,10 @@
 /// done = total = 0, message "rejected: <reason>". A valid one is answered from
 /// <cache>/<model_key>.splinemodel unless recompute is set or the file is missing or unusable;
 /// otherwise a fit is queued, unless one of the same model_key is queued or running already:
-/// then the request waits for that one. Every fitted model is stored in the cache; the answer
+/// then the request waits for that one. The queue is bounded (kMaxQueuedFits in all,
+/// kMaxQueuedFitsPerSender per sender, kMaxWaitersPerFit per fit): beyond, the request is
+/// answered at once with "rejected: busy (N queued)"; a queued request hears "queued (N before
+/// it)" at once. Fits start one at a time, in turn across senders. Every fitted model is stored in the cache; the answer
 /// (request_id echoed, header stamped) is inline when small enough, else the file reference,
 /// on reply_channel or SPLINE_MODEL, after the references to the two geometry tables (the exact
 /// samples of each wheel, stored next to the model) on GEOMETRY_TABLE. Progress of a fit: at most every 0.2 s, then "done" or
@@ -39,6 +42,17 @@
 
 namespace wrc::geometryd {
 
+/// Fits waiting (queued, not yet started) in all [-]: beyond it a request for a new model is
+/// answered at once with "rejected: busy (N queued)". At about a second a default fit, the last
+/// waits half a minute.
+inline constexpr std::size_t kMaxQueuedFits = 32;
+/// Fits waiting of one sender (the signing nonce of its requests) [-]: one sender cannot fill
+/// the queue, and the fits start in turn across senders (round robin), so another sender's
+/// request waits for at most the fit running and one of every other sender's.
+inline constexpr std::size_t kMaxQueuedFitsPerSender = 4;
+/// Requests waiting for one fit [-] (a request for a model queued or fitting joins it).
+inline constexpr std::size_t kMaxWaitersPerFit = 64;
+
 /// Counters of the service since start.
 struct GeometryCounters {
   std::int64_t received = 0;    ///< messages seen on GEOMETRY_REQUEST
@@ -50,6 +64,7 @@ struct GeometryCounters {
   std::int64_t failed_requests = 0;  ///< requests answered "failed: " (heartbeat: rejected, a handler failure)
   std::int64_t dropped = 0;     ///< messages the guarded receive path dropped (unsigned, undecodable, ...)
   std::int64_t refused = 0;     ///< requests ignored while not serving (a duplicate instance)
+  std::int64_t busy = 0;        ///< requests answered "rejected: busy" (a bound of the queue reached)
 };
 
 class GeometryService : public bus::LoadSource {
@@ -93,6 +108,10 @@ class GeometryService : public bus::LoadSource {
     std::vector<Waiter> waiters;
     std::string stage;       // last progress report: stage, units done of total (0 = none yet)
     long done = 0, total = 0;
+    std::uint64_t owner = 0;  // signing nonce of the request that queued it
+    bool started = false;     // handed to the worker
+    GeometrySpec spec;        // what the worker gets when it starts
+    SplineFitOptions options;
   };
 
   void on_request(const geometry_request_t& request, const bus::ReceivedMessage& info);
@@ -105,6 +124,12 @@ class GeometryService : public bus::LoadSource {
   /// Publishes the table references on GEOMETRY_TABLE with waiter's request id.
   void publish_tables(std::vector<geometry_table_t> tables, const Waiter& waiter);
   void finish(const FitEvent& event);
+  /// Fits queued, not started: in all, and of owner.
+  std::size_t queued() const;
+  std::size_t queued_of(std::uint64_t owner) const;
+  /// When no fit runs, hands the next queued one to the worker: the lowest job id of the owner
+  /// after the last one started (in nonce order, cyclic).
+  void start_next();
 
   lcm::LCM& lcm_;
   const std::string request_channel_;
@@ -122,6 +147,8 @@ class GeometryService : public bus::LoadSource {
   std::map<std::int64_t, Job> jobs_;                 // by job id
   std::map<std::string, std::int64_t> job_of_key_;   // model_key -> job id
   std::int64_t next_job_ = 1;
+  std::int64_t running_job_ = 0;  // the job the worker fits (0: none)
+  std::uint64_t last_owner_ = 0;  // owner of the job started last
   GeometryCounters counters_;
   bus::LatencyWindow latencies_;  // request to answer [s]
   double busy_time_ = 0.0;        // [s] handler and publishing time since take_busy_time()

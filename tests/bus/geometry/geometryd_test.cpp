@@ -27,6 +27,7 @@
 #include "core/identity/geometry_key.hpp"
 #include "core/spline/wheel_sample.hpp"
 #include "small_fit_options.hpp"
+#include "geometryd/geometry_service.hpp"
 #include "geometryd/geometryd_options.hpp"
 #include "geometryd/model_cache.hpp"
 #include "protocol/geometry/fit_options_codec.hpp"
@@ -317,13 +318,15 @@ TEST_F(GeometryServiceTest, HeartbeatsKeepComingDuringADefaultFit) {
 
   const auto& progress = progress_[21];
   ASSERT_TRUE(wait_progress(21, "done", 2.0));
-  ASSERT_GE(progress.size(), 3u);
+  ASSERT_GE(progress.size(), 4u);
+  // At once: queued, with nothing before it; then the worker's reports, at most every 0.2 s.
+  EXPECT_EQ(progress[0].message, "queued (0 fits before it)");
   bool estimated = false;
   for (std::size_t i = 0; i + 1 < progress.size(); ++i) {
     const auto& p = progress[i];
     EXPECT_EQ(p.task, "spline fit S1002/UIC60 10x2x2");
     EXPECT_LE(p.done, p.total);
-    if (i > 0) {
+    if (i > 1) {
       EXPECT_GE(p.elapsed - progress[i - 1].elapsed, 0.19) << "progress too often";
     }
     estimated = estimated || p.remaining > 0.0;
@@ -371,6 +374,84 @@ TEST_F(GeometryServiceTest, FitCommandPrecomputesOnTheService) {
   // The service answers first and logs after, so its line may follow the command's exit.
   EXPECT_TRUE(handle_until([&] { return read_text(log_).find("from the cache") != std::string::npos; }, 5.0))
       << read_text(log_);
+}
+
+// A flood of distinct valid requests from one sender (the test, about 1000 per second, each for a
+// model of its own) while `wrc fit --service` asks for another model: the flooder holds at most
+// kMaxQueuedFitsPerSender fits queued and hears "rejected: busy (N queued)" beyond, with N never
+// above kMaxQueuedFits; the fits start in turn across senders, so the command's fit follows the
+// one running and is answered within its --wait of 15 s (printed: how long it took, how many
+// flood requests were sent, queued and refused).
+TEST_F(GeometryServiceTest, AFloodFromOneSenderLeavesAnotherSendersFitWithinItsWait) {
+  start_service();
+  const std::string out = temp_path("fit.log");
+  ChildProcess fit(WRC_CLI_PATH, {"fit", "--service", "--knots", "5x2x2", "--wait", "15"}, out);
+  std::int64_t sent = 0;
+  const double t0 = monotonic_seconds();
+  int status = -1;
+  bool ended = false;
+  while (!ended && monotonic_seconds() < t0 + 30.0) {
+    for (int k = 0; k < 20; ++k) {
+      SplineFitOptions o = small_fit_options();
+      o.sample_step_y = 5e-4 * (1.0 + 1e-6 * static_cast<double>(++sent));  // a model of its own
+      send(make_request(100000 + sent, o));
+    }
+    handle_until([] { return false; }, 0.02);
+    ended = fit.wait(0.0, &status);
+  }
+  const double took = monotonic_seconds() - t0;
+  ASSERT_TRUE(ended) << read_text(out) << read_text(log_);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(out) << read_text(log_).substr(0, 4000);
+  EXPECT_NE(read_text(out).find("spline model "), std::string::npos) << read_text(out);
+  std::size_t queued = 0, busy = 0, largest = 0;
+  for (const auto& [id, list] : progress_) {
+    if (id <= 100000 || list.empty()) continue;
+    const std::string first = list.front().message;
+    if (first.rfind("queued (", 0) == 0) ++queued;
+    if (first.rfind("rejected: busy (", 0) == 0) {
+      ++busy;
+      largest = std::max<std::size_t>(largest, std::stoul(first.substr(16)));
+    }
+  }
+  std::printf("[ measured ] the other sender's fit answered after %.2f s while %lld flood requests were sent: %zu "
+              "queued, %zu refused busy (at most %zu queued)\n",
+              took, static_cast<long long>(sent), queued, busy, largest);
+  EXPECT_GT(sent, 1000);
+  EXPECT_GT(busy, 0u);
+  EXPECT_LE(largest, geometryd::kMaxQueuedFits);
+  EXPECT_TRUE(wait_ready("geometryd", "t", 5.0)) << read_text(log_);
+}
+
+// A client whose request was being fitted when wrc-geometryd stopped (killed here) sends it to
+// the next service once, and when that one stops too, gives up saying why: the second service
+// gets the request once, and no third is asked.
+TEST_F(GeometryServiceTest, AClientSendsARequestToTheNextServiceOnceAndSaysWhyItGaveUp) {
+  start_service();
+  const std::string out = temp_path("fit.log");
+  // 12.5 times the default's samples in y: a fit of several seconds.
+  ChildProcess fit(WRC_CLI_PATH, {"fit", "--service", "--sample-step", "4e-5", "--wait", "60"}, out);
+  ASSERT_TRUE(handle_until([&] { return read_text(log_).find(": fitting model ") != std::string::npos; }, 20.0))
+      << read_text(out) << read_text(log_);
+  service_->signal(SIGKILL);
+  ASSERT_TRUE(service_->wait(5.0));
+  ASSERT_TRUE(handle_until([&] { return read_text(out).find("sending it once more") != std::string::npos; }, 10.0))
+      << read_text(out);
+  log_ = temp_path("geometryd-2.log");
+  start_service();
+  ASSERT_TRUE(handle_until([&] { return read_text(log_).find(": fitting model ") != std::string::npos; }, 10.0))
+      << read_text(out) << read_text(log_);
+  service_->signal(SIGKILL);
+  ASSERT_TRUE(service_->wait(5.0));
+  int status = -1;
+  ASSERT_TRUE(fit.wait(10.0, &status)) << read_text(out);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << status;
+  const std::string text = read_text(out);
+  EXPECT_NE(text.find("wrc-geometryd stopped twice while it had this request; not sending it again"),
+            std::string::npos)
+      << text;
+  const std::string second = read_text(log_);
+  const auto at = second.find(": fitting model ");
+  EXPECT_EQ(second.find(": fitting model ", at + 1), std::string::npos) << second;
 }
 
 // SIGTERM during a fit: a DRAINING heartbeat and a clean exit, without waiting for the fit. The

@@ -4,15 +4,39 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <iostream>
 #include <tuple>
 
 #include "bus/auth/bus_auth.hpp"
+#include "bus/service/log_text.hpp"
 
 namespace wrc::bus {
 
+namespace {
+// Nonces followed at most (the monitor's table holds as many processes).
+constexpr std::size_t kMaxFollowedNonces = HeartbeatMonitor::kMaxEntries;
+}  // namespace
+
 DuplicateInstanceGuard::DuplicateInstanceGuard(lcm::LCM& lcm, const std::string& heartbeat_channel,
                                                const HeartbeatPublisher& self)
-    : monitor_(lcm, heartbeat_channel), self_(self) {}
+    : monitor_(lcm, heartbeat_channel), self_(self) {
+  monitor_.set_observer([claims = claims_, impostors = impostors_, &self](const ServiceStatus& s) {
+    if (s.last.model != self.identity().model || s.last.instance != self.identity().instance) return;
+    if (s.nonce == bus_auth().nonce() || impostors->count(s.nonce)) return;
+    const std::pair<std::int32_t, std::int64_t> claim{s.last.pid, s.last.started_utime};
+    auto [it, fresh] = claims->first.emplace(s.nonce, claim);
+    const bool names_this_process = s.last.pid == static_cast<std::int32_t>(::getpid());
+    if ((!fresh && it->second != claim) || names_this_process) {
+      if (impostors->size() < kMaxFollowedNonces) impostors->insert(s.nonce);
+      std::cerr << self.identity().program << "/" << self.identity().instance << ": ignoring heartbeats of "
+                << log_text(s.last.header.sender) << " (pid " << s.last.pid << "): "
+                << (names_this_process ? "they name this process's pid under another sender identity"
+                                       : "they claim another pid or start than its first heartbeat")
+                << "\n";
+    }
+    if (claims->first.size() > kMaxFollowedNonces) claims->first.erase(claims->first.begin());
+  });
+}
 
 std::optional<ServiceStatus> DuplicateInstanceGuard::older_holder(double now) const {
   const std::uint64_t own_nonce = bus_auth().nonce();
@@ -22,6 +46,7 @@ std::optional<ServiceStatus> DuplicateInstanceGuard::older_holder(double now) co
   // this runs four times a period.
   for (const ServiceStatus& s : monitor_.processes(self_.identity().model, self_.identity().instance, now)) {
     if (!s.alive || s.nonce == own_nonce || s.last.state == wrc::heartbeat_t::DRAINING) continue;
+    if (impostors_->count(s.nonce)) continue;  // claims that are not its own
     const auto other = std::make_tuple(s.last.started_utime, static_cast<std::int64_t>(s.last.pid), s.nonce);
     if (other < own && (!oldest || s.last.started_utime < oldest->last.started_utime)) oldest = s;
   }

@@ -7,11 +7,25 @@
 /// (state DUPLICATE, state_reason) and its log, and serves once the older one is gone. Both
 /// decide from the same two heartbeats, so they agree. The service loop (bus/service/service_loop.hpp)
 /// runs it for every service.
+///
+/// What counts as another process is its signing nonce (the sender identity of its messages'
+/// authentication trailer), followed as the launcher follows its children: the pid and start
+/// time a nonce first claims are its identity, and a nonce whose heartbeats later claim another
+/// pid or start is no instance (its claims are not its own). A heartbeat under another nonce
+/// that claims this process's own pid is a claim about this process, not another instance (two
+/// processes with one pid and one name would need two hosts that chose the same pid): neither
+/// makes a service stand down. A bus-key holder can still forge an older instance of another
+/// pid; that one stands a service down until its heartbeats stop (docs/bus-security.md).
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <utility>
 
 #include "bus/service/heartbeat_monitor.hpp"
 #include "bus/service/heartbeat_publisher.hpp"
@@ -30,7 +44,17 @@ class DuplicateInstanceGuard {
   /// One line on why this process refuses to serve, naming holder's program, pid and start.
   std::string refusal(const ServiceStatus& holder) const;
 
+  /// Nonces ignored so far because their claims were not their own [-].
+  std::size_t impostors() const { return impostors_->size(); }
+
  private:
+  // The (pid, started_utime) each nonce of this name first claimed, and the nonces that later
+  // claimed another or named this process's pid (shared with the monitor's observer).
+  struct Claims {
+    std::map<std::uint64_t, std::pair<std::int32_t, std::int64_t>> first;
+  };
+  std::shared_ptr<Claims> claims_ = std::make_shared<Claims>();
+  std::shared_ptr<std::set<std::uint64_t>> impostors_ = std::make_shared<std::set<std::uint64_t>>();
   HeartbeatMonitor monitor_;
   const HeartbeatPublisher& self_;
 };

@@ -297,5 +297,46 @@ TEST_F(HardeningTest, DuplicateInstanceRefusesToServe) {
   EXPECT_TRUE(handle_until([&] { return read_text(log).find("the older holder of the name is gone; serving") != std::string::npos; }, 1.0)) << read_text(log);
 }
 
+// A bus-key holder's heartbeat that names a live wrc-pingd's own pid and instance with a start a
+// minute earlier (signed, but with the sender identity of this test, not the service's) makes
+// it ignore that sender, not stand down: it stays READY throughout, says in its log whose
+// heartbeats it ignores and why, and answers a ping once.
+TEST_F(HardeningTest, ASpoofedOlderHeartbeatNamingTheServicesPidDoesNotStandItDown) {
+  const std::string log = temp_path("victim.log");
+  auto victim = start_pingd("v", kPeriod, log);
+  ASSERT_TRUE(wait_ready("pingd", "v", 5.0));
+  const auto own = monitor_->find("pingd", "v", monotonic_seconds());
+  ASSERT_TRUE(own.has_value());
+  const std::uint64_t victim_nonce = own->nonce;
+  wrc::heartbeat_t forged = own->last;
+  forged.started_utime -= 60000000;  // a minute older
+  bool stood_down = false;
+  const double end = monotonic_seconds() + 8 * kPeriod;
+  while (monotonic_seconds() < end) {
+    publish_signed(*lcm_, names_.name(channel::kHeartbeat), forged);
+    handle_until([] { return false; }, 0.5 * kPeriod);
+    for (const ServiceStatus& s : monitor_->processes("pingd", "v", monotonic_seconds()))
+      stood_down = stood_down || (s.nonce == victim_nonce && s.last.state != wrc::heartbeat_t::READY);
+  }
+  EXPECT_FALSE(stood_down) << read_text(log);
+  const std::string text = read_text(log);
+  EXPECT_EQ(text.find("refusing to serve"), std::string::npos) << text;
+  EXPECT_NE(text.find("ignoring heartbeats of wrc-pingd/v:" + std::to_string(victim->pid()) + " (pid " +
+                      std::to_string(victim->pid()) + "): they name this process's pid under another sender identity"),
+            std::string::npos)
+      << text;
+  const std::string reply_channel = names_.name(channel::kPingReply, "spoof-test");
+  ArrivalCounter replies;
+  auto* sub = lcm_->subscribe(regex_escape(reply_channel), &ArrivalCounter::on, &replies);
+  wrc::ping_request_t req{};
+  req.request_id = 6;
+  req.reply_channel = reply_channel;
+  req.instance = "v";
+  publish_signed(*lcm_, names_.name(channel::kPing), req);
+  handle_until([] { return false; }, 0.5);
+  EXPECT_EQ(replies.count, 1);
+  lcm_->unsubscribe(sub);
+}
+
 }  // namespace
 }  // namespace wrc::bus::test

@@ -13,12 +13,22 @@
 #include <vector>
 
 #include "bus/auth/bus_auth.hpp"
+#include "bus/transport/string_limits.hpp"
 
 namespace wrc::bus {
 
-/// Signs the encoding of message under this process's key into bytes (cleared first).
+/// Signs the encoding of message under this process's key into bytes (cleared first). A free-text
+/// string over its limit (bus/transport/string_limits.hpp) is sent cut to it.
+/// @throws std::invalid_argument naming the field when an identifier is over its limit.
 template <class Message>
 void encode_signed(const std::string& channel, const Message& message, std::vector<std::uint8_t>& bytes) {
+  if (string_limit_violation(message)) {
+    Message cut = message;
+    if (const auto why = clip_text(cut))
+      throw std::invalid_argument(std::string("sending a ") + Message::getTypeName() + " on " + channel + ": " + *why);
+    encode_signed(channel, cut, bytes);
+    return;
+  }
   const int size = message.getEncodedSize();
   bytes.resize(static_cast<std::size_t>(size));
   if (message.encode(bytes.data(), 0, size) != size) {

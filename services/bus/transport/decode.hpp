@@ -20,6 +20,7 @@
 
 #include "bus/transport/allocation_budget.hpp"
 #include "bus/transport/drop_counters.hpp"
+#include "bus/transport/string_limits.hpp"
 
 namespace wrc::bus {
 
@@ -37,8 +38,8 @@ struct DecodeFailure {
   std::string reason;  ///< one line naming the type and what was wrong
 };
 
-/// Decodes data[0..size) into msg. Returns nothing on success (every byte used, and the message
-/// encodes back to exactly these bytes), else why not.
+/// Decodes data[0..size) into msg. Returns nothing on success (every byte used, every string
+/// within its limit, and the message encodes back to exactly these bytes), else why not.
 template <class Message>
 std::optional<DecodeFailure> decode_bytes(const void* data, std::size_t size, Message& msg) {
   const std::string type = Message::getTypeName();
@@ -78,6 +79,11 @@ std::optional<DecodeFailure> decode_bytes(const void* data, std::size_t size, Me
     return DecodeFailure{DropKind::kTrailingBytes, type + " has " + std::to_string(length - used) +
                                                        " trailing bytes (" + std::to_string(size) + " received, " +
                                                        std::to_string(used) + " decoded)"};
+  }
+  // Every string within its limit (bus/transport/string_limits.hpp), before anything else reads it.
+  if (auto why = string_limit_violation(msg)) {
+    msg = Message();
+    return DecodeFailure{DropKind::kUndecodable, type + " (" + std::to_string(size) + " bytes): " + *why};
   }
   // What was read must encode back to the same bytes: LCM's decoder keeps a NUL byte inside a
   // string, but its encoder stops at the first NUL (strlen), so such a message could be read but

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -40,6 +41,28 @@ long peak_rss_kib(pid_t pid) {
   return -1;
 }
 
+struct ArrivalCounter {
+  int count = 0;
+  void on(const lcm::ReceiveBuffer*, const std::string&) { ++count; }
+};
+
+// The replies within 0.5 s to one ping addressed to instance (request_id, replies on the ping
+// reply channel of client).
+int ping_replies(lcm::LCM& lcm, const ChannelNames& names, const std::function<bool(double)>& wait,
+                 const std::string& instance, std::int64_t request_id, const std::string& client) {
+  const std::string reply_channel = names.name(channel::kPingReply, client);
+  ArrivalCounter replies;
+  auto* sub = lcm.subscribe(regex_escape(reply_channel), &ArrivalCounter::on, &replies);
+  wrc::ping_request_t req{};
+  req.request_id = request_id;
+  req.reply_channel = reply_channel;
+  req.instance = instance;
+  publish_signed(lcm, names.name(channel::kPing), req);
+  wait(0.5);
+  lcm.unsubscribe(sub);
+  return replies.count;
+}
+
 class HardeningTest : public BusTest {
  protected:
   std::unique_ptr<ChildProcess> start_contactd(const std::string& instance, const std::string& log) {
@@ -48,6 +71,10 @@ class HardeningTest : public BusTest {
         std::vector<std::string>{"--model", "onepoint", "--instance", instance, "--heartbeat-period",
                                  std::to_string(kPeriod)},
         log);
+  }
+  int ping_replies(const std::string& instance, std::int64_t request_id, const std::string& client) {
+    return wrc::bus::test::ping_replies(*lcm_, names_, [this](double t) { return handle_until([] { return false; }, t); },
+                                        instance, request_id, client);
   }
   /// One query addressed to instance (empty: any); true when a reply came (5 attempts).
   bool answered(const std::string& instance, double timeout = 0.5) {
@@ -73,11 +100,6 @@ class HardeningTest : public BusTest {
 };
 
 /// Counts the messages arriving on one channel, whatever they are.
-struct ArrivalCounter {
-  int count = 0;
-  void on(const lcm::ReceiveBuffer*, const std::string&) { ++count; }
-};
-
 // Every malformed message of the issue, signed (it reaches the decoder) and unsigned, three
 // times: the service keeps its pid, answers, stays below 100 MB, and counts the drops; `wrc
 // status` listening meanwhile exits normally.
@@ -274,17 +296,7 @@ TEST_F(HardeningTest, DuplicateInstanceRefusesToServe) {
       << refused->last.state_reason;
   EXPECT_NE(read_text(log).find("refusing to serve: instance 'd'"), std::string::npos) << read_text(log);
 
-  const std::string reply_channel = names_.name(channel::kPingReply, "dup-test");
-  ArrivalCounter replies;
-  auto* sub = lcm_->subscribe(regex_escape(reply_channel), &ArrivalCounter::on, &replies);
-  wrc::ping_request_t req{};
-  req.request_id = 5;
-  req.reply_channel = reply_channel;
-  req.instance = "d";
-  publish_signed(*lcm_, names_.name(channel::kPing), req);
-  handle_until([] { return false; }, 0.5);
-  EXPECT_EQ(replies.count, 1) << "answered by both processes";
-  lcm_->unsubscribe(sub);
+  EXPECT_EQ(ping_replies("d", 5, "dup-test"), 1) << "answered by both processes";
 
   int rc = -1;
   const std::string out = run_command(std::string(WRC_CLI_PATH) + " status --duration 0.6", &rc);
@@ -325,17 +337,7 @@ TEST_F(HardeningTest, ASpoofedOlderHeartbeatNamingTheServicesPidDoesNotStandItDo
                       std::to_string(victim->pid()) + "): they name this process's pid under another sender identity"),
             std::string::npos)
       << text;
-  const std::string reply_channel = names_.name(channel::kPingReply, "spoof-test");
-  ArrivalCounter replies;
-  auto* sub = lcm_->subscribe(regex_escape(reply_channel), &ArrivalCounter::on, &replies);
-  wrc::ping_request_t req{};
-  req.request_id = 6;
-  req.reply_channel = reply_channel;
-  req.instance = "v";
-  publish_signed(*lcm_, names_.name(channel::kPing), req);
-  handle_until([] { return false; }, 0.5);
-  EXPECT_EQ(replies.count, 1);
-  lcm_->unsubscribe(sub);
+  EXPECT_EQ(ping_replies("v", 6, "spoof-test"), 1);
 }
 
 }  // namespace

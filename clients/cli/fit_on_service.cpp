@@ -35,12 +35,15 @@ constexpr double kResendPeriod = 2.0;     // [s] re-send the request while nothi
 constexpr std::size_t kKeyDigits = 12;    // hex digits of a key shown
 constexpr int kMaxServiceLosses = 1;      // services lost with the request before the client gives up
 
-// Whether the process signing with nonce sends heartbeats: 1 yes, 0 it stopped (or was
-// forgotten), -1 never heard of (its first heartbeat may still be on its way).
-int fitter_alive(const bus::HeartbeatMonitor& monitor, std::uint64_t nonce, double now, bool seen_before) {
+// What is known of the process signing with a nonce, from its heartbeats.
+enum class Fitter { kUnheard, kAlive, kStopped };
+
+// kStopped when its heartbeats ceased (or it was forgotten after being seen); kUnheard while its
+// first heartbeat may still be on its way.
+Fitter fitter_state(const bus::HeartbeatMonitor& monitor, std::uint64_t nonce, double now, bool seen_before) {
   for (const bus::ServiceStatus& s : monitor.services(now))
-    if (s.nonce == nonce) return s.alive ? 1 : 0;
-  return seen_before ? 0 : -1;
+    if (s.nonce == nonce) return s.alive ? Fitter::kAlive : Fitter::kStopped;
+  return seen_before ? Fitter::kStopped : Fitter::kUnheard;
 }
 
 }  // namespace
@@ -104,9 +107,10 @@ int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOp
     // The service that took the request stopped before answering (its heartbeats ceased): the
     // next one is asked once more; a second loss ends the wait, since the request itself may be
     // what stops them.
-    const int alive = heard && fitter != 0 ? fitter_alive(session.monitor, fitter, now, fitter_seen) : -1;
-    fitter_seen = fitter_seen || alive == 1;
-    if (alive == 0) {
+    const Fitter state =
+        heard && fitter != 0 ? fitter_state(session.monitor, fitter, now, fitter_seen) : Fitter::kUnheard;
+    fitter_seen = fitter_seen || state == Fitter::kAlive;
+    if (state == Fitter::kStopped) {
       if (++losses > kMaxServiceLosses)
         throw std::runtime_error("wrc-geometryd stopped twice while it had this request; not sending it again (see "
                                  "the service's log: the fit itself may be what stops it)");

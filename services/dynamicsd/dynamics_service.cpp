@@ -13,6 +13,7 @@
 #include "core/models/contact_model_factory.hpp"
 #include "core/spline/spline_geometry_fit.hpp"
 #include "dynamicsd/bus_contact.hpp"
+#include "dynamicsd/run_end_log.hpp"
 #include "wrc/integrator_stats_t.hpp"
 #include "wrc/progress_t.hpp"
 #include "wrc/run_status_t.hpp"
@@ -183,11 +184,9 @@ void DynamicsService::finish() {
   if (summary.message.empty()) summary.message = status_message_;
   summary_ = summary;
   publish(bus::channel::kRunSummary, *summary_);
-  const RunCounters c = simulation_->counters();
-  const std::string why = simulation_->message().empty() ? "" : " (" + bus::log_text(simulation_->message()) + ")";
-  std::cerr << "wrc-dynamicsd: run " << bus::log_text(request_.run_id) << " ended at t = " << simulation_->time()
-            << " s" << why << " in " << wall_time_ << " s, " << c.steps << " steps, " << c.restarts
-            << " restarts, " << c.contact_queries << " contact queries\n";
+  std::cerr << run_end_log_line(request_.run_id, simulation_->time(), simulation_->message(), wall_time_,
+                                simulation_->counters())
+            << "\n";
   publish_status(true);
 }
 

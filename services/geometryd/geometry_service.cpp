@@ -152,7 +152,8 @@ void GeometryService::on_request(const geometry_request_t& request, const bus::R
   }
 
   const std::uint64_t owner = info.origin.nonce;
-  if (queued() >= kMaxQueuedFits || queued_of(owner) >= kMaxQueuedFitsPerSender) {
+  const std::size_t waiting = queued();  // jobs_ holds at most kMaxQueuedFits + 1 fits: walks are short
+  if (waiting >= kMaxQueuedFits || queued_of(owner) >= kMaxQueuedFitsPerSender) {
     refuse_busy();
     return;
   }
@@ -167,7 +168,7 @@ void GeometryService::on_request(const geometry_request_t& request, const bus::R
   std::cerr << sender_ << ": request " << request.request_id << ": fitting model " << short_key << " (" << job.task
             << (request.recompute ? ", recompute" : "") << ")\n";
   const std::string task = job.task;
-  const std::size_t before = queued() + (running_job_ != 0 ? 1 : 0);
+  const std::size_t before = waiting + (running_job_ != 0 ? 1 : 0);
   jobs_.emplace(id, std::move(job));
   job_of_key_.emplace(key, id);
   publish_progress(request.request_id, task, 0, 0, 0.0, -1.0,

@@ -30,6 +30,11 @@ void visit_all(const char* field, std::vector<std::string>& values, std::size_t 
 
 }  // namespace
 
+std::string over_limit_text(const char* field, std::size_t size, std::size_t limit) {
+  return std::string(field) + " is " + std::to_string(size) + " bytes, longer than its limit of " +
+         std::to_string(limit);
+}
+
 void visit_strings(wrc::contact_query_t& m, const StringVisitor& f) {
   visit_header(m.header, f);
   f("client_id", m.client_id, kMaxNameBytes, kId);

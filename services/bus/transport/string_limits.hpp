@@ -67,6 +67,10 @@ void visit_strings(wrc::run_summary_t& m, const StringVisitor& f);
 void visit_strings(wrc::spline_model_t& m, const StringVisitor& f);
 void visit_strings(wrc::wheelset_state_t& m, const StringVisitor& f);
 
+/// "<field> is <size> bytes, longer than its limit of <limit>": the words of every string-limit
+/// violation, received or about to be sent (size and limit [B]).
+std::string over_limit_text(const char* field, std::size_t size, std::size_t limit);
+
 /// The first string of m over its limit, as "<field> is N bytes, longer than its limit of L";
 /// nothing when every string is within its limit.
 template <class Message>
@@ -74,9 +78,7 @@ std::optional<std::string> string_limit_violation(const Message& m) {
   std::optional<std::string> why;
   // The visitor only reads here.
   visit_strings(const_cast<Message&>(m), [&](const char* field, std::string& value, std::size_t limit, StringKind) {
-    if (!why && value.size() > limit)
-      why = std::string(field) + " is " + std::to_string(value.size()) + " bytes, longer than its limit of " +
-            std::to_string(limit);
+    if (!why && value.size() > limit) why = over_limit_text(field, value.size(), limit);
   });
   return why;
 }
@@ -92,8 +94,7 @@ std::optional<std::string> clip_text(Message& m) {
       value.resize(limit - 3);
       value += "...";
     } else if (!why) {
-      why = std::string(field) + " is " + std::to_string(value.size()) + " bytes, longer than its limit of " +
-            std::to_string(limit);
+      why = over_limit_text(field, value.size(), limit);
     }
   });
   return why;

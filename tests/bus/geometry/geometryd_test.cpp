@@ -454,6 +454,20 @@ TEST_F(GeometryServiceTest, AClientSendsARequestToTheNextServiceOnceAndSaysWhyIt
   EXPECT_EQ(second.find(": fitting model ", at + 1), std::string::npos) << second;
 }
 
+// A fit that outlasts --wait: the command gives up after its wait, and says so with the wait as
+// typed ("--wait 1 s", not "1.000000 s"). The fit asks for 2.5 times the default's samples in y
+// and 7.7 times in roll and yaw (a default fit samples for about 1 s here: this one for about 20 s).
+TEST_F(GeometryServiceTest, AFitOutlastingItsWaitIsGivenUpNamingTheWait) {
+  start_service();
+  const std::string out = temp_path("fit.log");
+  ChildProcess fit(WRC_CLI_PATH, {"fit", "--service", "--sample-step", "4e-5", "--samples", "25x25", "--wait", "1"}, out);
+  int status = -1;
+  ASSERT_TRUE(fit.wait(30.0, &status)) << read_text(out);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << status;
+  const std::string text = read_text(out);
+  EXPECT_NE(text.find("no spline model from wrc-geometryd within --wait 1 s"), std::string::npos) << text;
+}
+
 // SIGTERM during a fit: a DRAINING heartbeat and a clean exit, without waiting for the fit. The
 // fit asked for samples 12.5 times more finely in y than the default (whose fit alone takes about
 // 0.7 s here), so it runs for several seconds; the service must be gone within a deadline of 5 s

@@ -27,17 +27,12 @@
 #include "core/dynamics/run_parameter_table.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
 #include "core/models/contact_model_factory.hpp"
-#include "core/sweep/sweep_table.hpp"
+#include "core/numerics/number_text.hpp"
+#include "cli/sweep/sweep_table.hpp"
 #include "options/parameter_options.hpp"
 
 namespace wrc::cli {
 namespace {
-
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", v);
-  return text;
-}
 
 // The integrator settings a hunting run takes from the command line (t_end and the output period
 // are the run's own).
@@ -47,18 +42,18 @@ bool is_integrator_option(const std::string& key) {
 
 std::vector<std::string> csv_row(const std::string& branch, const HuntingRun& r, double wall) {
   return {branch,
-          number(r.speed),
+          number_text(r.speed),
           hunting_state_name(r.state),
-          number(r.cycle.amplitude),
-          number(r.cycle.mean),
-          number(r.yaw_amplitude),
-          number(r.cycle.frequency()),
-          number(r.cycle.growth),
-          number(r.largest_contact_angle),
+          number_text(r.cycle.amplitude),
+          number_text(r.cycle.mean),
+          number_text(r.yaw_amplitude),
+          number_text(r.cycle.frequency()),
+          number_text(r.cycle.growth),
+          number_text(r.largest_contact_angle),
           r.flange_contact ? "1" : "0",
-          number(r.start.y),
-          number(r.simulated_time),
-          number(wall),
+          number_text(r.start.y),
+          number_text(r.simulated_time),
+          number_text(wall),
           r.message};
 }
 
@@ -69,20 +64,20 @@ int run_bifurcation(const std::vector<std::string>& args) {
       {"--speeds", true, "speeds FROM:TO:STEP [m/s]; the ramp-down starts at the highest", "30:90:5"},
       {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
       {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
-      {"--disturbance", true, "y0 of the centred branch's runs [m]", number(defaults.small_disturbance.y)},
+      {"--disturbance", true, "y0 of the centred branch's runs [m]", number_text(defaults.small_disturbance.y)},
       {"--start-amplitude", true, "y0 of the ramp-down's first run, at the highest speed [m]",
-       number(defaults.large_disturbance.y)},
-      {"--settle-time", true, "simulated time before a run is first judged [s]", number(defaults.run.settle_time)},
-      {"--window", true, "the cycles are measured over the last window [s]", number(defaults.run.window)},
-      {"--max-time", true, "longest run [s]", number(defaults.run.max_time)},
+       number_text(defaults.large_disturbance.y)},
+      {"--settle-time", true, "simulated time before a run is first judged [s]", number_text(defaults.run.settle_time)},
+      {"--window", true, "the cycles are measured over the last window [s]", number_text(defaults.run.window)},
+      {"--max-time", true, "longest run [s]", number_text(defaults.run.max_time)},
       {"--growth-tolerance", true, "|growth - 1| per cycle of a converged cycle [-]",
-       number(defaults.run.growth_tolerance)},
+       number_text(defaults.run.growth_tolerance)},
       {"--centred-amplitude", true, "amplitude below which the wheelset is centred [m]",
-       number(defaults.run.centred_amplitude)},
+       number_text(defaults.run.centred_amplitude)},
       {"--speed-tolerance", true, "bracket of the nonlinear critical speed at the end [m/s]",
-       number(defaults.speed_tolerance)},
+       number_text(defaults.speed_tolerance)},
       {"--persisting-amplitude", true, "a cycle persists only with at least this amplitude [m] (0: any)",
-       number(defaults.persisting_amplitude)},
+       number_text(defaults.persisting_amplitude)},
       {"--unstable", false, "estimate the unstable cycle where the centred state and a cycle are both stable "
        "(bisection on y0, 6 runs of 2 s per speed)", ""},
       {"--out", true, "every run (CSV, units in the header)", "bifurcation.csv"},

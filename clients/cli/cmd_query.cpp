@@ -110,7 +110,6 @@ double touching_height(const WheelsetGeometry& geometry, double y, double roll, 
 
 // ---- output --------------------------------------------------------------------------------------
 
-std::string number(double v) { return number_text(v, 10); }
 
 void print_patches(const wrc::contact_reply_t& reply, const std::string& format) {
   // Full precision for csv (machine reading), six significant digits for the aligned table.
@@ -280,7 +279,7 @@ int run_query(const std::vector<std::string>& args) {
     service = pick_service(session.monitor, model, key, started ? context.instance : "", true);
     if (started)
       std::cerr << "query: " << model << " service " << context.instance << " READY after "
-                << number(bus::monotonic_seconds() - t0) << " s\n";
+                << number_text(bus::monotonic_seconds() - t0) << " s\n";
   }
   query.instance = service->last.instance;
 
@@ -319,11 +318,11 @@ int run_query(const std::vector<std::string>& args) {
   if (!result) {
     throw std::runtime_error("no reply from " + model + " instance " + query.instance +
                              (wanted.empty() ? " (nor from any other READY instance)" : "") + " after " +
-                             std::to_string(result.attempts) + " attempts of " + number(policy.timeout) + " s");
+                             std::to_string(result.attempts) + " attempts of " + number_text(policy.timeout) + " s");
   }
   const wrc::contact_reply_t& reply = *result.reply;
   std::cerr << "query: " << model << " instance " << reply.instance << " answered in "
-            << number(result.round_trip * 1e3) << " ms (compute " << number(reply.compute_time * 1e3) << " ms, "
+            << number_text(result.round_trip * 1e3) << " ms (compute " << number_text(reply.compute_time * 1e3) << " ms, "
             << result.attempts << " attempt" << (result.attempts > 1 ? "s" : "") << ")\n";
   if (reply.status != wrc::contact_reply_t::OK) {
     std::cerr << "query: " << protocol::contact_status_name(reply.status) << ": " << reply.message << "\n";

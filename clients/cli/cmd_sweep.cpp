@@ -2,7 +2,7 @@
 // wrc sweep: a grid of runs (any keys of the run parameter table, profiles, models, ...) run in
 // processes of their own on this machine's cores, or as a Slurm job array, into one CSV with a
 // row per run (cli/sweep/: the definition, the runs, the work directory, local and Slurm;
-// core/sweep/: the grid and the CSV).
+// cli/sweep/: the grid and the CSV).
 
 #include <algorithm>
 #include <chrono>

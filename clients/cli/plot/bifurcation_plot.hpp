@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "cli/plot/gnuplot_job.hpp"
-#include "core/sweep/sweep_table.hpp"
+#include "cli/sweep/sweep_table.hpp"
 
 namespace wrc::cli::plot {
 

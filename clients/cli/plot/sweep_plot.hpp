@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli/plot/gnuplot_job.hpp"
-#include "core/sweep/sweep_table.hpp"
+#include "cli/sweep/sweep_table.hpp"
 
 namespace wrc::cli::plot {
 

@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/sweep/sweep_grid.hpp"
+#include "cli/sweep/sweep_grid.hpp"
 #include "protocol/run/run_command_codec.hpp"
 
 namespace wrc::cli {

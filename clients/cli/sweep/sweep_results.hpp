@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "cli/sweep/sweep_definition.hpp"
-#include "core/sweep/sweep_table.hpp"
+#include "cli/sweep/sweep_table.hpp"
 
 namespace wrc::cli {
 

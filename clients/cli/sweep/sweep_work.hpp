@@ -13,7 +13,7 @@
 #include <string>
 
 #include "cli/sweep/sweep_definition.hpp"
-#include "core/sweep/sweep_table.hpp"
+#include "cli/sweep/sweep_table.hpp"
 
 namespace wrc::cli {
 

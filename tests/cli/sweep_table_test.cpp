@@ -9,7 +9,7 @@
 #include <unistd.h>
 #include <fstream>
 
-#include "core/sweep/sweep_table.hpp"
+#include "cli/sweep/sweep_table.hpp"
 #include "unit/expect_invalid.hpp"
 
 namespace wrc::sweep {

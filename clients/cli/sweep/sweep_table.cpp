@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "core/sweep/sweep_table.hpp"
+#include "cli/sweep/sweep_table.hpp"
 
 #include <algorithm>
 #include <cstdio>

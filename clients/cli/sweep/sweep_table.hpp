@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "core/sweep/sweep_grid.hpp"
+#include "cli/sweep/sweep_grid.hpp"
 
 namespace wrc::sweep {
 

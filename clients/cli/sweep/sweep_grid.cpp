@@ -1,41 +1,22 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "core/sweep/sweep_grid.hpp"
+#include "cli/sweep/sweep_grid.hpp"
 
-#include <charconv>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/numerics/inclusive_range.hpp"
+#include "core/numerics/number_text.hpp"
 
 namespace wrc::sweep {
 namespace {
 
-// The whole of text as a finite number, or false.
-bool read_number(const std::string& text, double& value) {
-  if (text.empty()) return false;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  return ec == std::errc() && ptr == end && std::isfinite(value);
-}
-
-// The shortest text that reads back as value.
-std::string shortest_text(double value) {
-  char buffer[64];
-  const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  if (ec != std::errc()) throw std::logic_error("sweep grid: a number does not fit its text");
-  return std::string(buffer, ptr);
-}
-
 // value rounded to 12 significant digits (a range's steps add rounding errors of about 1e-16).
 double rounded(double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.12g", value);
-  double out = 0.0;
-  read_number(buffer, out);
+  const double out = *finite_number(number_text(value, 12));
   return out == 0.0 ? 0.0 : out;  // no "-0"
 }
 
@@ -45,8 +26,14 @@ bool split_range(const std::string& item, double& from, double& to, double& step
   if (first == std::string::npos) return false;
   const auto second = item.find(':', first + 1);
   if (second == std::string::npos || item.find(':', second + 1) != std::string::npos) return false;
-  return read_number(item.substr(0, first), from) && read_number(item.substr(first + 1, second - first - 1), to) &&
-         read_number(item.substr(second + 1), step);
+  const std::optional<double> a = finite_number(item.substr(0, first));
+  const std::optional<double> b = finite_number(item.substr(first + 1, second - first - 1));
+  const std::optional<double> c = finite_number(item.substr(second + 1));
+  if (!a || !b || !c) return false;
+  from = *a;
+  to = *b;
+  step = *c;
+  return true;
 }
 
 }  // namespace
@@ -54,10 +41,10 @@ bool split_range(const std::string& item, double& from, double& to, double& step
 std::vector<std::string> range_values(double from, double to, double step) {
   const long count = inclusive_range_count(from, to, step);
   if (static_cast<std::size_t>(count) > kMaxAxisValues)
-    throw std::invalid_argument("range " + shortest_text(from) + ":" + shortest_text(to) + ":" + shortest_text(step) +
+    throw std::invalid_argument("range " + shortest_number_text(from) + ":" + shortest_number_text(to) + ":" + shortest_number_text(step) +
                                 ": more than " + std::to_string(kMaxAxisValues) + " values");
   std::vector<std::string> values;
-  for (const double v : inclusive_range(from, to, step)) values.push_back(shortest_text(rounded(v)));
+  for (const double v : inclusive_range(from, to, step)) values.push_back(shortest_number_text(rounded(v)));
   return values;
 }
 
@@ -112,9 +99,7 @@ Grid::Grid(std::vector<GridAxis> axes) : axes_(std::move(axes)) {
     count *= static_cast<double>(a.values.size());
   }
   if (count > static_cast<double>(kMaxGridPoints)) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.0f", count);
-    throw std::invalid_argument(std::string("the grid has ") + text + " runs, more than the limit of " +
+    throw std::invalid_argument("the grid has " + number_text(count, 15) + " runs, more than the limit of " +
                                 std::to_string(kMaxGridPoints));
   }
   size_ = static_cast<std::size_t>(count);

@@ -5,7 +5,7 @@
 
 #include <limits>
 
-#include "core/sweep/sweep_grid.hpp"
+#include "cli/sweep/sweep_grid.hpp"
 #include "unit/expect_invalid.hpp"
 
 namespace wrc::sweep {

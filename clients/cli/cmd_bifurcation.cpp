@@ -57,7 +57,7 @@ std::vector<std::string> csv_row(const std::string& branch, const HuntingRun& r,
           r.message};
 }
 
-int run_bifurcation(const std::vector<std::string>& args) {
+std::vector<OptionSpec> bifurcation_option_specs() {
   const ContinuationSettings defaults;
   std::vector<OptionSpec> specs{
       {"--model", true, "contact model: onepoint, interp, multipoint or spline", ""},
@@ -91,8 +91,115 @@ int run_bifurcation(const std::vector<std::string>& args) {
     spec.help = "spline model only: " + spec.help;
     specs.push_back(spec);
   }
-  const Options o("bifurcation", "--model M [--speeds 30:90:5] [--out FILE.csv] [--plot FILE.png] [options]", specs,
-                  args);
+  return specs;
+}
+
+// The continuation's settings from the command line, validated.
+ContinuationSettings continuation_settings_from(const Options& o) {
+  ContinuationSettings settings;
+  settings.small_disturbance.y = o.number("--disturbance", kLateralShiftRange);
+  settings.large_disturbance.y = o.number("--start-amplitude", kLateralShiftRange);
+  settings.run.settle_time = o.number("--settle-time", {1e-3, 1e4});
+  settings.run.window = o.number("--window", {1e-3, 1e4});
+  settings.run.max_time = o.number("--max-time", {1e-3, 1e4});
+  settings.run.growth_tolerance = o.number("--growth-tolerance", {1e-6, 0.5});
+  settings.run.centred_amplitude = o.number("--centred-amplitude", {1e-12, 0.05});
+  settings.speed_tolerance = o.number("--speed-tolerance", {1e-6, 1e3});
+  settings.persisting_amplitude = o.number("--persisting-amplitude", {0, 0.05});
+  try {
+    settings.validate();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  return settings;
+}
+
+void print_table_header() {
+  std::printf("%-11s %8s %-12s %11s %12s %9s %8s %10s %8s %7s\n", "branch", "V [m/s]", "state", "ampl. [mm]",
+              "yaw [mrad]", "freq [Hz]", "growth", "angle [deg]", "t [s]", "wall [s]");
+}
+
+// One line of the table for run r of a branch (wall [s]), and what follows it (a message, or the
+// unstable cycle's bracket).
+void print_run_row(const char* branch, const char* state, const HuntingRun& r, double wall, const std::string& tail) {
+  std::printf("%-11s %8.3f %-12s %11.4f %12.4f %9.4f %8.4f %10.2f %8.2f %7.1f%s%s\n", branch, r.speed, state,
+              r.cycle.amplitude * 1e3, r.yaw_amplitude * 1e3, r.cycle.frequency(), r.cycle.growth,
+              r.largest_contact_angle * 180 / M_PI, r.simulated_time, wall, tail.empty() ? "" : "  ", tail.c_str());
+  std::fflush(stdout);
+}
+
+// Where the small start decayed and the ramp-down's cycle persisted, both are stable: an unstable
+// cycle separates them, estimated by bisection on y0 with short runs; a row per such speed.
+void add_unstable_cycles(const HuntingDiagram& d, const RunSpec& spec, const std::shared_ptr<ContactEvaluator>& contact,
+                         double r0, const ContinuationSettings& settings, sweep::CsvTable& table) {
+  HuntingSettings short_runs = settings.run;
+  short_runs.settle_time = short_runs.window = short_runs.max_time = 2.0;
+  short_runs.centred_amplitude = 1e-9;
+  const HuntingRunner probe = hunting_runner(spec, contact, r0, short_runs);
+  for (const HuntingRun& cycle : d.ramp_down) {
+    if (!cycle.persists()) continue;
+    bool decayed = false;
+    for (const HuntingRun& c : d.centred)
+      if (c.speed == cycle.speed) decayed = c.state == HuntingState::kCentred || c.state == HuntingState::kDecaying;
+    if (!decayed) continue;
+    const auto start = std::chrono::steady_clock::now();
+    const UnstableCycle u = unstable_cycle(probe, cycle.speed, settings.small_disturbance.y, cycle.cycle.amplitude, 6);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    HuntingRun row = u.run;
+    row.speed = cycle.speed;
+    row.start.y = 0.5 * (u.decaying_start + u.growing_start);
+    // The estimate drawn: the separating start amplitude (the 2 s run from just below it has
+    // decayed by its end, so its own amplitude says less).
+    row.cycle.amplitude = row.start.y;
+    char bracket[96];
+    std::snprintf(bracket, sizeof bracket, "y0 between %.4f and %.4f mm", u.decaying_start * 1e3,
+                  u.growing_start * 1e3);
+    print_run_row("unstable", "separatrix", row, wall, bracket);
+    table.rows.push_back(csv_row("unstable", row, wall));
+  }
+}
+
+// The linear critical speed: printed, and a marker row when found.
+void report_linear_critical_speed(const CriticalSpeed& linear, const std::vector<double>& speeds,
+                                  sweep::CsvTable& table) {
+  if (!linear.found) {
+    std::printf("linear critical speed: none in %g..%g m/s\n", speeds.front(), speeds.back());
+    return;
+  }
+  std::printf("linear critical speed: %.3f m/s (%.1f km/h), %.4f Hz\n", linear.speed, linear.speed * 3.6,
+              linear.frequency);
+  HuntingRun marker;
+  marker.speed = linear.speed;
+  marker.cycle.period = linear.frequency > 0 ? 1.0 / linear.frequency : 0;
+  marker.state = HuntingState::kCentred;
+  table.rows.push_back(csv_row("linear-critical", marker, 0));
+}
+
+// The nonlinear critical speed, or why there is none: printed, and its row when found.
+void report_nonlinear_critical_speed(const HuntingDiagram& d, const std::vector<double>& speeds,
+                                     const ContinuationSettings& settings, sweep::CsvTable& table) {
+  if (d.critical.found) {
+    std::printf("nonlinear critical speed: %.3f m/s (%.1f km/h): the lowest speed with a persisting cycle "
+                "(collapsed at %.3f m/s); its amplitude %.3f mm, %.4f Hz\n",
+                d.critical.speed, d.critical.speed * 3.6, d.critical.collapsed_at, d.critical.cycle.cycle.amplitude * 1e3,
+                d.critical.cycle.cycle.frequency());
+    table.rows.push_back(csv_row("nonlinear-critical", d.critical.cycle, 0));
+  } else if (!d.ramp_down.empty() && d.ramp_down.back().state == HuntingState::kFailed) {
+    std::printf("nonlinear critical speed: not found, the ramp-down failed at %.3f m/s: %s\n",
+                d.ramp_down.back().speed, d.ramp_down.back().message.c_str());
+  } else if (!d.ramp_down.empty() && d.ramp_down.back().persists() &&
+             d.ramp_down.back().cycle.amplitude >= settings.persisting_amplitude) {
+    std::printf("nonlinear critical speed: below %g m/s (the cycle persisted down to the lowest speed)\n",
+                speeds.front());
+  } else {
+    std::printf("nonlinear critical speed: none: no persisting cycle at %g m/s from y0 = %g m\n", speeds.back(),
+                settings.large_disturbance.y);
+  }
+}
+
+int run_bifurcation(const std::vector<std::string>& args) {
+  const Options o("bifurcation", "--model M [--speeds 30:90:5] [--out FILE.csv] [--plot FILE.png] [options]",
+                  bifurcation_option_specs(), args);
   if (o.help_requested()) {
     std::cout << o.help()
               << "\nThe hunting bifurcation diagram by time simulation on straight track (contact model M,\n"
@@ -112,21 +219,7 @@ int run_bifurcation(const std::vector<std::string>& args) {
       p.set(spec.integrator, parameter_option_value(p, o.text(p.option_name())));
   const std::vector<double> speeds = parse_speed_scan(o.text("--speeds", "30:90:5"), "--speeds");
   if (speeds.size() < 2) throw UsageError("--speeds: give at least 2 speeds");
-  ContinuationSettings settings;
-  settings.small_disturbance.y = o.number("--disturbance", kLateralShiftRange);
-  settings.large_disturbance.y = o.number("--start-amplitude", kLateralShiftRange);
-  settings.run.settle_time = o.number("--settle-time", {1e-3, 1e4});
-  settings.run.window = o.number("--window", {1e-3, 1e4});
-  settings.run.max_time = o.number("--max-time", {1e-3, 1e4});
-  settings.run.growth_tolerance = o.number("--growth-tolerance", {1e-6, 0.5});
-  settings.run.centred_amplitude = o.number("--centred-amplitude", {1e-12, 0.05});
-  settings.speed_tolerance = o.number("--speed-tolerance", {1e-6, 1e3});
-  settings.persisting_amplitude = o.number("--persisting-amplitude", {0, 0.05});
-  try {
-    settings.validate();
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
+  const ContinuationSettings settings = continuation_settings_from(o);
   const std::string csv = o.text("--out", "bifurcation.csv");
   const std::string picture = o.text("--plot", "bifurcation.png");
   check_output_path(csv, "--out");
@@ -146,8 +239,7 @@ int run_bifurcation(const std::vector<std::string>& args) {
   const CriticalSpeed linear = stability.critical_speed(scan);
 
   std::printf("hunting bifurcation, %s contact, %s\n", model.c_str(), plot::geometry_title(geometry_spec).c_str());
-  std::printf("%-11s %8s %-12s %11s %12s %9s %8s %10s %8s %7s\n", "branch", "V [m/s]", "state", "ampl. [mm]",
-              "yaw [mrad]", "freq [Hz]", "growth", "angle [deg]", "t [s]", "wall [s]");
+  print_table_header();
   sweep::CsvTable table;
   table.header = plot::bifurcation_csv_header();
   auto last = std::chrono::steady_clock::now();
@@ -156,71 +248,12 @@ int run_bifurcation(const std::vector<std::string>& args) {
     const auto now = std::chrono::steady_clock::now();
     const double wall = std::chrono::duration<double>(now - last).count();
     last = now;
-    std::printf("%-11s %8.3f %-12s %11.4f %12.4f %9.4f %8.4f %10.2f %8.2f %7.1f%s%s\n", branch, r.speed,
-                hunting_state_name(r.state), r.cycle.amplitude * 1e3, r.yaw_amplitude * 1e3, r.cycle.frequency(),
-                r.cycle.growth, r.largest_contact_angle * 180 / M_PI, r.simulated_time, wall,
-                r.message.empty() ? "" : "  ", r.message.c_str());
-    std::fflush(stdout);
+    print_run_row(branch, hunting_state_name(r.state), r, wall, r.message);
     table.rows.push_back(csv_row(branch, r, wall));
   });
-  if (o.has("--unstable")) {
-    // Where the small start decayed and the ramp-down's cycle persisted, both are stable: an
-    // unstable cycle separates them.
-    HuntingSettings short_runs = settings.run;
-    short_runs.settle_time = short_runs.window = short_runs.max_time = 2.0;
-    short_runs.centred_amplitude = 1e-9;
-    const HuntingRunner probe = hunting_runner(spec, contact, r0, short_runs);
-    for (const HuntingRun& cycle : d.ramp_down) {
-      if (!cycle.persists()) continue;
-      bool decayed = false;
-      for (const HuntingRun& c : d.centred)
-        if (c.speed == cycle.speed)
-          decayed = c.state == HuntingState::kCentred || c.state == HuntingState::kDecaying;
-      if (!decayed) continue;
-      const auto start = std::chrono::steady_clock::now();
-      const UnstableCycle u = unstable_cycle(probe, cycle.speed, settings.small_disturbance.y, cycle.cycle.amplitude, 6);
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      HuntingRun row = u.run;
-      row.speed = cycle.speed;
-      row.start.y = 0.5 * (u.decaying_start + u.growing_start);
-      // The estimate drawn: the separating start amplitude (the 2 s run from just below it has
-      // decayed by its end, so its own amplitude says less).
-      row.cycle.amplitude = row.start.y;
-      std::printf("%-11s %8.3f %-12s %11.4f %12.4f %9.4f %8.4f %10.2f %8.2f %7.1f  y0 between %.4f and %.4f mm\n",
-                  "unstable", row.speed, "separatrix", row.cycle.amplitude * 1e3, row.yaw_amplitude * 1e3,
-                  row.cycle.frequency(), row.cycle.growth, row.largest_contact_angle * 180 / M_PI, row.simulated_time,
-                  wall, u.decaying_start * 1e3, u.growing_start * 1e3);
-      table.rows.push_back(csv_row("unstable", row, wall));
-    }
-  }
-  if (linear.found) {
-    std::printf("linear critical speed: %.3f m/s (%.1f km/h), %.4f Hz\n", linear.speed, linear.speed * 3.6,
-                linear.frequency);
-    HuntingRun marker;
-    marker.speed = linear.speed;
-    marker.cycle.period = linear.frequency > 0 ? 1.0 / linear.frequency : 0;
-    marker.state = HuntingState::kCentred;
-    table.rows.push_back(csv_row("linear-critical", marker, 0));
-  } else {
-    std::printf("linear critical speed: none in %g..%g m/s\n", speeds.front(), speeds.back());
-  }
-  if (d.critical.found) {
-    std::printf("nonlinear critical speed: %.3f m/s (%.1f km/h): the lowest speed with a persisting cycle "
-                "(collapsed at %.3f m/s); its amplitude %.3f mm, %.4f Hz\n",
-                d.critical.speed, d.critical.speed * 3.6, d.critical.collapsed_at, d.critical.cycle.cycle.amplitude * 1e3,
-                d.critical.cycle.cycle.frequency());
-    table.rows.push_back(csv_row("nonlinear-critical", d.critical.cycle, 0));
-  } else if (!d.ramp_down.empty() && d.ramp_down.back().state == HuntingState::kFailed) {
-    std::printf("nonlinear critical speed: not found, the ramp-down failed at %.3f m/s: %s\n",
-                d.ramp_down.back().speed, d.ramp_down.back().message.c_str());
-  } else if (!d.ramp_down.empty() && d.ramp_down.back().persists() &&
-             d.ramp_down.back().cycle.amplitude >= settings.persisting_amplitude) {
-    std::printf("nonlinear critical speed: below %g m/s (the cycle persisted down to the lowest speed)\n",
-                speeds.front());
-  } else {
-    std::printf("nonlinear critical speed: none: no persisting cycle at %g m/s from y0 = %g m\n", speeds.back(),
-                settings.large_disturbance.y);
-  }
+  if (o.has("--unstable")) add_unstable_cycles(d, spec, contact, r0, settings, table);
+  report_linear_critical_speed(linear, speeds, table);
+  report_nonlinear_critical_speed(d, speeds, settings, table);
   sweep::write_csv_file(csv, table);
   std::cout << "wrote " << csv << "\n";
   plot::draw_bifurcation(table, plot::image_request(picture, 1200, 800),

@@ -162,7 +162,7 @@ void print_patches(const wrc::contact_reply_t& reply, const std::string& format)
 
 // ---- the command ---------------------------------------------------------------------------------
 
-int run_query(const std::vector<std::string>& args) {
+std::vector<OptionSpec> query_option_specs() {
   const ContactQuery defaults;
   std::vector<OptionSpec> specs{
       {"--model", true, "contact model: onepoint, interp, multipoint or spline", ""},
@@ -187,36 +187,29 @@ int run_query(const std::vector<std::string>& args) {
       {"--format", true, "csv or table", "csv"}};
   for (auto& spec : service_start_option_specs()) specs.push_back(spec);
   for (auto& spec : profile_option_specs()) specs.push_back(spec);
-  const Options o("query", "--model M --y Y [options]", specs, args);
-  if (o.help_requested()) {
-    std::cout << o.help()
-              << "\nSends one contact query to a service of model M and prints one row per contact patch:\n"
-                 "wheel,s,angle,a,b,penetration,normal_force,fx,fy,mz,xi_x,xi_y,spin,rolling_radius,s_rail,x,y,z,\n"
-                 "lateral_curvature_floored (1: conformal contact, the lateral curvature floored; Hertz does not hold)\n"
-                 "(a rolling, b lateral semi-axis; forces on the wheel in the contact frame; x,y,z the contact\n"
-                 "point on the wheel, track frame; SI units). The service is a READY instance of M heard on\n"
-                 "HEARTBEAT that computes with the same profiles and track (smallest instance name first); when\n"
-                 "none is heard within "
-              << kServiceDiscoveryTime
-              << " s one is started from the build tree and stopped afterwards.\n"
-                 "Rigid formulation: --load per wheel; z defaults to the height where the closer wheel just\n"
-                 "touches (positions only; the loads set the forces). Elastic: the forces follow from the\n"
-                 "penetration; without --z the rigid wheelset solution (both wheels touching; its roll unless\n"
-                 "--roll is given) is lowered by --penetration.\n";
-    return 0;
-  }
-  const std::string model = o.choice("--model", contact_model_names());
-  if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
-  const std::string formulation = o.choice("--formulation", {"rigid", "elastic"});
-  bus::CallPolicy policy;
-  policy.timeout = o.number("--timeout", {1e-3, 600.0});
-  policy.retries = o.integer("--retries", {0, 100});
-  const double start_timeout = o.number("--start-timeout", {0.1, 3600.0});
-  const std::string format = o.choice("--format", {"csv", "table"});
-  const GeometrySpec spec = geometry_spec_from_options(o);
+  return specs;
+}
 
-  // The query as the library takes it, checked by the library's rule before anything starts; the
-  // height (and the elastic roll) from the client's own geometry afterwards.
+void print_query_help(const Options& o) {
+  std::cout << o.help()
+            << "\nSends one contact query to a service of model M and prints one row per contact patch:\n"
+               "wheel,s,angle,a,b,penetration,normal_force,fx,fy,mz,xi_x,xi_y,spin,rolling_radius,s_rail,x,y,z,\n"
+               "lateral_curvature_floored (1: conformal contact, the lateral curvature floored; Hertz does not hold)\n"
+               "(a rolling, b lateral semi-axis; forces on the wheel in the contact frame; x,y,z the contact\n"
+               "point on the wheel, track frame; SI units). The service is a READY instance of M heard on\n"
+               "HEARTBEAT that computes with the same profiles and track (smallest instance name first); when\n"
+               "none is heard within "
+            << kServiceDiscoveryTime
+            << " s one is started from the build tree and stopped afterwards.\n"
+               "Rigid formulation: --load per wheel; z defaults to the height where the closer wheel just\n"
+               "touches (positions only; the loads set the forces). Elastic: the forces follow from the\n"
+               "penetration; without --z the rigid wheelset solution (both wheels touching; its roll unless\n"
+               "--roll is given) is lowered by --penetration.\n";
+}
+
+// The query as the library takes it, checked by the library's rule before anything starts; the
+// height (and the elastic roll) from the client's own geometry afterwards, and checked again.
+ContactQuery library_query_from(const Options& o, const GeometrySpec& spec) {
   ContactQuery q;
   q.pose.y = o.required_number("--y");
   q.pose.yaw = o.number("--yaw");
@@ -225,14 +218,14 @@ int run_query(const std::vector<std::string>& args) {
   q.speed = o.number("--speed");
   if (o.has("--spin-rate")) q.spin_rate = o.number("--spin-rate");
   q.normal_load.fill(o.number("--load"));
-  q.formulation = formulation == "elastic" ? ContactFormulation::kElastic : ContactFormulation::kRigid;
+  q.formulation = o.choice("--formulation", {"rigid", "elastic"}) == "elastic" ? ContactFormulation::kElastic
+                                                                              : ContactFormulation::kRigid;
   q.material = {o.number("--shear-modulus"), o.number("--poisson"), o.number("--friction")};
   const FastsimGrid grid = grid_option(o, kMinFastsimGrid, kMaxFastsimGrid);
   q.fastsim_elements = grid.elements_per_strip;
   q.fastsim_strips = grid.strips;
   check_query(o, q);
   if (!o.has("--spin-rate")) q.spin_rate = q.speed / spec.track.nominal_radius;
-  const std::string key = geometry_key(spec);
   if (!o.has("--z")) {
     const WheelsetGeometry geometry = make_geometry(spec);
     if (q.formulation == ContactFormulation::kElastic && !o.has("--roll")) {
@@ -245,17 +238,34 @@ int run_query(const std::vector<std::string>& args) {
     if (q.formulation == ContactFormulation::kElastic) q.pose.z -= o.number("--penetration", {0.0, 0.01});
   }
   check_query(o, q);
-  wrc::contact_query_t query{};
-  protocol::to_query_message({q}, query);
-  query.model = model;
-  query.geometry_key = key;
+  return q;
+}
 
-  // Find the service, or start one.
-  CommandBus session(o, "query");
-  const std::string wanted = o.text("--instance");
-  std::optional<bus::ServiceStatus> service;
-  service = discover_service(*session.lcm, session.monitor, model, key, wanted, kServiceDiscoveryTime);
+// The service that answers, and what this command started for it (stopped when it ends).
+struct QueryService {
+  std::optional<bus::ServiceStatus> status;
   std::unique_ptr<StartedService> started;
+  std::unique_ptr<StartedService> started_geometry;  // for a model whose data wrc-geometryd computes
+
+  // Stops what was started; its logs go when the query was answered.
+  void stop(bool answered) {
+    for (auto* s : {&started_geometry, &started}) {
+      if (!*s) continue;
+      (*s)->stop();
+      if (answered) std::filesystem::remove((*s)->log());
+    }
+  }
+};
+
+// A READY instance of model (the one named by --instance, which must run), one that is starting,
+// or one started here.
+QueryService find_or_start_service(CommandBus& session, const Options& o, const std::string& model,
+                                   const GeometrySpec& spec, const std::string& key) {
+  const std::string wanted = o.text("--instance");
+  const double start_timeout = o.number("--start-timeout", {0.1, 3600.0});
+  QueryService found;
+  std::optional<bus::ServiceStatus>& service = found.status;
+  service = discover_service(*session.lcm, session.monitor, model, key, wanted, kServiceDiscoveryTime);
   if (!service && !wanted.empty()) {
     std::ostringstream msg;
     msg << "no READY instance '" << wanted << "' of model " << model << " with geometry_key " << key
@@ -267,57 +277,81 @@ int run_query(const std::vector<std::string>& args) {
     handle_until(*session.lcm, bus::monotonic_seconds() + start_timeout,
                  [&] { return (service = pick_service(session.monitor, model, key, "", true)).has_value(); });
   }
-  std::unique_ptr<StartedService> started_geometry;  // for a model whose data wrc-geometryd computes
-  if (!service) {
-    const StartContext context = start_context_from(o, "query", "q" + std::to_string(::getpid()));
-    if (contact_model_entry(model).needs_data)
-      started_geometry = ensure_service(*session.lcm, session.monitor, context, "geometryd", "", "wrc-geometryd", {});
-    std::vector<std::string> service_args{"--model", model};
-    for (auto& a : geometry_arguments(spec)) service_args.push_back(a);
-    const double t0 = bus::monotonic_seconds();
-    started = ensure_service(*session.lcm, session.monitor, context, model, key, "wrc-contactd", service_args);
-    service = pick_service(session.monitor, model, key, started ? context.instance : "", true);
-    if (started)
-      std::cerr << "query: " << model << " service " << context.instance << " READY after "
-                << number_text(bus::monotonic_seconds() - t0) << " s\n";
-  }
-  query.instance = service->last.instance;
+  if (service) return found;
+  const StartContext context = start_context_from(o, "query", "q" + std::to_string(::getpid()));
+  if (contact_model_entry(model).needs_data)
+    found.started_geometry =
+        ensure_service(*session.lcm, session.monitor, context, "geometryd", "", "wrc-geometryd", {});
+  std::vector<std::string> service_args{"--model", model};
+  for (auto& a : geometry_arguments(spec)) service_args.push_back(a);
+  const double t0 = bus::monotonic_seconds();
+  found.started = ensure_service(*session.lcm, session.monitor, context, model, key, "wrc-contactd", service_args);
+  service = pick_service(session.monitor, model, key, found.started ? context.instance : "", true);
+  if (found.started)
+    std::cerr << "query: " << model << " service " << context.instance << " READY after "
+              << number_text(bus::monotonic_seconds() - t0) << " s\n";
+  return found;
+}
 
-  const std::string client_id = bus::make_client_id("query");
-  bus::RequestClient<wrc::contact_query_t, wrc::contact_reply_t> client(
-      *session.lcm, session.names.name(bus::channel::kContactQuery, model),
-      session.names.name(bus::channel::kContactReply, client_id),
-      bus::sender_name("wrc-query", client_id));
+using QueryClient = bus::RequestClient<wrc::contact_query_t, wrc::contact_reply_t>;
+
+// The query to its instance; when that one does not answer and no instance was named, to every
+// other READY instance of the model at once (the first answer taken): the chosen one may be hung,
+// gone, or named by a forged heartbeat.
+bus::CallResult<wrc::contact_reply_t> call_with_failover(QueryClient& client, CommandBus& session,
+                                                         wrc::contact_query_t& query, const bus::CallPolicy& policy,
+                                                         bool instance_named) {
   auto result = client.call(query, policy);
-  if (!result && wanted.empty()) {
-    // Fail-over: the chosen instance did not answer (hung, gone, or a forged heartbeat named it);
-    // the query goes to every other READY instance of the model at once, the first answer taken.
-    std::vector<wrc::contact_query_t> copies;
-    for (const std::string& name : session.monitor.ready_instances(model, key, bus::monotonic_seconds())) {
-      if (name == query.instance) continue;
-      copies.push_back(query);
-      copies.back().instance = name;
-    }
-    if (!copies.empty()) {
-      std::cerr << "query: no reply from " << model << " instance " << query.instance << "; asking the "
-                << copies.size() << " other READY instance" << (copies.size() > 1 ? "s" : "") << "\n";
-      const int first_attempts = result.attempts;
-      result = client.call_any(copies.data(), copies.size(), policy);
-      result.attempts += first_attempts;
-    }
+  if (result || instance_named) return result;
+  std::vector<wrc::contact_query_t> copies;
+  for (const std::string& name : session.monitor.ready_instances(query.model, query.geometry_key,
+                                                                 bus::monotonic_seconds())) {
+    if (name == query.instance) continue;
+    copies.push_back(query);
+    copies.back().instance = name;
   }
-  const bool answered = static_cast<bool>(result);  // an error status is in the reply, not in the log
-  if (started_geometry) {
-    started_geometry->stop();
-    if (answered) std::filesystem::remove(started_geometry->log());
+  if (copies.empty()) return result;
+  std::cerr << "query: no reply from " << query.model << " instance " << query.instance << "; asking the "
+            << copies.size() << " other READY instance" << (copies.size() > 1 ? "s" : "") << "\n";
+  const int first_attempts = result.attempts;
+  result = client.call_any(copies.data(), copies.size(), policy);
+  result.attempts += first_attempts;
+  return result;
+}
+
+int run_query(const std::vector<std::string>& args) {
+  const Options o("query", "--model M --y Y [options]", query_option_specs(), args);
+  if (o.help_requested()) {
+    print_query_help(o);
+    return 0;
   }
-  if (started) {
-    started->stop();
-    if (answered) std::filesystem::remove(started->log());
-  }
+  const std::string model = o.choice("--model", contact_model_names());
+  if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
+  bus::CallPolicy policy;
+  policy.timeout = o.number("--timeout", {1e-3, 600.0});
+  policy.retries = o.integer("--retries", {0, 100});
+  o.number("--start-timeout", {0.1, 3600.0});  // checked before anything starts
+  const std::string format = o.choice("--format", {"csv", "table"});
+  const GeometrySpec spec = geometry_spec_from_options(o);
+  const ContactQuery q = library_query_from(o, spec);
+  wrc::contact_query_t query{};
+  protocol::to_query_message({q}, query);
+  query.model = model;
+  query.geometry_key = geometry_key(spec);
+
+  CommandBus session(o, "query");
+  QueryService service = find_or_start_service(session, o, model, spec, query.geometry_key);
+  query.instance = service.status->last.instance;
+  const std::string client_id = bus::make_client_id("query");
+  QueryClient client(*session.lcm, session.names.name(bus::channel::kContactQuery, model),
+                     session.names.name(bus::channel::kContactReply, client_id),
+                     bus::sender_name("wrc-query", client_id));
+  const bool instance_named = !o.text("--instance").empty();
+  const auto result = call_with_failover(client, session, query, policy, instance_named);
+  service.stop(static_cast<bool>(result));  // an error status is in the reply, not in the log
   if (!result) {
     throw std::runtime_error("no reply from " + model + " instance " + query.instance +
-                             (wanted.empty() ? " (nor from any other READY instance)" : "") + " after " +
+                             (instance_named ? "" : " (nor from any other READY instance)") + " after " +
                              std::to_string(result.attempts) + " attempts of " + number_text(policy.timeout) + " s");
   }
   const wrc::contact_reply_t& reply = *result.reply;

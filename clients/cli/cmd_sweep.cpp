@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <set>
@@ -178,14 +179,20 @@ void draw(const Options& o, const sweep::SweepLayout& layout, const std::string&
   std::cerr << "sweep: wrote " << o.text("--plot") << "\n";
 }
 
-int run_sweep(const std::vector<std::string>& all_args) {
-  // --grid may come many times and everything after `--` is the runs' own: taken out first.
-  std::vector<std::string> args, run_options;
-  std::vector<sweep::GridAxis> axes;
+// The command line of a sweep: --grid may come many times and everything after `--` is the runs'
+// own, so both are taken out before the options are read.
+struct SweepArguments {
+  std::vector<std::string> options;      // the sweep's own, --grid taken out
+  std::vector<std::string> run_options;  // after `--`
+  std::vector<sweep::GridAxis> axes;     // one per --grid
+};
+
+SweepArguments split_sweep_arguments(const std::vector<std::string>& all_args) {
+  SweepArguments out;
   for (std::size_t i = 0; i < all_args.size(); ++i) {
     const std::string& a = all_args[i];
     if (a == "--") {
-      run_options.assign(all_args.begin() + static_cast<long>(i) + 1, all_args.end());
+      out.run_options.assign(all_args.begin() + static_cast<long>(i) + 1, all_args.end());
       break;
     }
     std::string grid;
@@ -195,51 +202,35 @@ int run_sweep(const std::vector<std::string>& all_args) {
     } else if (a.rfind("--grid=", 0) == 0) {
       grid = a.substr(7);
     } else {
-      args.push_back(a);
+      out.options.push_back(a);
       continue;
     }
     try {
-      axes.push_back(sweep::parse_grid_axis(grid));
+      out.axes.push_back(sweep::parse_grid_axis(grid));
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--") + e.what());
     }
   }
-  std::vector<OptionSpec> specs = sweep_option_specs();
-  specs.insert(specs.begin(), {"--grid", true, "KEY=VALUES, repeated per key: a list 0.2,0.3, a range FROM:TO:STEP, or both", ""});
-  const Options o("sweep", "--grid KEY=VALUES [--grid ...] [options] -- [wrc run options for every run]", specs, args);
-  if (o.help_requested()) {
-    std::cout << o.help()
-              << "\nRuns `wrc run` at every point of the grid (the first key varies slowest), each in a process of its\n"
-                 "own with the contact model in-process, and writes one CSV row per run in grid order: point, the\n"
-                 "keys, status, what --extract names, error, wall_time. Keys: any run parameter (speed, friction, y0,\n"
-                 "...), the profile and track options (wheel, rail, gauge, inclination, r0, ...), model, suspension,\n"
-                 "params, track, irregularities, swap_at. A failed run is a row with its error. Run again with the\n"
-                 "same --out to resume: rows already there are kept. --slurm submits the runs as a job array instead.\n"
-                 "`wrc sweep --compare A.csv B.csv` compares two sweep CSVs, every column but wall_time [s].\n"
-                 "Example: wrc sweep --grid speed=10:40:10 --grid friction=0.2,0.3 -- --model onepoint --t-end 1\n"
-                 "docs/sweep.md.\n";
-    return 0;
-  }
-  if (o.has("--run-point")) return run_one_point(o);
+  return out;
+}
 
-  const std::string out = o.text("--out", "sweep.csv");
-  const SweepWork work(o.text("--work-dir", out + ".work"));
-  SweepDefinition d;
-  if (o.has("--gather") && axes.empty()) {
-    d = work.definition();
-  } else {
-    d.axes = axes;
-    d.run_options = run_options;
-    d.extract = split(o.text("--extract", "final,maxima,counters"), ',');
-    d.critical_speeds = o.text("--critical-speeds", "5:80:1");
-  }
-  const sweep::SweepLayout layout = checked_layout(d, !o.has("--gather"));
-  check_output_path(out, "--out");
-  if (o.has("--plot")) plot::image_request(o.text("--plot"), 1200, 800);
-  work.prepare(d);
+void print_sweep_help(const Options& o) {
+  std::cout << o.help()
+            << "\nRuns `wrc run` at every point of the grid (the first key varies slowest), each in a process of its\n"
+               "own with the contact model in-process, and writes one CSV row per run in grid order: point, the\n"
+               "keys, status, what --extract names, error, wall_time. Keys: any run parameter (speed, friction, y0,\n"
+               "...), the profile and track options (wheel, rail, gauge, inclination, r0, ...), model, suspension,\n"
+               "params, track, irregularities, swap_at. A failed run is a row with its error. Run again with the\n"
+               "same --out to resume: rows already there are kept. --slurm submits the runs as a job array instead.\n"
+               "`wrc sweep --compare A.csv B.csv` compares two sweep CSVs, every column but wall_time [s].\n"
+               "Example: wrc sweep --grid speed=10:40:10 --grid friction=0.2,0.3 -- --model onepoint --t-end 1\n"
+               "docs/sweep.md.\n";
+}
 
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+// The rows already done: those in the CSV at out and those gathered from the work directory,
+// without the failed ones under --retry-failed (forgotten in the work directory too).
+RowMap rows_already_done(const Options& o, const std::string& out, const sweep::SweepLayout& layout,
+                         const SweepWork& work, std::size_t& in_csv, std::size_t& gathered) {
   RowMap rows;
   if (std::filesystem::exists(out)) {
     try {
@@ -248,8 +239,8 @@ int run_sweep(const std::vector<std::string>& all_args) {
       throw UsageError(e.what());
     }
   }
-  const std::size_t in_csv = rows.size();
-  const std::size_t gathered = work.gather(layout, rows);
+  in_csv = rows.size();
+  gathered = work.gather(layout, rows);
   if (o.has("--retry-failed")) {
     for (auto it = rows.begin(); it != rows.end();) {
       if (it->second.status != "finished") {
@@ -260,7 +251,94 @@ int run_sweep(const std::vector<std::string>& all_args) {
       }
     }
   }
-  auto write = [&] { sweep::write_csv_file(out, layout.table(rows)); };
+  return rows;
+}
+
+// The pending points as a Slurm job array, waited for (unless --no-wait) while their rows are
+// gathered; a point whose task ended without a result becomes a failed row naming its log.
+// Returns false when the command ends without waiting.
+bool run_on_slurm(const Options& o, const SweepWork& work, const sweep::SweepLayout& layout,
+                  const std::vector<std::size_t>& pending, RowMap& rows, const std::function<void()>& write) {
+  SlurmSubmission s;
+  s.partition = o.text("--partition");
+  s.time = o.text("--time");
+  s.sbatch_args = split(o.text("--sbatch-args"), ' ');
+  s.array_limit = o.has("--array-limit") ? o.integer("--array-limit", {1, 1000000}) : 0;
+  const std::string job = submit_to_slurm(work, pending, s);
+  std::cerr << "sweep: Slurm job " << job << ", an array of " << pending.size() << " tasks (script and list in "
+            << work.slurm_directory() << ")\n";
+  if (o.has("--no-wait")) {
+    std::cerr << "sweep: gather its rows with the same command and --gather (or run it again to resume)\n";
+    return false;
+  }
+  ProgressBar bar("sweep (Slurm job " + job + ")");
+  const std::set<std::size_t> submitted(pending.begin(), pending.end());
+  auto done = [&] {
+    std::size_t n = 0, failed = 0;
+    for (std::size_t p : submitted)
+      if (rows.count(p)) {
+        ++n;
+        failed += rows[p].status != "finished";
+      }
+    return std::make_pair(n, failed);
+  };
+  bool active = true;
+  while (active) {
+    std::this_thread::sleep_for(std::chrono::duration<double>(kSlurmPollPeriod));
+    active = slurm_job_active(job);
+    if (work.gather(layout, rows) > 0) write();
+    const auto [n, failed] = done();
+    bar.update(static_cast<long>(n), static_cast<long>(submitted.size()),
+               std::to_string(n) + "/" + std::to_string(submitted.size()) + " runs, " + std::to_string(failed) + " failed");
+  }
+  bar.finish();
+  for (std::size_t p : submitted) {
+    if (rows.count(p)) continue;
+    sweep::SweepRow row;
+    row.point = p;
+    row.status = "failed";
+    row.results.assign(layout.result_count(), "");
+    row.error = "the Slurm task of this point (job " + job + ") ended without a result; its log: " +
+                work.logs_directory() + "/slurm-" + job + "_<task>.log";
+    rows[p] = row;
+  }
+  write();
+  return true;
+}
+
+int run_sweep(const std::vector<std::string>& all_args) {
+  const SweepArguments arguments = split_sweep_arguments(all_args);
+  std::vector<OptionSpec> specs = sweep_option_specs();
+  specs.insert(specs.begin(), {"--grid", true, "KEY=VALUES, repeated per key: a list 0.2,0.3, a range FROM:TO:STEP, or both", ""});
+  const Options o("sweep", "--grid KEY=VALUES [--grid ...] [options] -- [wrc run options for every run]", specs,
+                  arguments.options);
+  if (o.help_requested()) {
+    print_sweep_help(o);
+    return 0;
+  }
+  if (o.has("--run-point")) return run_one_point(o);
+
+  const std::string out = o.text("--out", "sweep.csv");
+  const SweepWork work(o.text("--work-dir", out + ".work"));
+  SweepDefinition d;
+  if (o.has("--gather") && arguments.axes.empty()) {
+    d = work.definition();
+  } else {
+    d.axes = arguments.axes;
+    d.run_options = arguments.run_options;
+    d.extract = split(o.text("--extract", "final,maxima,counters"), ',');
+    d.critical_speeds = o.text("--critical-speeds", "5:80:1");
+  }
+  const sweep::SweepLayout layout = checked_layout(d, !o.has("--gather"));
+  check_output_path(out, "--out");
+  if (o.has("--plot")) plot::image_request(o.text("--plot"), 1200, 800);
+  work.prepare(d);
+
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  std::size_t in_csv = 0, gathered = 0;
+  RowMap rows = rows_already_done(o, out, layout, work, in_csv, gathered);
+  const std::function<void()> write = [&] { sweep::write_csv_file(out, layout.table(rows)); };
   write();
   std::vector<std::size_t> pending;
   for (std::size_t p = 0; p < layout.grid().size(); ++p)
@@ -287,51 +365,8 @@ int run_sweep(const std::vector<std::string>& all_args) {
       rows[row.point] = row;
       write();
     });
-  } else {
-    SlurmSubmission s;
-    s.partition = o.text("--partition");
-    s.time = o.text("--time");
-    s.sbatch_args = split(o.text("--sbatch-args"), ' ');
-    s.array_limit = o.has("--array-limit") ? o.integer("--array-limit", {1, 1000000}) : 0;
-    const std::string job = submit_to_slurm(work, pending, s);
-    std::cerr << "sweep: Slurm job " << job << ", an array of " << pending.size() << " tasks (script and list in "
-              << work.slurm_directory() << ")\n";
-    if (o.has("--no-wait")) {
-      std::cerr << "sweep: gather its rows with the same command and --gather (or run it again to resume)\n";
-      return 0;
-    }
-    ProgressBar bar("sweep (Slurm job " + job + ")");
-    const std::set<std::size_t> submitted(pending.begin(), pending.end());
-    auto done = [&] {
-      std::size_t n = 0, failed = 0;
-      for (std::size_t p : submitted)
-        if (rows.count(p)) {
-          ++n;
-          failed += rows[p].status != "finished";
-        }
-      return std::make_pair(n, failed);
-    };
-    bool active = true;
-    while (active) {
-      std::this_thread::sleep_for(std::chrono::duration<double>(kSlurmPollPeriod));
-      active = slurm_job_active(job);
-      if (work.gather(layout, rows) > 0) write();
-      const auto [n, failed] = done();
-      bar.update(static_cast<long>(n), static_cast<long>(submitted.size()),
-                 std::to_string(n) + "/" + std::to_string(submitted.size()) + " runs, " + std::to_string(failed) + " failed");
-    }
-    bar.finish();
-    for (std::size_t p : submitted) {
-      if (rows.count(p)) continue;
-      sweep::SweepRow row;
-      row.point = p;
-      row.status = "failed";
-      row.results.assign(layout.result_count(), "");
-      row.error = "the Slurm task of this point (job " + job + ") ended without a result; its log: " +
-                  work.logs_directory() + "/slurm-" + job + "_<task>.log";
-      rows[p] = row;
-    }
-    write();
+  } else if (!run_on_slurm(o, work, layout, pending, rows, write)) {
+    return 0;
   }
   report(rows, layout.grid().size(), out, elapsed());
   if (!complete) {

@@ -24,6 +24,7 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,138 @@ std::string compute_time_summary(const wrc::bus::LatencyWindow& times) {
   return buf;
 }
 
+/// What the service computes with: the model (replaced, loop thread only, when a new spline model
+/// comes), its hash, and for the spline model the geometry and the source of its data.
+struct ServedModel {
+  std::string name;
+  std::shared_ptr<const wrc::ContactModel> model;
+  std::string model_hash;
+  std::shared_ptr<const wrc::WheelsetGeometry> geometry;
+  std::unique_ptr<wrc::contactd::SplineModelSource> splines;
+
+  /// Builds the spline model from newly received splines and publishes its hash.
+  void adopt(std::shared_ptr<const wrc::SplineContactGeometry> fitted, wrc::bus::HeartbeatPublisher& heartbeat) {
+    model = wrc::make_contact_model(name, geometry, wrc::ContactModelOptions{}, {std::move(fitted)});
+    model_hash = wrc::contactd::model_hash(*model);
+    heartbeat.set_model_hash(model_hash);
+  }
+};
+
+/// The exit code of a service that ends before it serves; nothing when it goes on.
+using EarlyExit = std::optional<int>;
+
+/// A model built from the profiles alone, in a worker thread so that STARTING heartbeats keep
+/// coming while it is built (the interpolated model takes a while); LCM is only used from this
+/// thread. A signal meanwhile ends the process at once.
+EarlyExit build_model(const wrc::contactd::ContactdOptions& options, const std::string& sender, const std::string& key,
+                      wrc::bus::HeartbeatPublisher& heartbeat, std::function<std::string()>& activity,
+                      ServedModel& served) {
+  using wrc::bus::ShutdownSignal;
+  std::cerr << sender << ": building the " << served.name << " model (wheel " << options.geometry.wheel << ", rail "
+            << options.geometry.rail << ", geometry key " << key << ")\n";
+  activity = [&served] { return "building the " + served.name + " model"; };
+  auto pending = std::async(std::launch::async, build, std::cref(options));
+  while (pending.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
+    if (ShutdownSignal::requested()) {
+      heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+      std::cerr << sender << ": signal " << ShutdownSignal::signal_number()
+                << " while building the model; exiting without waiting for it\n";
+      std::cerr.flush();
+      std::_Exit(0);  // the build thread cannot be interrupted; nothing else needs cleaning up
+    }
+    heartbeat.tick();
+  }
+  Built built;
+  try {
+    built = pending.get();
+  } catch (const std::exception& e) {
+    heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+    std::cerr << sender << ": cannot build the " << served.name << " model: " << e.what() << "\n";
+    return 1;
+  }
+  std::cerr << sender << ": built the " << served.name << " model in " << built.model_seconds << " s (geometry "
+            << built.geometry_seconds << " s)"
+            << (built.model_hash.empty() ? std::string() : ", model hash " + built.model_hash) << "\n";
+  served.model = std::move(built.model);
+  served.model_hash = built.model_hash;
+  return std::nullopt;
+}
+
+/// A model whose data come from wrc-geometryd: asked for, and waited for (STARTING) until here.
+EarlyExit wait_for_spline_model(lcm::LCM& lcm, const wrc::bus::ChannelNames& names,
+                                const wrc::contactd::ContactdOptions& options, const std::string& sender,
+                                const std::string& key, wrc::bus::HeartbeatPublisher& heartbeat,
+                                std::function<std::string()>& activity, ServedModel& served) {
+  using wrc::bus::ShutdownSignal;
+  try {
+    served.geometry = std::make_shared<const wrc::WheelsetGeometry>(wrc::make_geometry(options.geometry));
+  } catch (const std::exception& e) {
+    heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+    std::cerr << sender << ": cannot build the geometry: " << e.what() << "\n";
+    return 1;
+  }
+  served.splines = std::make_unique<wrc::contactd::SplineModelSource>(lcm, names, sender, options.geometry,
+                                                                      wrc::SplineFitOptions{}, kModelRequestPeriod);
+  wrc::contactd::SplineModelSource& splines = *served.splines;
+  activity = [&splines] {
+    const std::string& p = splines.last_progress();
+    return "waiting for spline model " + splines.model_key().substr(0, 12) + " from wrc-geometryd" +
+           (p.empty() ? std::string() : " (" + p + ")");
+  };
+  std::cerr << sender << ": waiting for spline model " << splines.model_key().substr(0, 12)
+            << " from wrc-geometryd (geometry key " << key << ")\n";
+  while (!served.model) {
+    if (ShutdownSignal::requested()) {
+      heartbeat.set_state(wrc::heartbeat_t::DRAINING);
+      std::cerr << sender << ": signal " << ShutdownSignal::signal_number() << " while waiting for the model\n";
+      return 0;
+    }
+    splines.tick();
+    if (lcm.handleTimeout(20) < 0) {
+      std::cerr << sender << ": LCM failed while waiting for the model\n";
+      return 1;
+    }
+    heartbeat.tick();
+    if (auto fitted = splines.take()) {
+      served.adopt(std::move(fitted), heartbeat);
+      std::cerr << sender << ": got spline model " << splines.model_key().substr(0, 12) << ", model hash "
+                << served.model_hash << " after " << splines.requests_sent() << " request(s)\n";
+    }
+  }
+  return std::nullopt;
+}
+
+using ContactServer = wrc::bus::RequestServer<wrc::contact_query_t, wrc::contact_reply_t>;
+
+/// The checks of a query before it is computed (this service's model and geometry key, then the
+/// protocol's rules), and the error reply for one that fails them.
+void set_query_checks(ContactServer& server, const ServedModel& served, const std::string& instance,
+                      const std::string& key) {
+  using wrc::contact_query_t;
+  using wrc::contact_reply_t;
+  server.set_validator([&served, key](const contact_query_t& query) -> std::string {
+    if (!query.model.empty() && query.model != served.name) {
+      return "model = '" + query.model + "' but this service runs '" + served.name + "'";
+    }
+    if (!query.geometry_key.empty() && query.geometry_key != key) {
+      return "geometry_key = '" + query.geometry_key + "' but this service computes with geometry_key " + key;
+    }
+    return wrc::protocol::validate_query(query);
+  });
+  server.set_error_filler([&served, instance, key](const contact_query_t&, wrc::bus::RequestError error,
+                                                   const std::string& why, contact_reply_t& reply) {
+    reply.model = served.name;
+    reply.instance = instance;
+    reply.geometry_key = key;
+    reply.model_hash = served.model_hash;
+    reply.status = error == wrc::bus::RequestError::kBadRequest ? contact_reply_t::BAD_REQUEST
+                                                                : contact_reply_t::INTERNAL_ERROR;
+    reply.message = why;
+    reply.num_configurations = 0;
+    reply.results.clear();
+  });
+}
+
 int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOptions& options) {
   using namespace wrc::bus;
   using wrc::contact_query_t;
@@ -97,143 +230,50 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   auto lcm = open_lcm(service.lcm_url, service.bus_key);
   const std::string request_channel = names.name(channel::kContactQuery, options.model);
   const std::string sender = sender_name("wrc-contactd", service.instance);
-  const std::string model_name = options.model;
   const std::string instance = service.instance;
   const std::string key = wrc::geometry_key(options.geometry);
+  ServedModel served;
+  served.name = options.model;
 
   HeartbeatPublisher heartbeat(*lcm, names.name(channel::kHeartbeat),
-                               {"wrc-contactd", model_name, instance, request_channel}, service.heartbeat_period);
+                               {"wrc-contactd", served.name, instance, request_channel}, service.heartbeat_period);
   heartbeat.set_geometry_key(key);
   // What the process does, for `wrc status`: each phase below replaces it.
-  std::function<std::string()> activity = [&] { return "starting"; };
+  std::function<std::string()> activity = [] { return "starting"; };
   heartbeat.set_activity_source([&activity] { return activity(); });
   heartbeat.publish_now();  // STARTING
 
-  const wrc::ContactModelEntry& entry = wrc::contact_model_entry(model_name);
-  std::shared_ptr<const wrc::ContactModel> model;  // replaced (loop thread only) when a new spline model comes
-  std::string model_hash;
-  std::shared_ptr<const wrc::WheelsetGeometry> geometry;
-  std::unique_ptr<wrc::contactd::SplineModelSource> splines;
-  // Builds the spline model from newly received splines and publishes its hash (loop thread only).
-  auto adopt = [&](std::shared_ptr<const wrc::SplineContactGeometry> fitted) {
-    model = wrc::make_contact_model(model_name, geometry, wrc::ContactModelOptions{}, {std::move(fitted)});
-    model_hash = wrc::contactd::model_hash(*model);
-    heartbeat.set_model_hash(model_hash);
-  };
-  if (!entry.needs_data) {
-    // Build in a worker thread so that STARTING heartbeats keep coming while the model is built
-    // (the interpolated model takes a while); LCM is only used from this thread.
-    std::cerr << sender << ": building the " << model_name << " model (wheel " << options.geometry.wheel << ", rail "
-              << options.geometry.rail << ", geometry key " << key << ")\n";
-    activity = [&] { return "building the " + model_name + " model"; };
-    auto pending = std::async(std::launch::async, build, std::cref(options));
-    while (pending.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
-      if (ShutdownSignal::requested()) {
-        heartbeat.set_state(wrc::heartbeat_t::DRAINING);
-        std::cerr << sender << ": signal " << ShutdownSignal::signal_number()
-                  << " while building the model; exiting without waiting for it\n";
-        std::cerr.flush();
-        std::_Exit(0);  // the build thread cannot be interrupted; nothing else needs cleaning up
-      }
-      heartbeat.tick();
-    }
-    Built built;
-    try {
-      built = pending.get();
-    } catch (const std::exception& e) {
-      heartbeat.set_state(wrc::heartbeat_t::DRAINING);
-      std::cerr << sender << ": cannot build the " << model_name << " model: " << e.what() << "\n";
-      return 1;
-    }
-    std::cerr << sender << ": built the " << model_name << " model in " << built.model_seconds << " s (geometry "
-              << built.geometry_seconds << " s)"
-              << (built.model_hash.empty() ? std::string() : ", model hash " + built.model_hash) << "\n";
-    model = std::move(built.model);
-    model_hash = built.model_hash;
-  } else {
-    // The model's data come from wrc-geometryd: ask, and wait (STARTING) until they are here.
-    try {
-      geometry = std::make_shared<const wrc::WheelsetGeometry>(wrc::make_geometry(options.geometry));
-    } catch (const std::exception& e) {
-      heartbeat.set_state(wrc::heartbeat_t::DRAINING);
-      std::cerr << sender << ": cannot build the geometry: " << e.what() << "\n";
-      return 1;
-    }
-    splines = std::make_unique<wrc::contactd::SplineModelSource>(*lcm, names, sender, options.geometry,
-                                                                 wrc::SplineFitOptions{}, kModelRequestPeriod);
-    activity = [&] {
-      const std::string& p = splines->last_progress();
-      return "waiting for spline model " + splines->model_key().substr(0, 12) + " from wrc-geometryd" +
-             (p.empty() ? std::string() : " (" + p + ")");
-    };
-    std::cerr << sender << ": waiting for spline model " << splines->model_key().substr(0, 12)
-              << " from wrc-geometryd (geometry key " << key << ")\n";
-    while (!model) {
-      if (ShutdownSignal::requested()) {
-        heartbeat.set_state(wrc::heartbeat_t::DRAINING);
-        std::cerr << sender << ": signal " << ShutdownSignal::signal_number() << " while waiting for the model\n";
-        return 0;
-      }
-      splines->tick();
-      if (lcm->handleTimeout(20) < 0) {
-        std::cerr << sender << ": LCM failed while waiting for the model\n";
-        return 1;
-      }
-      heartbeat.tick();
-      if (auto fitted = splines->take()) {
-        adopt(std::move(fitted));
-        std::cerr << sender << ": got spline model " << splines->model_key().substr(0, 12) << ", model hash "
-                  << model_hash << " after " << splines->requests_sent() << " request(s)\n";
-      }
-    }
-  }
-  heartbeat.set_model_hash(model_hash);
+  const EarlyExit early = wrc::contact_model_entry(served.name).needs_data
+                              ? wait_for_spline_model(*lcm, names, options, sender, key, heartbeat, activity, served)
+                              : build_model(options, sender, key, heartbeat, activity, served);
+  if (early) return *early;
+  heartbeat.set_model_hash(served.model_hash);
 
   LatencyWindow compute_times;  // recent evaluation times [s], for the log
-  wrc::contactd::InstanceFilter filter(*lcm, names.name(channel::kHeartbeat), model_name, instance);
-  RequestServer<contact_query_t, contact_reply_t> server(
-      *lcm, request_channel, sender, [&](const contact_query_t& query, contact_reply_t& reply) {
-        const double t0 = monotonic_seconds();
-        reply.model = model_name;
-        reply.instance = instance;
-        reply.geometry_key = key;
-        reply.model_hash = model_hash;
-        wrc::contactd::evaluate_query(*model, query, reply);
-        reply.compute_time = monotonic_seconds() - t0;
-        compute_times.add(reply.compute_time);
-      });
-  server.set_address_filter([&filter](const contact_query_t& query) { return filter.answers(query); });
-  server.set_validator([&](const contact_query_t& query) -> std::string {
-    if (!query.model.empty() && query.model != model_name) {
-      return "model = '" + query.model + "' but this service runs '" + model_name + "'";
-    }
-    if (!query.geometry_key.empty() && query.geometry_key != key) {
-      return "geometry_key = '" + query.geometry_key + "' but this service computes with geometry_key " + key;
-    }
-    return wrc::protocol::validate_query(query);
-  });
-  server.set_error_filler([&](const contact_query_t&, RequestError error, const std::string& why,
-                              contact_reply_t& reply) {
-    reply.model = model_name;
+  wrc::contactd::InstanceFilter filter(*lcm, names.name(channel::kHeartbeat), served.name, instance);
+  ContactServer server(*lcm, request_channel, sender, [&](const contact_query_t& query, contact_reply_t& reply) {
+    const double t0 = monotonic_seconds();
+    reply.model = served.name;
     reply.instance = instance;
     reply.geometry_key = key;
-    reply.model_hash = model_hash;
-    reply.status = error == RequestError::kBadRequest ? contact_reply_t::BAD_REQUEST : contact_reply_t::INTERNAL_ERROR;
-    reply.message = why;
-    reply.num_configurations = 0;
-    reply.results.clear();
+    reply.model_hash = served.model_hash;
+    wrc::contactd::evaluate_query(*served.model, query, reply);
+    reply.compute_time = monotonic_seconds() - t0;
+    compute_times.add(reply.compute_time);
   });
+  server.set_address_filter([&filter](const contact_query_t& query) { return filter.answers(query); });
+  set_query_checks(server, served, instance, key);
 
-  activity = ServingActivity(model_name + " queries", [&server] { return server.counters().answered; });
+  activity = ServingActivity(served.name + " queries", [&server] { return server.counters().answered; });
   ServiceLoop loop(*lcm, heartbeat);
   loop.add_load_source(&server);
-  if (splines) {
+  if (served.splines) {
     // A recompute of the same model (same model_key, new data) replaces the model between queries.
     loop.set_idle_hook([&] {
-      auto fitted = splines->take();
+      auto fitted = served.splines->take();
       if (!fitted) return;
-      adopt(std::move(fitted));
-      std::cerr << sender << ": replaced the spline model, model hash now " << model_hash << "\n";
+      served.adopt(std::move(fitted), heartbeat);
+      std::cerr << sender << ": replaced the spline model, model hash now " << served.model_hash << "\n";
     });
   }
   std::cerr << sender << ": serving " << request_channel << "\n";

@@ -31,7 +31,7 @@ void write_ellipse(std::ofstream& out, double a, double b, double xi, double eta
   }
 }
 
-int run_area(const std::vector<std::string>& args) {
+std::vector<OptionSpec> area_option_specs() {
   auto specs = profile_option_specs();
   for (auto& spec : pose_option_specs()) specs.push_back(spec);
   specs.push_back(side_option_spec());
@@ -42,8 +42,72 @@ int run_area(const std::vector<std::string>& args) {
   specs.push_back({"--spline", false, "also the spline model's ellipse (fits the model first, a few seconds)", ""});
   for (const auto& spec : fit_option_specs()) specs.push_back(spec);
   for (const auto& spec : image_option_specs("area.png")) specs.push_back(spec);
+  return specs;
+}
+
+// Appends one plot clause to the gnuplot plot command.
+void add_plot(std::string& plots, const std::string& clause) { plots += (plots.empty() ? "" : ", ") + clause; }
+
+// The outlines distance = 25, 50, ... um up to eps0 [m], one data file per level.
+void add_level_lines(GnuplotJob& job, const ContactArea& area, double eps0, std::string& plots) {
+  const double step = 25e-6;
+  for (int k = 1; k * step <= eps0 * (1 + 1e-12); ++k) {
+    const double level = k * step;
+    const auto segments = level_line(area.grid.xi, area.grid.eta, area.grid.distance, level);
+    if (segments.empty()) continue;
+    const std::string name = format("level_%d.dat", k);
+    auto out = job.open_data(name);
+    out << "# eta[m] xi[m]: segments of the outline distance = " << level << " m\n";
+    for (const auto& s : segments) out << s.y0 << " " << s.x0 << "\n" << s.y1 << " " << s.x1 << "\n\n";
+    add_plot(plots, quoted(job.data_path(name)) +
+                        format(" using ($1*1e3):($2*1e3) with lines lw 1.5 lc palette frac %.3f title 'ε0 = %.0f µm'",
+                               (k - 1) / std::max(1.0, std::floor(eps0 / step + 1e-9) - 1), level * 1e6));
+  }
+}
+
+// The Hertz ellipse at the common point for normal_force [N] (modulus E* [Pa]); a warning when
+// Hertz has no ellipse there.
+void add_hertz_ellipse(GnuplotJob& job, const ContactArea& area, double modulus, double normal_force,
+                       std::string& plots) {
+  const ContactModelOptions model_options;
+  try {
+    const PatchShape shape = contact_shape(area.common, model_options.lateral_curvature_floor);
+    const HertzContact hertz = hertz_from_force(shape.shape, modulus, normal_force);
+    auto out = job.open_data("hertz.dat");
+    write_ellipse(out, hertz.a, hertz.b, 0, 0);
+    add_plot(plots, quoted(job.data_path("hertz.dat")) +
+                        format(" using ($1*1e3):($2*1e3) with lines lw 2.5 dt 2 lc rgb 'black' title 'Hertz ellipse "
+                               "at P, N = %.0f kN (a = %.2f mm, b = %.2f mm)'",
+                               normal_force * 1e-3, hertz.a * 1e3, hertz.b * 1e3));
+  } catch (const std::exception& e) {
+    std::cerr << "wrc plot area: no Hertz ellipse at the common point: " << e.what() << "\n";
+  }
+}
+
+// The spline model's ellipse (fitted in-process) at its fitted contact point projected onto E.
+void add_spline_ellipse(GnuplotJob& job, const WheelsetGeometry& geometry, const SplineFitOptions& fit_options,
+                        WheelSide side, const ContactArea& area, double modulus, double normal_force,
+                        std::string& plots) {
+  const SplineFit fit = fit_spline_geometry(geometry, fit_options);
+  const SplineContactGeometry& splines = *fit.model;
+  if (!splines.inside(side, area.pose)) throw std::runtime_error("--spline: " + splines.outside_reason(side, area.pose));
+  SplineEvaluation evaluation;
+  splines.evaluate(side, area.pose, SplineDerivatives::kValue, evaluation);
+  const ContactPoint fitted = splines.contact_point(side, area.pose, evaluation);
+  const HertzContact hertz = hertz_from_force(splines.patch_shape(evaluation).shape, modulus, normal_force);
+  const Eigen::Vector3d offset = fitted.wheel_point - area.origin;
+  const double xi = offset.dot(area.t1), eta = offset.dot(area.t2);
+  auto out = job.open_data("spline.dat");
+  write_ellipse(out, hertz.a, hertz.b, xi, eta);
+  add_plot(plots, quoted(job.data_path("spline.dat")) +
+                      format(" using ($1*1e3):($2*1e3) with lines lw 2.5 dt 4 lc rgb '#9467bd' title 'spline model "
+                             "ellipse (a = %.2f mm, b = %.2f mm, centre η = %.2f mm)'",
+                             hertz.a * 1e3, hertz.b * 1e3, eta * 1e3));
+}
+
+int run_area(const std::vector<std::string>& args) {
   Options opt("plot area", "--y Y [--roll PHI] [--yaw PSI] [--wheel-side left|right] [--eps0 E] [--out FILE] [options]",
-              specs, args);
+              area_option_specs(), args);
   if (opt.help_requested()) {
     std::cout << opt.help()
               << "\nThe paper's figures 1-3, bottom: the wheel lowered onto the rail in the common point P; in the\n"
@@ -70,60 +134,17 @@ int run_area(const std::vector<std::string>& args) {
   const ContactArea area = compute_contact_area(geometry, side, pose, options);
   GnuplotJob job;
   std::string plots;
-  const double step = 25e-6;
-  for (int k = 1; k * step <= eps0 * (1 + 1e-12); ++k) {
-    const double level = k * step;
-    const auto segments = level_line(area.grid.xi, area.grid.eta, area.grid.distance, level);
-    if (segments.empty()) continue;
-    const std::string name = format("level_%d.dat", k);
-    auto out = job.open_data(name);
-    out << "# eta[m] xi[m]: segments of the outline distance = " << level << " m\n";
-    for (const auto& s : segments) out << s.y0 << " " << s.x0 << "\n" << s.y1 << " " << s.x1 << "\n\n";
-    plots += (plots.empty() ? "" : ", ") + quoted(job.data_path(name)) +
-             format(" using ($1*1e3):($2*1e3) with lines lw 1.5 lc palette frac %.3f title 'ε0 = %.0f µm'",
-                    (k - 1) / std::max(1.0, std::floor(eps0 / step + 1e-9) - 1), level * 1e6);
-  }
-  const ContactModelOptions model_options;
+  add_level_lines(job, area, eps0, plots);
   const ContactMaterial material;
   const double modulus = contact_modulus(material.shear_modulus, material.poisson_ratio);
-  if (normal_force > 0) {
-    try {
-      const PatchShape shape = contact_shape(area.common, model_options.lateral_curvature_floor);
-      const HertzContact hertz = hertz_from_force(shape.shape, modulus, normal_force);
-      auto out = job.open_data("hertz.dat");
-      write_ellipse(out, hertz.a, hertz.b, 0, 0);
-      plots += (plots.empty() ? "" : ", ") + quoted(job.data_path("hertz.dat")) +
-               format(" using ($1*1e3):($2*1e3) with lines lw 2.5 dt 2 lc rgb 'black' title 'Hertz ellipse at P, "
-                      "N = %.0f kN (a = %.2f mm, b = %.2f mm)'",
-                      normal_force * 1e-3, hertz.a * 1e3, hertz.b * 1e3);
-    } catch (const std::exception& e) {
-      std::cerr << "wrc plot area: no Hertz ellipse at the common point: " << e.what() << "\n";
-    }
-  }
-  if (with_spline && normal_force > 0) {
-    const SplineFit fit = fit_spline_geometry(geometry, fit_options);
-    const SplineContactGeometry& splines = *fit.model;
-    if (!splines.inside(side, area.pose)) throw std::runtime_error("--spline: " + splines.outside_reason(side, area.pose));
-    SplineEvaluation evaluation;
-    splines.evaluate(side, area.pose, SplineDerivatives::kValue, evaluation);
-    const ContactPoint fitted = splines.contact_point(side, area.pose, evaluation);
-    const HertzContact hertz = hertz_from_force(splines.patch_shape(evaluation).shape, modulus, normal_force);
-    // The fitted contact point projected onto E.
-    const Eigen::Vector3d offset = fitted.wheel_point - area.origin;
-    const double xi = offset.dot(area.t1), eta = offset.dot(area.t2);
-    auto out = job.open_data("spline.dat");
-    write_ellipse(out, hertz.a, hertz.b, xi, eta);
-    plots += (plots.empty() ? "" : ", ") + quoted(job.data_path("spline.dat")) +
-             format(" using ($1*1e3):($2*1e3) with lines lw 2.5 dt 4 lc rgb '#9467bd' title 'spline model ellipse "
-                    "(a = %.2f mm, b = %.2f mm, centre η = %.2f mm)'",
-                    hertz.a * 1e3, hertz.b * 1e3, eta * 1e3);
-  }
+  if (normal_force > 0) add_hertz_ellipse(job, area, modulus, normal_force, plots);
+  if (with_spline && normal_force > 0)
+    add_spline_ellipse(job, geometry, fit_options, side, area, modulus, normal_force, plots);
   {
     auto out = job.open_data("common.dat");
     out << "0 0\n";
   }
-  plots += (plots.empty() ? "" : ", ") + quoted(job.data_path("common.dat")) +
-           " using 1:2 with points pt 2 ps 2 lc rgb 'black' title 'common point P'";
+  add_plot(plots, quoted(job.data_path("common.dat")) + " using 1:2 with points pt 2 ps 2 lc rgb 'black' title 'common point P'");
   const std::string title = format("Contact area, %s wheel: ", side_name(side)) + geometry_title(spec) + "\n" +
                             pose_title(pose) +
                             format(", P at s = %.2f mm, contact angle %.2f°", area.common.s * 1e3,

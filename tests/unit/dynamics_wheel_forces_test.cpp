@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Y, Q, the creep forces, T gamma and p_max of one wheel from the patches of one contact result of
-// a real model (one-point, S1002 on UIC60, a displaced, yawed and moving wheelset so that every
-// creepage is non-zero), against a computation written out here from the patch fields: the contact
-// frame built by hand (t1 = e_x projected onto the contact plane, t2 = n x t1), the sums and signs of
-// docs/run-quantities.md. And the physical signs: in flange contact the flanging wheel's Y and Y/Q
-// are positive and large.
+// Y, Q, the creep forces, T gamma and p_max of one wheel: from
+// patches whose sums are worked out on paper (docs/run-quantities.md's definitions), and on a real
+// model's contact (one-point, S1002 on UIC60) against the model's own resultant. And the physical
+// signs: in flange contact the flanging wheel's Y and Y/Q are positive and large.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -37,55 +35,81 @@ ContactResult contact_at(double y, double yaw) {
   return make_contact_model("onepoint", geometry)->evaluate(q);
 }
 
-struct HandSums {
-  double y = 0, q = 0, fx = 0, fy = 0, t_gamma = 0, p_max = 0, n = 0;
-};
-
-// The wheel's sums, written out from the patch fields.
-HandSums by_hand(const ContactResult& c, int wheel) {
-  HandSums h;
-  const double side = wheel == 0 ? 1.0 : -1.0;  // left wheel at +y
-  for (const ContactPatch& p : c.patches) {
-    if (static_cast<int>(p.point.side) != wheel) continue;
-    const Eigen::Vector3d n = p.point.normal.normalized();
-    const Eigen::Vector3d ex(1.0, 0.0, 0.0);
-    const Eigen::Vector3d t1 = (ex - ex.dot(n) * n).normalized();
-    const Eigen::Vector3d t2 = n.cross(t1);
-    const Eigen::Vector3d f = p.normal_force * n + p.forces.fx * t1 + p.forces.fy * t2;
-    h.y += -side * f.y();  // towards the track centre
-    h.q += f.z();
-    h.fx += p.forces.fx;
-    h.fy += p.forces.fy;
-    h.t_gamma += std::abs(p.forces.fx * p.creepages.longitudinal) + std::abs(p.forces.fy * p.creepages.lateral);
-    h.p_max = std::max(h.p_max, 3.0 * p.normal_force / (2.0 * kPi * p.a * p.b));
-    h.n += p.normal_force;
-  }
-  return h;
+// A patch of wheel side with contact angle delta given by its sine and cosine (normal from the
+// rail into the wheel, in the y-z plane: no yaw, so t1 = e_x and t2 = n x e_x), its normal and
+// creep forces [N], creepages [-] and semi-axes [m].
+ContactPatch patch(WheelSide side, double sin_delta, double cos_delta, double n, double fx, double fy, double xi_x,
+                   double xi_y, double a, double b) {
+  ContactPatch p;
+  p.point.side = side;
+  p.point.normal = Eigen::Vector3d(0.0, side == WheelSide::kLeft ? -sin_delta : sin_delta, cos_delta);
+  p.normal_force = n;
+  p.forces.fx = fx;
+  p.forces.fy = fy;
+  p.creepages.longitudinal = xi_x;
+  p.creepages.lateral = xi_y;
+  p.a = a;
+  p.b = b;
+  return p;
 }
 
-// Every read-off of both wheels equals the hand computation to rounding (1e-12 relative: the same
-// sums in another order), and both wheels' forces add up to the model's own resultant (its
-// add_to_resultant), to 1e-9 of the load.
-TEST(WheelForces, MatchAHandComputationFromThePatches) {
+// Two wheels whose read-offs are worked out on paper (docs/run-quantities.md's definitions), with
+// angles whose sine and cosine are exact in binary (3-4-5 triangles), so every expected value is
+// exact up to the rounding of a few products:
+// - right wheel, one flange patch, sin 0.6, cos 0.8: n = (0, 0.6, 0.8), t2 = n x e_x = (0, 0.8,
+//   -0.6). N = 50 kN, fx = 5 kN, fy = 10 kN: F_y = 30 + 8 = 38 kN = Y (towards the centre on the
+//   right wheel), Q = F_z = 40 - 6 = 34 kN, T gamma = |5e3 1e-3| + |1e4 (-2e-3)| = 25 N, p_max =
+//   3 N / (2 pi a b) with a = 6 mm, b = 4 mm: 3.125e9 / pi Pa.
+// - left wheel, a tread patch (n = e_z, t2 = (0, 1, 0)) and a flange patch (sin 0.6: n = (0,
+//   -0.6, 0.8), t2 = (0, 0.8, 0.6)): N = 40 + 20 kN, fy = 2 and -5 kN: F_y = 2 - 12 - 4 = -14 kN, so
+//   Y = +14 kN; Q = 40 + 16 - 3 = 53 kN; the normal resultant per unit N is (0, -12, 56) / 60;
+//   T gamma = |1e3 5e-4| + |2e3 1e-3| + |-1e3 (-1e-3)| + |-5e3 (-3e-3)| = 0.5 + 2 + 1 + 15 = 18.5 N;
+//   p_max from the smaller flange patch, 3 20e3 / (2 pi 3e-3 2e-3) = 5e9 / pi Pa.
+TEST(WheelForces, ReadOffsOfPatchesWorkedOutOnPaper) {
+  ContactResult c;
+  c.patches = {patch(WheelSide::kLeft, 0.0, 1.0, 40e3, 1e3, 2e3, 5e-4, 1e-3, 6e-3, 4e-3),
+               patch(WheelSide::kLeft, 0.6, 0.8, 20e3, -1e3, -5e3, -1e-3, -3e-3, 3e-3, 2e-3),
+               patch(WheelSide::kRight, 0.6, 0.8, 50e3, 5e3, 10e3, 1e-3, -2e-3, 6e-3, 4e-3)};
+  std::array<WheelOutput, 2> out;
+  std::array<WheelForces, 2> f;
+  for (int wheel = 0; wheel < 2; ++wheel) {
+    f[static_cast<size_t>(wheel)] = wheel_forces(c, wheel);
+    set_force_outputs(f[static_cast<size_t>(wheel)], f[static_cast<size_t>(wheel)].normal_force, wheel,
+                      out[static_cast<size_t>(wheel)]);
+  }
+  const double tol = 1e-9;  // [N]: products of numbers of a few significant digits, rounded
+  EXPECT_NEAR(f[1].normal_force, 50e3, tol);
+  EXPECT_NEAR(out[1].lateral_force, 38e3, tol);
+  EXPECT_NEAR(out[1].vertical_force, 34e3, tol);
+  EXPECT_NEAR(out[1].y_over_q(), 38.0 / 34.0, 1e-15);
+  EXPECT_NEAR(out[1].creep_force_x, 5e3, tol);
+  EXPECT_NEAR(out[1].creep_force_y, 10e3, tol);
+  EXPECT_NEAR(out[1].wear_number, 25.0, 1e-12);
+  EXPECT_NEAR(out[1].max_pressure, 3.125e9 / kPi, 1e-6);
+  EXPECT_NEAR(f[0].normal_force, 60e3, tol);
+  EXPECT_NEAR(out[0].lateral_force, 14e3, tol);
+  EXPECT_NEAR(out[0].vertical_force, 53e3, tol);
+  EXPECT_NEAR(out[0].creep_force_x, 0.0, tol);
+  EXPECT_NEAR(out[0].creep_force_y, -3e3, tol);
+  EXPECT_NEAR(out[0].wear_number, 18.5, 1e-12);
+  EXPECT_NEAR(out[0].max_pressure, 5e9 / kPi, 1e-6);
+  EXPECT_NEAR((f[0].normal_direction - Eigen::Vector3d(0.0, -0.2, 56.0 / 60.0)).norm(), 0.0, 1e-15);
+  // The track-shift force sum Y = Y_L - Y_R: 14 - 38 kN.
+  EXPECT_NEAR(track_shift_force(out[0].lateral_force, out[1].lateral_force), -24e3, tol);
+}
+
+// On a real model's contact (one-point, S1002 on UIC60, displaced, yawed, moving: every creepage
+// non-zero, t1 not along e_x), both wheels' forces add up to the model's own resultant (its
+// add_to_resultant), to 1e-9 of the load, and T gamma is positive: the sums agree with the
+// model's in a general configuration.
+TEST(WheelForces, BothWheelsAddUpToTheModelsResultant) {
   for (const double y : {-2e-3, 3e-3}) {
     const ContactResult c = contact_at(y, 1.5e-3);
     Eigen::Vector3d total = Eigen::Vector3d::Zero();
     for (int wheel = 0; wheel < 2; ++wheel) {
-      const HandSums h = by_hand(c, wheel);
-      ASSERT_GT(h.n, 0.0);
-      ASSERT_GT(h.t_gamma, 0.0) << "the state must have creepage for the test to mean something";
       const WheelForces f = wheel_forces(c, wheel);
-      WheelOutput out;
-      set_force_outputs(f, f.normal_force, wheel, out);
-      const double scale = h.n;  // [N]
-      EXPECT_NEAR(f.normal_force, h.n, 1e-12 * scale);
-      EXPECT_NEAR(out.lateral_force, h.y, 1e-12 * scale) << "y " << y << " wheel " << wheel;
-      EXPECT_NEAR(out.vertical_force, h.q, 1e-12 * scale);
-      EXPECT_NEAR(out.creep_force_x, h.fx, 1e-12 * scale);
-      EXPECT_NEAR(out.creep_force_y, h.fy, 1e-12 * scale);
-      EXPECT_NEAR(out.wear_number, h.t_gamma, 1e-12 * h.t_gamma);
-      EXPECT_NEAR(out.max_pressure, h.p_max, 1e-12 * h.p_max);
-      EXPECT_NEAR(out.y_over_q(), h.y / h.q, 1e-12);
+      ASSERT_GT(f.normal_force, 0.0);
+      EXPECT_GT(f.wear_number, 0.0) << "the state must have creepage for the test to mean something";
       total += f.force(f.normal_force);
     }
     EXPECT_NEAR((total - c.force).norm(), 0.0, 1e-9 * 1.71e5) << "y " << y;

@@ -1,16 +1,20 @@
 // SPDX-License-Identifier: Apache-2.0
 // `wrc plot KIND` as the user runs it: each kind writes a PNG of the size asked for (read from the
-// PNG header) or an SVG from a small case; several bifurcation diagrams hand gnuplot the series
-// they should; a bad option and a missing gnuplot give one-line errors.
+// PNG header) or an SVG from a small case; for run, conicity, geometry, area and bifurcation what
+// was handed to gnuplot (captured by a gnuplot on PATH that copies the job's script and data) is
+// checked against the physics and the inputs; a bad option and a missing gnuplot give one-line
+// errors.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -80,6 +84,51 @@ class PlotTest : public ::testing::Test {
     EXPECT_EQ(size.height, 480u);
   }
 
+  // Runs `wrc plot ARGS --out DIR/NAME` with a gnuplot on PATH that copies the job's script and
+  // data to DIR/capture before running the real one; returns the command's output.
+  std::string plot_captured(const std::string& args, const std::string& name) {
+    const fs::path bin = dir_ / "bin";
+    if (!fs::exists(bin / "gnuplot")) {
+      fs::create_directories(bin);
+      fs::create_directories(capture());
+      int found = -1;
+      const std::string real = run_command("command -v gnuplot", &found);
+      std::ofstream script(bin / "gnuplot");
+      script << "#!/bin/sh\ncp \"$(dirname \"$1\")\"/* " << capture().string() << "/\nexec "
+             << real.substr(0, real.find('\n')) << " \"$@\"\n";
+      script.close();
+      fs::permissions(bin / "gnuplot", fs::perms::owner_all);
+    }
+    int status = -1;
+    const std::string out = (dir_ / name).string();
+    const std::string text =
+        run_command("PATH=" + bin.string() + ":/usr/bin:/bin " + kCli + " plot " + args + " --out " + out + " 2>&1",
+                    &status);
+    EXPECT_EQ(status, 0) << text;
+    EXPECT_TRUE(fs::exists(out)) << text;
+    return text;
+  }
+  fs::path capture() const { return dir_ / "capture"; }
+
+  // The rows of numbers of a captured data file (comment lines and blank lines left out).
+  std::vector<std::vector<double>> data_rows(const std::string& file) const {
+    std::ifstream in(capture() / file);
+    EXPECT_TRUE(in) << file << " was not handed to gnuplot";
+    std::vector<std::vector<double>> rows;
+    for (std::string line; std::getline(in, line);) {
+      if (line.empty() || line[0] == '#') continue;
+      std::istringstream fields(line);
+      std::vector<double> row;
+      for (double v; fields >> v;) row.push_back(v);
+      rows.push_back(row);
+    }
+    return rows;
+  }
+  std::string captured_script() const {
+    std::ifstream in(capture() / "plot.gp");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+
   fs::path dir_;
 };
 
@@ -124,6 +173,25 @@ TEST_F(PlotTest, Run) {
     }
   }
   expect_png("run " + (dir_ / "onepoint.csv").string() + " " + (dir_ / "spline.csv").string(), "run.png");
+  // What was drawn: per history one series of (t, y, s_right, normal_force_right) as written,
+  // each named by its model and file.
+  plot_captured("run " + (dir_ / "onepoint.csv").string() + " " + (dir_ / "spline.csv").string(), "run2.png");
+  for (const char* file : {"run_0.dat", "run_1.dat"}) {
+    const auto rows = data_rows(file);
+    ASSERT_EQ(rows.size(), 51u) << file;
+    for (int i = 0; i <= 50; ++i) {
+      const double t = 0.02 * i, y = 0.004 * std::exp(-t) * std::cos(8 * t);
+      const auto& r = rows[static_cast<size_t>(i)];
+      ASSERT_EQ(r.size(), 4u);
+      EXPECT_NEAR(r[0], t, 1e-5) << file;  // the history's text has six significant digits
+      EXPECT_NEAR(r[1], y, 1e-8) << file;
+      EXPECT_NEAR(r[2], -2 * y, 2e-8) << file;
+      EXPECT_NEAR(r[3], 75000 + 5e6 * y, 0.1) << file;
+    }
+  }
+  const std::string gp = captured_script();
+  EXPECT_NE(gp.find("onepoint (onepoint.csv)"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("spline (spline.csv)"), std::string::npos) << gp;
 }
 
 // --forces from a history with units in its headers and the force columns (as `wrc run --history`
@@ -158,6 +226,71 @@ TEST_F(PlotTest, Profiles) { expect_png("profiles --y 0.005", "profiles.png"); }
 
 TEST_F(PlotTest, Displacement) { expect_png("displacement --grid 21", "displacement.png"); }
 
+// What `wrc plot conicity` and `wrc plot geometry` draw for a cone (conic:0.05 on UIC60): the
+// rigid wheelset's rolling-radius difference is odd in y and, for a cone, linear in it (its points
+// on the wheel move along a straight generator), so the equivalent conicity is the same at every
+// amplitude and equals half the slope of delta_r: the two kinds' series agree with each other to
+// 1e-6, and with the cone's slope to the few per cent by which the wheelset's roll and the rail
+// head's curvature move the contact points (0.0526 here against 0.05). The
+// mirror image swaps the wheels: angle_left(y) = angle_right(-y), r_left(y) = r_right(-y).
+TEST_F(PlotTest, ConicityAndGeometryOfAConeDrawTheirSeries) {
+  plot_captured("conicity --wheel conic:0.05 --a-from 0.001 --a-to 0.004 --a-step 0.001 --samples 64", "c.png");
+  const auto conicity = data_rows("conicity.dat");
+  ASSERT_EQ(conicity.size(), 4u);
+  for (std::size_t i = 0; i < conicity.size(); ++i) {
+    EXPECT_NEAR(conicity[i][0], 1e-3 * static_cast<double>(i + 1), 1e-15);  // [m]
+    EXPECT_NEAR(conicity[i][1], conicity[0][1], 1e-6);
+  }
+  EXPECT_NEAR(conicity[0][1], 0.05, 0.05 * 0.06);
+  EXPECT_NE(captured_script().find("using ($1*1e3):2 "), std::string::npos) << captured_script();  // A in mm
+
+  fs::remove_all(capture());
+  fs::create_directories(capture());
+  plot_captured("geometry --wheel conic:0.05 --y-from -0.004 --y-to 0.004 --y-step 0.002", "g.png");
+  // y delta_r angle_left angle_right r_left r_right s_left s_right u_left u_right
+  const auto g = data_rows("geometry.dat");
+  ASSERT_EQ(g.size(), 5u);
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const auto& row = g[i];
+    const auto& mirror = g[g.size() - 1 - i];
+    ASSERT_EQ(row.size(), 10u);
+    EXPECT_NEAR(row[0], -4e-3 + 2e-3 * static_cast<double>(i), 1e-15);
+    EXPECT_NEAR(row[1], -mirror[1], 1e-12);
+    EXPECT_NEAR(row[2], mirror[3], 1e-9);
+    EXPECT_NEAR(row[4], mirror[5], 1e-12);
+    if (row[0] != 0.0) {
+      EXPECT_NEAR(row[1] / (2 * row[0]), conicity[0][1], 1e-6) << "y = " << row[0];
+    }
+  }
+  EXPECT_NE(captured_script().find("using ($1*1e3):($2*1e3)"), std::string::npos);  // y and delta_r in mm
+}
+
+// What `wrc plot area` draws (S1002 on UIC60, y = 3 mm): in the rolling direction the gap near P is
+// that of the wheel's circle, xi^2 / (2 r) with r about the rolling radius 0.46 m, so the outline
+// at eps0 = k 25 um reaches xi = sqrt(2 r k 25 um) (grid 61: 0.67 mm spacing, the outline
+// interpolated between nodes: 1.5 %); the Hertz ellipse is the ellipse of the semi-axes its key
+// names (a along xi, b along eta, printed to 0.01 mm); the common point is at the origin.
+TEST_F(PlotTest, AreaDrawsTheLevelLinesAndTheHertzEllipse) {
+  plot_captured("area --y 0.003 --grid 61", "a.png");
+  for (int k = 1; k <= 6; ++k) {
+    double reach = 0.0;  // [m]
+    for (const auto& row : data_rows("level_" + std::to_string(k) + ".dat")) reach = std::max(reach, std::abs(row[1]));
+    EXPECT_NEAR(reach, std::sqrt(2 * 0.46 * k * 25e-6), 0.015 * reach) << "eps0 = " << 25 * k << " um";
+  }
+  const std::string gp = captured_script();
+  const auto at = gp.find("Hertz ellipse at P, N = 75 kN (a = ");
+  ASSERT_NE(at, std::string::npos) << gp;
+  double a = 0, b = 0;
+  ASSERT_EQ(std::sscanf(gp.c_str() + at, "Hertz ellipse at P, N = 75 kN (a = %lf mm, b = %lf mm)", &a, &b), 2);
+  a *= 1e-3;
+  b *= 1e-3;
+  const auto ellipse = data_rows("hertz.dat");  // eta xi
+  ASSERT_EQ(ellipse.size(), 361u);
+  for (const auto& row : ellipse)
+    EXPECT_NEAR(std::hypot(row[1] / a, row[0] / b), 1.0, 0.005) << row[0] << " " << row[1];
+  EXPECT_EQ(data_rows("common.dat"), (std::vector<std::vector<double>>{{0.0, 0.0}}));
+}
+
 // Several bifurcation diagrams in one picture (`wrc plot bifurcation A.csv B.csv --labels`): what
 // is handed to gnuplot, captured by a gnuplot on PATH that copies the job's script and data
 // before running the real one. Each file's stable cycles of its ramp-down are one data series in
@@ -184,46 +317,17 @@ TEST_F(PlotTest, SeveralBifurcationDiagramsInOnePicture) {
     out << header << row("ramp-down", 200, "limit-cycle", 4.5e-4, 0.065) << row("ramp-down", 190, "centred", 0, 0.02)
         << row("nonlinear-critical", 200, "limit-cycle", 4.5e-4, 0.065) << row("linear-critical", 385, "", 0, 0);
   }
-  const fs::path bin = dir_ / "bin", capture = dir_ / "capture";
-  fs::create_directories(bin);
-  fs::create_directories(capture);
+  plot_captured("bifurcation " + a.string() + " " + b.string() + " --labels spline,multipoint", "both.png");
+  const fs::path capture = this->capture();
   int status = -1;
-  const std::string real = run_command("command -v gnuplot", &status);
-  {
-    std::ofstream script(bin / "gnuplot");
-    script << "#!/bin/sh\ncp \"$(dirname \"$1\")\"/* " << capture.string() << "/\nexec "
-           << real.substr(0, real.find('\n')) << " \"$@\"\n";
-  }
-  fs::permissions(bin / "gnuplot", fs::perms::owner_all);
-  const std::string out = (dir_ / "both.png").string(), path = "PATH=" + bin.string() + ":/usr/bin:/bin ";
-  const std::string text = run_command(path + kCli + " plot bifurcation " + a.string() + " " + b.string() +
-                                           " --labels spline,multipoint --out " + out + " 2>&1",
-                                       &status);
-  ASSERT_EQ(status, 0) << text;
-  ASSERT_TRUE(fs::exists(out)) << text;
-  auto read = [](const fs::path& f) {
-    std::ifstream in(f);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  };
-  // A data file's (speed, amplitude) rows after its comment line.
-  auto series = [](const fs::path& f) {
-    std::ifstream in(f);
-    std::string comment;
-    std::getline(in, comment);
-    std::vector<std::pair<double, double>> rows;
-    for (double v, amplitude; in >> v >> amplitude;) rows.emplace_back(v, amplitude);
-    return rows;
-  };
-  const auto first = series(capture / "0-cycles.dat"), second = series(capture / "1-cycles.dat");
+  // Each file's (speed [m/s], amplitude [mm]) rows.
+  const auto first = data_rows("0-cycles.dat"), second = data_rows("1-cycles.dat");
   ASSERT_EQ(first.size(), 2u);
   ASSERT_EQ(second.size(), 1u);
-  EXPECT_EQ(first[0].first, 150.0);
-  EXPECT_NEAR(first[0].second, 0.4, 1e-12);  // [mm]
-  EXPECT_EQ(first[1].first, 200.0);
-  EXPECT_NEAR(first[1].second, 0.5, 1e-12);
-  EXPECT_EQ(second[0].first, 200.0);
-  EXPECT_NEAR(second[0].second, 0.45, 1e-12);
-  const std::string gp = read(capture / "plot.gp");
+  EXPECT_EQ(first[0], (std::vector<double>{150.0, 0.4}));
+  EXPECT_EQ(first[1], (std::vector<double>{200.0, 0.5}));
+  EXPECT_EQ(second[0], (std::vector<double>{200.0, 0.45}));
+  const std::string gp = captured_script();
   EXPECT_NE(gp.find("spline: stable cycles, V_nl = 150.00 m/s\""), std::string::npos) << gp;
   EXPECT_NE(gp.find("multipoint: stable cycles, V_nl = 200.00 m/s, V_c = 385.00 m/s\""), std::string::npos) << gp;
   EXPECT_EQ(std::count_if(fs::directory_iterator(capture), fs::directory_iterator(),

@@ -65,6 +65,12 @@ SplineFitOptions fit_options_from(const Options& options) {
     o.y_max = parse_finite(text.substr(colon + 1, c1 - colon - 1), "--box y_max");
     o.roll_max = parse_finite(text.substr(c1 + 1, c2 - c1 - 1), "--box roll_max");
     o.yaw_max = parse_finite(text.substr(c2 + 1), "--box yaw_max");
+    // Each part against its table entry's range, before any rule between them.
+    for (const char* key : {"y_min", "y_max", "roll_max", "yaw_max"}) {
+      const auto* entry = find_parameter(spline_fit_table(), key);
+      if (const auto why = entry->violation(entry->get(o)))
+        throw UsageError("--box: " + std::string(key) + " = " + entry->value_text(entry->get(o)) + " " + *why);
+    }
   }
   const std::string placement = options.choice("--knot-placement", {"graded", "uniform"});
   o.placement = placement == "uniform" ? KnotPlacement::kUniform : KnotPlacement::kGraded;

@@ -93,7 +93,7 @@ TEST_F(BusTest, FitCommandWritesTheAccuracyReport) {
   const std::string wide =
       run_command(std::string(WRC_CLI_PATH) + " fit --box -1e300:1e300,0.001,0.005 --report " + report + " 2>&1", &status);
   EXPECT_NE(status, 0);
-  EXPECT_NE(wide.find("y_min"), std::string::npos) << wide;
+  EXPECT_NE(wide.find("--box: y_min = -1e300 is outside [-0.05, 0.05] [m]"), std::string::npos) << wide;
   const std::string no_report = run_command(std::string(WRC_CLI_PATH) + " fit 2>&1", &status);
   EXPECT_NE(status, 0);
   EXPECT_NE(no_report.find("--report"), std::string::npos) << no_report;

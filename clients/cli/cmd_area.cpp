@@ -45,9 +45,10 @@ int run_area(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
   for (auto& spec : pose_option_specs()) specs.push_back(spec);
   specs.push_back(side_option_spec());
-  specs.push_back({"--eps0", true, "threshold of the table's last row [m] (rows every 25 um up to it)", "1.5e-4"});
-  specs.push_back({"--grid", true, "grid nodes per direction [-]", "61"});
-  specs.push_back({"--half-width", true, "half width of the square grid in E [m]", "0.02"});
+  specs.push_back({"--eps0", true, "threshold of the table's last row [m] (rows every 25 um up to it)", "1.5e-4",
+      NumberRange{1e-9, 0.01}});
+  specs.push_back({"--grid", true, "grid nodes per direction [-]", "61", NumberRange{2, 2001}});
+  specs.push_back({"--half-width", true, "half width of the square grid in E [m]", "0.02", NumberRange{1e-6, 0.1}});
   specs.push_back({"--format", true, "csv (the grid) or table (summary)", "table"});
   Options opt("area", "--y Y [--roll PHI] [--yaw PSI] [--wheel-side left|right] [--eps0 E] [--grid N] "
               "[--half-width W] [--format csv|table] [options]", specs, args);
@@ -65,10 +66,10 @@ int run_area(const std::vector<std::string>& args) {
   const WheelsetGeometry geometry = geometry_from_options(opt);
   const WheelsetPose pose = pose_from_options(opt, geometry.track().nominal_radius);
   const WheelSide side = side_from_options(opt);
-  const double eps0 = opt.number("--eps0", {1e-9, 0.01});
+  const double eps0 = opt.number("--eps0");
   ContactAreaOptions options;
-  options.n_xi = options.n_eta = opt.integer("--grid", {2, 2001});
-  options.half_width_xi = options.half_width_eta = opt.number("--half-width", {1e-6, 0.1});
+  options.n_xi = options.n_eta = opt.integer("--grid");
+  options.half_width_xi = options.half_width_eta = opt.number("--half-width");
   const bool csv = opt.choice("--format", {"csv", "table"}) == "csv";
 
   const ContactArea area = compute_contact_area(geometry, side, pose, options);

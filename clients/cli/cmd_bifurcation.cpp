@@ -64,20 +64,23 @@ std::vector<OptionSpec> bifurcation_option_specs() {
       {"--speeds", true, "speeds FROM:TO:STEP [m/s]; the ramp-down starts at the highest", "30:90:5"},
       {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
       {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
-      {"--disturbance", true, "y0 of the centred branch's runs [m]", number_text(defaults.small_disturbance.y)},
+      {"--disturbance", true, "y0 of the centred branch's runs [m]", number_text(defaults.small_disturbance.y),
+          kLateralShiftRange},
       {"--start-amplitude", true, "y0 of the ramp-down's first run, at the highest speed [m]",
-       number_text(defaults.large_disturbance.y)},
-      {"--settle-time", true, "simulated time before a run is first judged [s]", number_text(defaults.run.settle_time)},
-      {"--window", true, "the cycles are measured over the last window [s]", number_text(defaults.run.window)},
-      {"--max-time", true, "longest run [s]", number_text(defaults.run.max_time)},
+       number_text(defaults.large_disturbance.y), kLateralShiftRange},
+      {"--settle-time", true, "simulated time before a run is first judged [s]", number_text(defaults.run.settle_time),
+          NumberRange{1e-3, 1e4}},
+      {"--window", true, "the cycles are measured over the last window [s]", number_text(defaults.run.window),
+          NumberRange{1e-3, 1e4}},
+      {"--max-time", true, "longest run [s]", number_text(defaults.run.max_time), NumberRange{1e-3, 1e4}},
       {"--growth-tolerance", true, "|growth - 1| per cycle of a converged cycle [-]",
-       number_text(defaults.run.growth_tolerance)},
+       number_text(defaults.run.growth_tolerance), NumberRange{1e-6, 0.5}},
       {"--centred-amplitude", true, "amplitude below which the wheelset is centred [m]",
-       number_text(defaults.run.centred_amplitude)},
+       number_text(defaults.run.centred_amplitude), NumberRange{1e-12, 0.05}},
       {"--speed-tolerance", true, "bracket of the nonlinear critical speed at the end [m/s]",
-       number_text(defaults.speed_tolerance)},
+       number_text(defaults.speed_tolerance), NumberRange{1e-6, 1e3}},
       {"--persisting-amplitude", true, "a cycle persists only with at least this amplitude [m] (0: any)",
-       number_text(defaults.persisting_amplitude)},
+       number_text(defaults.persisting_amplitude), NumberRange{0, 0.05}},
       {"--unstable", false, "estimate the unstable cycle where the centred state and a cycle are both stable "
        "(bisection on y0, 6 runs of 2 s per speed)", ""},
       {"--out", true, "every run (CSV, units in the header)", "bifurcation.csv"},
@@ -97,15 +100,15 @@ std::vector<OptionSpec> bifurcation_option_specs() {
 // The continuation's settings from the command line, validated.
 ContinuationSettings continuation_settings_from(const Options& o) {
   ContinuationSettings settings;
-  settings.small_disturbance.y = o.number("--disturbance", kLateralShiftRange);
-  settings.large_disturbance.y = o.number("--start-amplitude", kLateralShiftRange);
-  settings.run.settle_time = o.number("--settle-time", {1e-3, 1e4});
-  settings.run.window = o.number("--window", {1e-3, 1e4});
-  settings.run.max_time = o.number("--max-time", {1e-3, 1e4});
-  settings.run.growth_tolerance = o.number("--growth-tolerance", {1e-6, 0.5});
-  settings.run.centred_amplitude = o.number("--centred-amplitude", {1e-12, 0.05});
-  settings.speed_tolerance = o.number("--speed-tolerance", {1e-6, 1e3});
-  settings.persisting_amplitude = o.number("--persisting-amplitude", {0, 0.05});
+  settings.small_disturbance.y = o.number("--disturbance");
+  settings.large_disturbance.y = o.number("--start-amplitude");
+  settings.run.settle_time = o.number("--settle-time");
+  settings.run.window = o.number("--window");
+  settings.run.max_time = o.number("--max-time");
+  settings.run.growth_tolerance = o.number("--growth-tolerance");
+  settings.run.centred_amplitude = o.number("--centred-amplitude");
+  settings.speed_tolerance = o.number("--speed-tolerance");
+  settings.persisting_amplitude = o.number("--persisting-amplitude");
   try {
     settings.validate();
   } catch (const std::invalid_argument& e) {

@@ -17,7 +17,7 @@ int run_conicity(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
   specs.push_back({"--amplitude", true, "lateral amplitude(s) [m], comma-separated, each in (0, 0.02]", ""});
   specs.push_back({"--method", true, "harmonic (harmonic linearisation of delta_r)", "harmonic"});
-  specs.push_back({"--samples", true, "points on the period for the Fourier integral", "512"});
+  specs.push_back({"--samples", true, "points on the period for the Fourier integral", "512", NumberRange{8, 100000}});
   specs.push_back({"--format", true, "csv or table", "csv"});
   Options opt("conicity", "--amplitude A[,A2,...] [--method harmonic] [options]", specs, args);
   if (opt.help_requested()) {
@@ -27,7 +27,7 @@ int run_conicity(const std::vector<std::string>& args) {
     return 0;
   }
   opt.choice("--method", {"harmonic"});
-  const int samples = opt.integer("--samples", {8, 100000});
+  const int samples = opt.integer("--samples");
   const bool csv = opt.choice("--format", {"csv", "table"}) == "csv";
   std::vector<double> amplitudes;
   std::stringstream list(opt.required_text("--amplitude"));

@@ -19,10 +19,10 @@ namespace {
 
 int run_geometry(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--yaw", true, "yaw angle of the wheelset [rad], within +-0.06 (validated range)", "0"});
-  specs.push_back({"--y-from", true, "first lateral shift [m] (> 0 towards the left rail)", ""});
-  specs.push_back({"--y-to", true, "last lateral shift [m]", ""});
-  specs.push_back({"--y-step", true, "lateral step [m]", ""});
+  specs.push_back({"--yaw", true, "yaw angle of the wheelset [rad], within +-0.06 (validated range)", "0", kYawRange});
+  specs.push_back({"--y-from", true, "first lateral shift [m] (> 0 towards the left rail)", "", kLateralShiftRange});
+  specs.push_back({"--y-to", true, "last lateral shift [m]", "", kLateralShiftRange});
+  specs.push_back({"--y-step", true, "lateral step [m]", "", NumberRange{1e-7, 0.05}});
   specs.push_back({"--format", true, "csv or table", "table"});
   Options opt("geometry", "--y-from A --y-to B --y-step H [options]", specs, args);
   if (opt.help_requested()) {
@@ -33,10 +33,10 @@ int run_geometry(const std::vector<std::string>& args) {
                  "z is the height of the wheelset centre above the top-of-rail plane.\n";
     return 0;
   }
-  const double y_from = opt.required_number("--y-from", kLateralShiftRange);
-  const double y_to = opt.required_number("--y-to", kLateralShiftRange);
-  const double step = opt.required_number("--y-step", {1e-7, 0.05});
-  const double yaw = opt.number("--yaw", kYawRange);
+  const double y_from = opt.required_number("--y-from");
+  const double y_to = opt.required_number("--y-to");
+  const double step = opt.required_number("--y-step");
+  const double yaw = opt.number("--yaw");
   const bool csv = opt.choice("--format", {"csv", "table"}) == "csv";
   if (y_to < y_from) throw UsageError("--y-to " + std::to_string(y_to) + " is below --y-from " + std::to_string(y_from));
   const long count = inclusive_range_count(y_from, y_to, step);

@@ -34,12 +34,13 @@ int run_irregularities(const std::vector<std::string>& args) {
   const IrregularityGeneration defaults;
   const std::vector<OptionSpec> specs{
       {"--spectrum", true, "published spectrum: " + joined(spectrum_names()), "erri-low"},
-      {"--length", true, "length of track from s = 0 [m]", number_text(defaults.length)},
-      {"--spacing", true, "distance of the samples [m]", number_text(defaults.spacing)},
+      {"--length", true, "length of track from s = 0 [m]", number_text(defaults.length), NumberRange{0.0, 1e7}},
+      {"--spacing", true, "distance of the samples [m]", number_text(defaults.spacing), NumberRange{0.0, 1e3}},
       {"--wavelengths", true, "wavelength band MIN:MAX [m]",
        number_text(defaults.min_wavelength) + ":" + number_text(defaults.max_wavelength)},
       {"--seed", true, "seed of the random phases (the same seed, the same track)", "1"},
-      {"--fade-in", true, "distance over which the channels rise from 0 [m]", number_text(defaults.fade_in)},
+      {"--fade-in", true, "distance over which the channels rise from 0 [m]", number_text(defaults.fade_in),
+          NumberRange{0.0, 1e7}},
       {"--out", true, "write the CSV here (default: standard output)", ""},
   };
   Options opt("irregularities", "[--spectrum erri-low] [--length L] [--wavelengths 3:150] [--seed N] [--out FILE.csv]",
@@ -54,9 +55,9 @@ int run_irregularities(const std::vector<std::string>& args) {
   }
   IrregularityGeneration g;
   g.spectrum = parse_irregularity_spectrum(opt.choice("--spectrum", spectrum_names()));
-  g.length = opt.number("--length", {0.0, 1e7});
-  g.spacing = opt.number("--spacing", {0.0, 1e3});
-  g.fade_in = opt.number("--fade-in", {0.0, 1e7});
+  g.length = opt.number("--length");
+  g.spacing = opt.number("--spacing");
+  g.fade_in = opt.number("--fade-in");
   const std::string band = opt.text("--wavelengths", number_text(defaults.min_wavelength) + ":" +
                                                          number_text(defaults.max_wavelength));
   const std::size_t colon = band.find(':');

@@ -35,10 +35,12 @@ int run_launch(const std::vector<std::string>& args) {
                    {"--channel-prefix", true, "channel prefix passed to every service", "none"},
                    {"--lcm-url", true, "LCM URL passed to every service", "LCM's default"},
                    {"--bus-key", true, "bus key file, created when missing", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
-                   {"--hang-periods", true, "restart a service silent for this many of its heartbeat periods", "2"},
+                   {"--hang-periods", true, "restart a service silent for this many of its heartbeat periods", "2",
+                       NumberRange{1.0, 100.0}},
                    {"--build-dir", true, "build tree holding the service executables", "this build"},
-                   {"--grace", true, "wait after SIGTERM before SIGKILL on stop [s]", "3"},
-                   {"--backoff-min", true, "first restart delay [s], doubles per quick failure", "0.25"},
+                   {"--grace", true, "wait after SIGTERM before SIGKILL on stop [s]", "3", NumberRange{0.0, 600.0}},
+                   {"--backoff-min", true, "first restart delay [s], doubles per quick failure", "0.25",
+                       NumberRange{0.01, 600.0}},
                    {"--backoff-max", true, "largest restart delay [s]", "8"},
                    {"--list", false, "print the profile's services and whether they are built, then exit", ""}},
                   args, Positional::kAllowed);
@@ -52,10 +54,10 @@ int run_launch(const std::vector<std::string>& args) {
   const std::string profile_path = options.text("--profile", default_profile());
   const std::string build = options.text("--build-dir", bus::build_dir());
   bus::SupervisorPolicy policy;
-  policy.grace = options.number("--grace", {0.0, 600.0});
-  policy.backoff_min = options.number("--backoff-min", {0.01, 600.0});
-  policy.backoff_max = options.number("--backoff-max", {policy.backoff_min, 3600.0});
-  policy.hang_periods = options.number("--hang-periods", {1.0, 100.0});
+  policy.grace = options.number("--grace");
+  policy.backoff_min = options.number("--backoff-min");
+  policy.backoff_max = options.number_within("--backoff-max", {policy.backoff_min, 3600.0});
+  policy.hang_periods = options.number("--hang-periods");
 
   const auto selected = bus::select_services(bus::read_launch_profile(profile_path), options.positional());
   std::vector<bus::ChildSpec> children;

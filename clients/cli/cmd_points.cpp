@@ -17,7 +17,7 @@ int run_points(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
   for (auto& spec : pose_option_specs()) specs.push_back(spec);
   specs.push_back({"--z", true, "height of the wheelset centre above the top of rail [m]; distances are shifted by it",
-                   "r0"});
+                   "r0", NumberRange{0.0, 2.0}});
   specs.push_back(side_option_spec());
   specs.push_back({"--format", true, "csv or table", "table"});
   Options opt("points", "--y Y [--roll PHI] [--yaw PSI] [--wheel-side left|right] [options]", specs, args);
@@ -31,7 +31,8 @@ int run_points(const std::vector<std::string>& args) {
     return 0;
   }
   const WheelsetGeometry geometry = geometry_from_options(opt);
-  const WheelsetPose pose = pose_from_options(opt, opt.has("--z") ? opt.number("--z", {0.0, 2.0}) : geometry.track().nominal_radius);
+  const WheelsetPose pose =
+      pose_from_options(opt, opt.has("--z") ? opt.number("--z") : geometry.track().nominal_radius);
   const WheelSide side = side_from_options(opt);
   const bool csv = opt.choice("--format", {"csv", "table"}) == "csv";
   const auto points = geometry.potential_points(side, pose);

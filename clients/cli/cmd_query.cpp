@@ -172,7 +172,8 @@ std::vector<OptionSpec> query_option_specs() {
        shortest_number_text(defaults.pose.yaw)},
       {"--z", true, "height of the wheelset centre above the top-of-rail plane [m]",
        "rigid: closer wheel just touching; elastic: that minus --penetration"},
-      {"--penetration", true, "elastic without --z: how far the centre is lowered below touching [m]", "1e-4"},
+      {"--penetration", true, "elastic without --z: how far the centre is lowered below touching [m]", "1e-4",
+          NumberRange{0.0, 0.01}},
       {"--load", true, "normal load per wheel, rigid formulation [N]", number_text(kDefaultLoad)},
       {"--formulation", true, "rigid (loads given) or elastic (forces from penetration)", "rigid"},
       {"--speed", true, "forward speed V [m/s]", shortest_number_text(defaults.speed)},
@@ -181,8 +182,8 @@ std::vector<OptionSpec> query_option_specs() {
       {"--poisson", true, "Poisson's ratio [-]", shortest_number_text(defaults.material.poisson_ratio)},
       {"--friction", true, "friction coefficient mu [-]", shortest_number_text(defaults.material.friction)},
       grid_option_spec(),
-      {"--timeout", true, "wait for the reply per attempt [s]", "1"},
-      {"--retries", true, "re-sends after a timeout", "3"},
+      {"--timeout", true, "wait for the reply per attempt [s]", "1", NumberRange{1e-3, 600.0}},
+      {"--retries", true, "re-sends after a timeout", "3", NumberRange{0, 100}},
       {"--instance", true, "address this instance (must be running)", "from the heartbeats"},
       {"--format", true, "csv or table", "csv"}};
   for (auto& spec : service_start_option_specs()) specs.push_back(spec);
@@ -235,7 +236,7 @@ ContactQuery library_query_from(const Options& o, const GeometrySpec& spec) {
     } else {
       q.pose.z = touching_height(geometry, q.pose.y, q.pose.roll, q.pose.yaw);
     }
-    if (q.formulation == ContactFormulation::kElastic) q.pose.z -= o.number("--penetration", {0.0, 0.01});
+    if (q.formulation == ContactFormulation::kElastic) q.pose.z -= o.number("--penetration");
   }
   check_query(o, q);
   return q;
@@ -262,7 +263,7 @@ struct QueryService {
 QueryService find_or_start_service(CommandBus& session, const Options& o, const std::string& model,
                                    const GeometrySpec& spec, const std::string& key) {
   const std::string wanted = o.text("--instance");
-  const double start_timeout = o.number("--start-timeout", {0.1, 3600.0});
+  const double start_timeout = o.number("--start-timeout");
   QueryService found;
   std::optional<bus::ServiceStatus>& service = found.status;
   service = discover_service(*session.lcm, session.monitor, model, key, wanted, kServiceDiscoveryTime);
@@ -328,9 +329,9 @@ int run_query(const std::vector<std::string>& args) {
   const std::string model = o.choice("--model", contact_model_names());
   if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
   bus::CallPolicy policy;
-  policy.timeout = o.number("--timeout", {1e-3, 600.0});
-  policy.retries = o.integer("--retries", {0, 100});
-  o.number("--start-timeout", {0.1, 3600.0});  // checked before anything starts
+  policy.timeout = o.number("--timeout");
+  policy.retries = o.integer("--retries");
+  o.number("--start-timeout");  // checked before anything starts
   const std::string format = o.choice("--format", {"csv", "table"});
   const GeometrySpec spec = geometry_spec_from_options(o);
   const ContactQuery q = library_query_from(o, spec);

@@ -112,7 +112,7 @@ int run_record(const std::vector<std::string>& args) {
 }
 
 int run_replay(const std::vector<std::string>& args) {
-  const std::vector<OptionSpec> specs{{"--speed", true, "playback speed multiplier", "1"},
+  const std::vector<OptionSpec> specs{{"--speed", true, "playback speed multiplier", "1", NumberRange{1e-3, 1e3}},
                                       {"--channels", true, "play only the channels matching this regular expression",
                                        "every channel"},
                                       {"--lcm-url", true, "LCM URL", "LCM's default"}};
@@ -124,7 +124,7 @@ int run_replay(const std::vector<std::string>& args) {
     return 0;
   }
   if (o.positional().size() != 1) throw UsageError("give exactly one FILE");
-  std::vector<std::string> words{"--speed=" + std::to_string(o.number("--speed", {1e-3, 1e3}))};
+  std::vector<std::string> words{"--speed=" + std::to_string(o.number("--speed"))};
   if (o.has("--channels")) words.push_back("--regexp=" + o.text("--channels"));
   if (o.has("--lcm-url")) words.push_back("--lcm-url=" + o.text("--lcm-url"));
   words.push_back(o.positional().front());

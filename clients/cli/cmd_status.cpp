@@ -39,7 +39,7 @@ const char* state_name(std::int8_t state) {
 
 int run_status(const std::vector<std::string>& args) {
   Options options("status", "[options]",
-                  {{"--duration", true, "how long to listen for heartbeats [s]", "1.5"},
+                  {{"--duration", true, "how long to listen for heartbeats [s]", "1.5", NumberRange{0.05, 3600.0}},
                    {"--channel-prefix", true, "channel prefix of the simulation", "none"},
                    {"--lcm-url", true, "LCM URL", "LCM's default"},
                    {"--bus-key", true, "bus key file", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
@@ -55,7 +55,7 @@ int run_status(const std::vector<std::string>& args) {
                                    "(\"doing: run r1: spline, t = 0.84 of 2 s, ...\", \"fitting ...\", a query rate).\n";
     return 0;
   }
-  const double duration = options.number("--duration", {0.05, 3600.0});
+  const double duration = options.number("--duration");
   const std::string format = options.choice("--format", {"table", "csv"});
   const bus::ChannelNames names(options.text("--channel-prefix"));
   auto lcm = bus::open_lcm(options.text("--lcm-url"), options.text("--bus-key"));

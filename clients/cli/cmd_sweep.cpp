@@ -42,7 +42,7 @@ std::vector<OptionSpec> sweep_option_specs() {
       {"--critical-speeds", true, "speeds of the critical-speed scan FROM:TO:STEP [m/s]", "5:80:1"},
       {"--out", true, "the sweep's CSV; an existing one of the same sweep is resumed", "sweep.csv"},
       {"--work-dir", true, "the runs' rows, logs and Slurm scripts (shared by the nodes with --slurm)", "OUT.work"},
-      {"--jobs", true, "runs at once on this machine", "the number of cores"},
+      {"--jobs", true, "runs at once on this machine", "the number of cores", NumberRange{1, 4096}},
       {"--retry-failed", false, "run the failed rows of a resumed sweep again", ""},
       {"--plot", true, "also draw --plot-y against --plot-x (.png or .svg)", "none"},
       {"--plot-x", true, "grid key along the plot's x", "the first grid key"},
@@ -51,7 +51,7 @@ std::vector<OptionSpec> sweep_option_specs() {
       {"--slurm", false, "submit the runs as a Slurm job array (sbatch) and gather their rows", ""},
       {"--partition", true, "Slurm partition", "the cluster's default"},
       {"--time", true, "Slurm time limit per run (sbatch --time)", "the partition's default"},
-      {"--array-limit", true, "most Slurm tasks running at once (--array=...%N)", "no limit"},
+      {"--array-limit", true, "most Slurm tasks running at once (--array=...%N)", "no limit", NumberRange{1, 1000000}},
       {"--sbatch-args", true, "further sbatch options, space-separated (e.g. '--account=A --qos=Q')", "none"},
       {"--no-wait", false, "with --slurm: submit and return; gather later with --gather", ""},
       {"--gather", false, "gather the rows the work directory holds into --out (after --slurm --no-wait)", ""},
@@ -263,7 +263,7 @@ bool run_on_slurm(const Options& o, const SweepWork& work, const sweep::SweepLay
   s.partition = o.text("--partition");
   s.time = o.text("--time");
   s.sbatch_args = split(o.text("--sbatch-args"), ' ');
-  s.array_limit = o.has("--array-limit") ? o.integer("--array-limit", {1, 1000000}) : 0;
+  s.array_limit = o.has("--array-limit") ? o.integer("--array-limit") : 0;
   const std::string job = submit_to_slurm(work, pending, s);
   std::cerr << "sweep: Slurm job " << job << ", an array of " << pending.size() << " tasks (script and list in "
             << work.slurm_directory() << ")\n";
@@ -358,7 +358,7 @@ int run_sweep(const std::vector<std::string>& all_args) {
   if (pending.empty()) {
   } else if (!o.has("--slurm")) {
     const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    const int jobs = o.has("--jobs") ? o.integer("--jobs", {1, 4096}) : cores;
+    const int jobs = o.has("--jobs") ? o.integer("--jobs") : cores;
     std::cerr << "sweep: " << std::min<std::size_t>(static_cast<std::size_t>(jobs), pending.size())
               << " at once on this machine (" << cores << " cores)\n";
     complete = run_points_locally(work, layout, pending, jobs, [&](const sweep::SweepRow& row) {

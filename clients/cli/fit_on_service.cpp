@@ -51,11 +51,11 @@ Fitter fitter_state(const bus::HeartbeatMonitor& monitor, std::uint64_t nonce, d
 std::vector<OptionSpec> fit_on_service_option_specs() {
   return {{"--service", false, "precompute on wrc-geometryd (started when none runs) instead of in this process", ""},
           {"--recompute", false, "with --service: fit again even when the model is in the service's cache", ""},
-          {"--wait", true, "with --service: longest wait for the model [s]", "600"}};
+          {"--wait", true, "with --service: longest wait for the model [s]", "600", NumberRange{1.0, 86400.0}}};
 }
 
 int fit_on_service(const Options& o, const GeometrySpec& spec, const SplineFitOptions& fit) {
-  const double wait = o.number("--wait", {1.0, 86400.0});
+  const double wait = o.number("--wait");
   const std::string key = geometry_key(spec);
   const std::string model_key = protocol::model_key(key, fit);
   CommandBus session(o, "fit");

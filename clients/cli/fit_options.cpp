@@ -38,7 +38,8 @@ std::vector<OptionSpec> fit_option_specs() {
   for (auto& spec : parameter_option_specs(spline_fit_table(), SplineFitOptions{})) specs.push_back(spec);
   specs.push_back(
       {"--paper-variant", false, "the paper's benchmark splines: cubic 15x4 in (y, roll), quadratic in yaw", ""});
-  specs.push_back({"--threads", true, "sampling threads (0: one per core)", std::to_string(SplineFitOptions{}.threads)});
+  specs.push_back({"--threads", true, "sampling threads (0: one per core)", std::to_string(SplineFitOptions{}.threads),
+      NumberRange{0, 64}});
   return specs;
 }
 
@@ -75,7 +76,7 @@ SplineFitOptions fit_options_from(const Options& options) {
   const std::string placement = options.choice("--knot-placement", {"graded", "uniform"});
   o.placement = placement == "uniform" ? KnotPlacement::kUniform : KnotPlacement::kGraded;
   apply_parameter_options(spline_fit_table(), options, o);
-  o.threads = options.integer("--threads", {0, 64});
+  o.threads = options.integer("--threads");
   try {
     o.validate();
   } catch (const std::invalid_argument& e) {

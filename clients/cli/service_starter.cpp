@@ -107,7 +107,7 @@ std::optional<bus::ServiceStatus> discover_service(lcm::LCM& lcm, const bus::Hea
 }
 
 std::vector<OptionSpec> service_start_option_specs() {
-  return {{"--start-timeout", true, "wait for a started service to be READY [s]", "300"},
+  return {{"--start-timeout", true, "wait for a started service to be READY [s]", "300", NumberRange{0.1, 3600.0}},
           {"--channel-prefix", true, "channel prefix of the simulation", "none"},
           {"--lcm-url", true, "LCM URL", "LCM's default"},
           {"--bus-key", true, "bus key file (created when missing)", "$WRC_BUS_KEY, else ~/.config/wrc/bus.key"},
@@ -121,7 +121,7 @@ StartContext start_context_from(const Options& o, const std::string& command, co
   context.instance = instance;
   if (o.has("--channel-prefix")) context.bus_args.insert(context.bus_args.end(), {"--channel-prefix", o.text("--channel-prefix")});
   if (o.has("--lcm-url")) context.bus_args.insert(context.bus_args.end(), {"--lcm-url", o.text("--lcm-url")});
-  context.start_timeout = o.number("--start-timeout", {0.1, 3600.0});
+  context.start_timeout = o.number("--start-timeout");
   return context;
 }
 

@@ -22,13 +22,20 @@ FitWorker::FitWorker(double progress_interval) : progress_interval_(progress_int
 }
 
 FitWorker::~FitWorker() {
+  stop();
+  thread_.join();
+}
+
+bool FitWorker::stop() {
+  bool running = false;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stop_ = true;
     jobs_.clear();
+    running = fitting_;
   }
   wake_.notify_all();
-  thread_.join();
+  return running;
 }
 
 void FitWorker::submit(FitJob job) {
@@ -42,11 +49,6 @@ void FitWorker::submit(FitJob job) {
 std::vector<FitEvent> FitWorker::take_events() {
   std::lock_guard<std::mutex> lock(mutex_);
   return std::exchange(events_, {});
-}
-
-bool FitWorker::fitting() const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return fitting_;
 }
 
 double FitWorker::take_busy_time() {

@@ -46,7 +46,7 @@ class FitWorker {
  public:
   /// progress_interval [s]: least time between two progress events of one job (> 0).
   explicit FitWorker(double progress_interval = 0.2);
-  /// Stops the thread; waits for a running fit to end (see fitting()).
+  /// Stops the thread; waits for a running fit to end (see stop()).
   ~FitWorker();
   FitWorker(const FitWorker&) = delete;
   FitWorker& operator=(const FitWorker&) = delete;
@@ -55,8 +55,10 @@ class FitWorker {
   void submit(FitJob job);
   /// The events since the last call, in order.
   std::vector<FitEvent> take_events();
-  /// True while a fit runs (it cannot be interrupted).
-  bool fitting() const;
+  /// Takes no more jobs (those queued are dropped) and returns whether a fit runs now, in one
+  /// step: a job the thread has not taken yet is never started after it, so a false answer
+  /// means the destructor will not wait.
+  bool stop();
   /// [s] time spent fitting since the previous call (the running fit included up to now).
   double take_busy_time();
 

@@ -58,7 +58,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::geometryd::Geometryd
   std::cerr << sender << ": stopped (signal " << ShutdownSignal::signal_number() << "), answered " << c.answered
             << " (from the cache " << c.from_cache << ", waited for a running fit " << c.joined << "), fits "
             << c.fits << ", failed " << c.failed << ", rejected " << server.rejected() << "\n";
-  if (worker.fitting()) {
+  if (worker.stop()) {
     std::cerr << sender << ": a fit is still running; exiting without waiting for it\n";
     std::cerr.flush();
     std::_Exit(rc);  // the fit cannot be interrupted; nothing else needs cleaning up

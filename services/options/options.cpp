@@ -37,6 +37,16 @@ Options Options::for_program(std::string program, std::string synopsis, std::vec
 Options::Options(std::string program, std::string label, std::string synopsis, std::vector<OptionSpec> specs,
                  const std::vector<std::string>& args, ParseRules rules)
     : program_(std::move(program)), label_(std::move(label)), synopsis_(std::move(synopsis)), specs_(std::move(specs)) {
+  // Every declared default of an option with a range lies in it (a programming error otherwise,
+  // found by any --help of the command).
+  for (const OptionSpec& spec : specs_) {
+    if (!spec.range) continue;
+    const std::optional<double> value = finite_number(spec.default_text);
+    if (value && !(*value >= spec.range->min && *value <= spec.range->max))
+      throw std::logic_error(program_ + ": the default " + spec.default_text + " of " + spec.name +
+                             " is outside its range [" + number_text(spec.range->min) + ", " +
+                             number_text(spec.range->max) + "]");
+  }
   const bool pass_on = rules.unknown == Unknown::kPassedOn;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
@@ -156,7 +166,11 @@ static double check_range(double value, const std::string& name, const std::stri
   return value;
 }
 
-double Options::number(const std::string& name, NumberRange range) const {
+double Options::number(const std::string& name) const {
+  return number_within(name, declared(name).range.value_or(NumberRange{}));
+}
+
+double Options::number_within(const std::string& name, NumberRange range) const {
   auto v = find(name);
   if (!v) {
     // The declared default obeys the same range as a value typed: a table and a call site that
@@ -168,13 +182,16 @@ double Options::number(const std::string& name, NumberRange range) const {
   return check_range(parse_finite(*v, name), name, *v, range.min, range.max);
 }
 
-double Options::required_number(const std::string& name, NumberRange range) const {
+double Options::required_number(const std::string& name) const {
+  const NumberRange range = declared(name).range.value_or(NumberRange{});
   auto v = find(name);
   if (!v) throw UsageError("missing required option " + name);
   return check_range(parse_finite(*v, name), name, *v, range.min, range.max);
 }
 
-int Options::integer(const std::string& name, IntegerRange range) const {
+int Options::integer(const std::string& name) const {
+  const IntegerRange whole;
+  const NumberRange range = declared(name).range.value_or(NumberRange{double(whole.min), double(whole.max)});
   auto v = find(name);
   if (!v) {
     const double d = default_number(name);

@@ -14,6 +14,18 @@
 
 namespace wrc {
 
+/// The valid values of a number option: [min, max].
+struct NumberRange {
+  double min = -1e300;
+  double max = 1e300;
+};
+
+/// The valid values of a whole-number option: [min, max].
+struct IntegerRange {
+  int min = 1;
+  int max = 1000000;
+};
+
 /// Declaration of one option: its name (with the leading --), whether it takes a value,
 /// the help text (state the unit in brackets) and its default: shown in --help and, when it is a
 /// value (a number, a word of a choice), the value number(), integer() and choice() give for an
@@ -24,6 +36,9 @@ struct OptionSpec {
   bool takes_value = true;
   std::string help;
   std::string default_text;
+  /// The valid values of a number option, the one place its range is stated: number(),
+  /// required_number() and integer() check a typed value against it, and the parser the default.
+  std::optional<NumberRange> range = std::nullopt;
 };
 
 /// Thrown for bad command-line input; the message is one line naming the bad value.
@@ -48,18 +63,6 @@ struct ParseRules {
   Positional positional = Positional::kRejected;
   Unknown unknown = Unknown::kRejected;
   Repeated repeated = Repeated::kRejected;
-};
-
-/// The valid values of a number option: [min, max].
-struct NumberRange {
-  double min = -1e300;
-  double max = 1e300;
-};
-
-/// The valid values of a whole-number option: [min, max].
-struct IntegerRange {
-  int min = 1;
-  int max = 1000000;
 };
 
 /// Parsed options of one command or program. Every lookup (has, text, number, ...) must name a
@@ -94,14 +97,18 @@ class Options {
   std::string text(const std::string& name, const std::string& fallback = "") const;
   /// A required text option; throws UsageError naming it when absent.
   std::string required_text(const std::string& name) const;
-  /// A finite number in range, the declared default when absent; throws UsageError naming the
-  /// option and the text when not a finite number or outside range, std::logic_error when absent
-  /// and the declared default is no number.
-  double number(const std::string& name, NumberRange range = {}) const;
-  /// A required finite number in range.
-  double required_number(const std::string& name, NumberRange range = {}) const;
-  /// A whole number in range, the declared default when absent (as number()).
-  int integer(const std::string& name, IntegerRange range = {}) const;
+  /// A finite number in its declared range, the declared default when absent; throws UsageError
+  /// naming the option and the text when not a finite number or outside the range,
+  /// std::logic_error when absent and the declared default is no number.
+  double number(const std::string& name) const;
+  /// As number(), within range instead: only for a range that depends on another option's value
+  /// (--backoff-max at least --backoff-min); a fixed range belongs to the declaration.
+  double number_within(const std::string& name, NumberRange range) const;
+  /// A required finite number in its declared range.
+  double required_number(const std::string& name) const;
+  /// A whole number in its declared range (without one, IntegerRange{}), the declared default
+  /// when absent (as number()).
+  int integer(const std::string& name) const;
   /// One of the given words, the declared default when absent; throws UsageError listing them
   /// otherwise.
   std::string choice(const std::string& name, const std::vector<std::string>& words) const;

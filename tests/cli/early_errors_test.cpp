@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/plot/plot_kind.hpp"
 
 namespace wrc::cli {
 namespace {
@@ -71,6 +72,26 @@ TEST(EarlyErrors, EachMistakeIsRefusedNamingTheOptionAndTheValue) {
     EXPECT_EQ(message.find('\n'), std::string::npos) << line << ": more than one line";
   }
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Every command's and every plot kind's --help parses its option table, which checks each declared
+// default against its declared range (options/options.hpp): none is out of its own range.
+TEST(EarlyErrors, EveryCommandsDefaultsLieInTheirRanges) {
+  for (const Command& c : command_registry()) {
+    if (c.name == "plot") continue;  // its kinds below
+    try {
+      EXPECT_EQ(c.run({"--help"}), 0) << c.name;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "wrc " << c.name << " --help: " << e.what();
+    }
+  }
+  for (const plot::PlotKind& k : plot::plot_kinds()) {
+    try {
+      EXPECT_EQ(k.run({"--help"}), 0) << k.name;
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "wrc plot " << k.name << " --help: " << e.what();
+    }
+  }
 }
 
 }  // namespace

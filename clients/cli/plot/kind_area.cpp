@@ -35,10 +35,12 @@ std::vector<OptionSpec> area_option_specs() {
   auto specs = profile_option_specs();
   for (auto& spec : pose_option_specs()) specs.push_back(spec);
   specs.push_back(side_option_spec());
-  specs.push_back({"--eps0", true, "largest level [m] (levels every 25 um up to it)", "1.5e-4"});
-  specs.push_back({"--normal-force", true, "normal force of the Hertz ellipse [N] (0: no ellipse)", "75000"});
-  specs.push_back({"--grid", true, "grid nodes per direction [-]", "161"});
-  specs.push_back({"--half-width", true, "half width of the square grid in E [m]", "0.02"});
+  specs.push_back({"--eps0", true, "largest level [m] (levels every 25 um up to it)", "1.5e-4",
+      NumberRange{25e-6, 0.01}});
+  specs.push_back({"--normal-force", true, "normal force of the Hertz ellipse [N] (0: no ellipse)", "75000",
+      NumberRange{0.0, 1e7}});
+  specs.push_back({"--grid", true, "grid nodes per direction [-]", "161", NumberRange{3, 2001}});
+  specs.push_back({"--half-width", true, "half width of the square grid in E [m]", "0.02", NumberRange{1e-4, 0.1}});
   specs.push_back({"--spline", false, "also the spline model's ellipse (fits the model first, a few seconds)", ""});
   for (const auto& spec : fit_option_specs()) specs.push_back(spec);
   for (const auto& spec : image_option_specs("area.png")) specs.push_back(spec);
@@ -122,11 +124,11 @@ int run_area(const std::vector<std::string>& args) {
   const WheelsetGeometry geometry = make_geometry(spec);
   const WheelsetPose pose = pose_from_options(opt, geometry.track().nominal_radius);
   const WheelSide side = side_from_options(opt);
-  const double eps0 = opt.number("--eps0", {25e-6, 0.01});
-  const double normal_force = opt.number("--normal-force", {0.0, 1e7});
+  const double eps0 = opt.number("--eps0");
+  const double normal_force = opt.number("--normal-force");
   ContactAreaOptions options;
-  options.n_xi = options.n_eta = opt.integer("--grid", {3, 2001});
-  options.half_width_xi = options.half_width_eta = opt.number("--half-width", {1e-4, 0.1});
+  options.n_xi = options.n_eta = opt.integer("--grid");
+  options.half_width_xi = options.half_width_eta = opt.number("--half-width");
   const bool with_spline = opt.has("--spline");
   const SplineFitOptions fit_options = fit_options_from(opt);
   const ImageRequest image = image_from_options(opt, "area.png");

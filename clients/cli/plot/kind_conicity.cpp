@@ -16,10 +16,10 @@ namespace {
 
 int run_conicity(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--a-from", true, "smallest amplitude [m], in (0, 0.02]", "2.5e-4"});
-  specs.push_back({"--a-to", true, "largest amplitude [m], in (0, 0.02]", "0.01"});
-  specs.push_back({"--a-step", true, "amplitude step [m]", "2.5e-4"});
-  specs.push_back({"--samples", true, "points on the period for the Fourier integral", "256"});
+  specs.push_back({"--a-from", true, "smallest amplitude [m], in (0, 0.02]", "2.5e-4", NumberRange{1e-7, 0.02}});
+  specs.push_back({"--a-to", true, "largest amplitude [m], in (0, 0.02]", "0.01", NumberRange{1e-7, 0.02}});
+  specs.push_back({"--a-step", true, "amplitude step [m]", "2.5e-4", NumberRange{1e-7, 0.02}});
+  specs.push_back({"--samples", true, "points on the period for the Fourier integral", "256", NumberRange{8, 100000}});
   for (const auto& spec : image_option_specs("conicity.png")) specs.push_back(spec);
   Options opt("plot conicity", "[--a-from A] [--a-to B] [--a-step H] [--out FILE] [options]", specs, args);
   if (opt.help_requested()) {
@@ -28,10 +28,10 @@ int run_conicity(const std::vector<std::string>& args) {
                  "amplitude A, delta_r from the exact rigid-wheelset geometry (as wrc conicity).\n";
     return 0;
   }
-  const double a_from = opt.number("--a-from", {1e-7, 0.02});
-  const double a_to = opt.number("--a-to", {1e-7, 0.02});
-  const double step = opt.number("--a-step", {1e-7, 0.02});
-  const int samples = opt.integer("--samples", {8, 100000});
+  const double a_from = opt.number("--a-from");
+  const double a_to = opt.number("--a-to");
+  const double step = opt.number("--a-step");
+  const int samples = opt.integer("--samples");
   if (!(a_to >= a_from)) throw UsageError(format("--a-to %g is below --a-from %g", a_to, a_from));
   const long count = inclusive_range_count(a_from, a_to, step);
   if (count > 10000) throw UsageError(format("--a-step %g gives more than 10000 amplitudes", step));

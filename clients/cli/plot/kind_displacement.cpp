@@ -18,11 +18,11 @@ namespace {
 
 int run_displacement(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--y-max", true, "the map covers y in [-Y, Y] [m]", "0.01"});
-  specs.push_back({"--roll-max", true, "the map covers roll in [-R, R] [rad]", "0.02"});
-  specs.push_back({"--yaw", true, "yaw angle [rad]", "0"});
+  specs.push_back({"--y-max", true, "the map covers y in [-Y, Y] [m]", "0.01", NumberRange{1e-5, 0.05}});
+  specs.push_back({"--roll-max", true, "the map covers roll in [-R, R] [rad]", "0.02", NumberRange{1e-5, 0.1}});
+  specs.push_back({"--yaw", true, "yaw angle [rad]", "0", kYawRange});
   specs.push_back(side_option_spec());
-  specs.push_back({"--grid", true, "nodes per direction [-]", "81"});
+  specs.push_back({"--grid", true, "nodes per direction [-]", "81", NumberRange{2, 1001}});
   for (const auto& spec : image_option_specs("displacement.png")) specs.push_back(spec);
   Options opt("plot displacement", "[--y-max Y] [--roll-max R] [--yaw PSI] [--wheel-side left|right] [--grid N] "
               "[--out FILE] [options]", specs, args);
@@ -34,11 +34,11 @@ int run_displacement(const std::vector<std::string>& args) {
                  "Jumps of the common point show as sharp colour edges.\n";
     return 0;
   }
-  const double y_max = opt.number("--y-max", {1e-5, 0.05});
-  const double roll_max = opt.number("--roll-max", {1e-5, 0.1});
-  const double yaw = opt.number("--yaw", kYawRange);
+  const double y_max = opt.number("--y-max");
+  const double roll_max = opt.number("--roll-max");
+  const double yaw = opt.number("--yaw");
   const WheelSide side = side_from_options(opt);
-  const int nodes = opt.integer("--grid", {2, 1001});
+  const int nodes = opt.integer("--grid");
   const GeometrySpec spec = geometry_spec_from_options(opt);
   const WheelsetGeometry geometry = make_geometry(spec);
   const ImageRequest image = image_from_options(opt, "displacement.png");

@@ -18,7 +18,7 @@ int run_distance(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
   for (auto& spec : pose_option_specs()) specs.push_back(spec);
   specs.push_back(side_option_spec());
-  specs.push_back({"--samples", true, "points along C [-]", "4000"});
+  specs.push_back({"--samples", true, "points along C [-]", "4000", NumberRange{10, 1000000}});
   for (const auto& spec : image_option_specs("distance.png")) specs.push_back(spec);
   Options opt("plot distance", "--y Y [--roll PHI] [--yaw PSI] [--wheel-side left|right] [--out FILE] [options]",
               specs, args);
@@ -33,7 +33,7 @@ int run_distance(const std::vector<std::string>& args) {
   const WheelsetGeometry geometry = make_geometry(spec);
   const WheelsetPose pose = pose_from_options(opt, geometry.track().nominal_radius);
   const WheelSide side = side_from_options(opt);
-  const int samples = opt.integer("--samples", {10, 1000000});
+  const int samples = opt.integer("--samples");
   const ImageRequest image = image_from_options(opt, "distance.png");
 
   const auto points = geometry.potential_points(side, pose);

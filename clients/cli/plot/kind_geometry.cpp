@@ -18,10 +18,11 @@ namespace {
 
 int run_geometry(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--yaw", true, "yaw angle of the wheelset [rad]", "0"});
-  specs.push_back({"--y-from", true, "first lateral shift [m] (> 0 towards the left rail)", "-0.01"});
-  specs.push_back({"--y-to", true, "last lateral shift [m]", "0.01"});
-  specs.push_back({"--y-step", true, "lateral step [m]", "5e-5"});
+  specs.push_back({"--yaw", true, "yaw angle of the wheelset [rad]", "0", kYawRange});
+  specs.push_back({"--y-from", true, "first lateral shift [m] (> 0 towards the left rail)", "-0.01",
+      kLateralShiftRange});
+  specs.push_back({"--y-to", true, "last lateral shift [m]", "0.01", kLateralShiftRange});
+  specs.push_back({"--y-step", true, "lateral step [m]", "5e-5", NumberRange{1e-7, 0.05}});
   for (const auto& spec : image_option_specs("geometry.png")) specs.push_back(spec);
   Options opt("plot geometry", "[--y-from A] [--y-to B] [--y-step H] [--yaw PSI] [--out FILE] [options]", specs, args);
   if (opt.help_requested()) {
@@ -31,10 +32,10 @@ int run_geometry(const std::vector<std::string>& args) {
                  "on the wheel profile (s) and on the rail profile (u). Points, not lines: jumps stay visible.\n";
     return 0;
   }
-  const double y_from = opt.number("--y-from", kLateralShiftRange);
-  const double y_to = opt.number("--y-to", kLateralShiftRange);
-  const double step = opt.number("--y-step", {1e-7, 0.05});
-  const double yaw = opt.number("--yaw", kYawRange);
+  const double y_from = opt.number("--y-from");
+  const double y_to = opt.number("--y-to");
+  const double step = opt.number("--y-step");
+  const double yaw = opt.number("--yaw");
   if (!(y_to > y_from)) throw UsageError(format("--y-to %g is not above --y-from %g", y_to, y_from));
   const long count = inclusive_range_count(y_from, y_to, step);
   if (count > 200000) throw UsageError(format("--y-step %g gives more than 200000 shifts", step));

@@ -19,8 +19,9 @@ constexpr int kProfileSamples = 800;
 
 int run_profiles(const std::vector<std::string>& args) {
   auto specs = profile_option_specs();
-  specs.push_back({"--y", true, "lateral shift of the wheelset [m] (> 0 towards the left rail)", "0"});
-  specs.push_back({"--yaw", true, "yaw angle of the wheelset [rad]", "0"});
+  specs.push_back({"--y", true, "lateral shift of the wheelset [m] (> 0 towards the left rail)", "0",
+      kLateralShiftRange});
+  specs.push_back({"--yaw", true, "yaw angle of the wheelset [rad]", "0", kYawRange});
   for (const auto& spec : image_option_specs("profiles.png")) specs.push_back(spec);
   Options opt("plot profiles", "[--y Y] [--yaw PSI] [--out FILE] [options]", specs, args);
   if (opt.help_requested()) {
@@ -31,8 +32,8 @@ int run_profiles(const std::vector<std::string>& args) {
                  "left, right wheel right, each around its rail.\n";
     return 0;
   }
-  const double y = opt.number("--y", kLateralShiftRange);
-  const double yaw = opt.number("--yaw", kYawRange);
+  const double y = opt.number("--y");
+  const double yaw = opt.number("--yaw");
   const GeometrySpec spec = geometry_spec_from_options(opt);
   const WheelsetGeometry geometry = make_geometry(spec);
   const ImageRequest image = image_from_options(opt, "profiles.png");

@@ -10,13 +10,13 @@ namespace wrc::cli::plot {
 
 std::vector<OptionSpec> image_option_specs(const std::string& default_out) {
   return {{"--out", true, "output picture, .png or .svg", default_out},
-          {"--width", true, "picture width [px]", "1200"},
-          {"--height", true, "picture height [px]", "900"}};
+          {"--width", true, "picture width [px]", "1200", NumberRange{1, 100000}},
+          {"--height", true, "picture height [px]", "900", NumberRange{1, 100000}}};
 }
 
 ImageRequest image_from_options(const Options& options, const std::string& default_out) {
-  return image_request(options.text("--out", default_out), options.integer("--width", {1, 100000}),
-                       options.integer("--height", {1, 100000}));
+  return image_request(options.text("--out", default_out), options.integer("--width"),
+                       options.integer("--height"));
 }
 
 std::string format(const char* pattern, ...) {

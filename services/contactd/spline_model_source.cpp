@@ -12,7 +12,9 @@
 #include "protocol/geometry/spline_model_codec.hpp"
 #include "protocol/geometry/spline_model_file.hpp"
 #include "protocol/geometry/track_codec.hpp"
+#include "bus/transport/request_client.hpp"
 #include "wrc/geometry_request_t.hpp"
+#include "wrc/model_piece_request_t.hpp"
 #include "wrc/progress_t.hpp"
 
 namespace wrc::contactd {
@@ -33,13 +35,37 @@ SplineModelSource::SplineModelSource(lcm::LCM& lcm, const bus::ChannelNames& nam
   progress_subscription_ = std::make_unique<bus::GuardedSubscription<progress_t>>(
       lcm_, names.name(bus::channel::kProgress), stamper_.sender() + " PROGRESS listener",
       [this](const progress_t& p, const bus::ReceivedMessage&) { on_progress(p); }, 100);
+  piece_request_channel_ = names.name(bus::channel::kModelPieceRequest);
+  piece_channel_ = names.name(bus::channel::kModelPiece, bus::make_client_id("spline"));
+  piece_subscription_ = std::make_unique<bus::GuardedSubscription<model_piece_t>>(
+      lcm_, piece_channel_, stamper_.sender() + " MODEL_PIECE listener",
+      [this](const model_piece_t& p, const bus::ReceivedMessage& info) { on_piece(p, *info.channel); },
+      model_piece_request_t::MAX_PIECES);
 }
 
 SplineModelSource::~SplineModelSource() = default;
 
 void SplineModelSource::tick() {
   if (!model_hash_.empty() || pending_) return;  // a model came: no more requests
-  if (bus::monotonic_seconds() - last_request_ >= retry_period_) send_request();
+  const double now = bus::monotonic_seconds();
+  if (pieces_ && now - last_piece_activity_ >= kPieceRetryPeriod) request_missing_pieces();
+  if (now - last_request_ >= retry_period_) send_request();
+}
+
+void SplineModelSource::request_missing_pieces() {
+  model_piece_request_t request{};
+  stamper_.stamp(request.header);
+  request.model_key = pieces_->model_key();
+  request.file_hash = pieces_->file_hash();
+  request.reply_channel = piece_channel_;
+  request.pieces = pieces_->missing(model_piece_request_t::MAX_PIECES);
+  request.num_pieces = static_cast<std::int32_t>(request.pieces.size());
+  if (request.num_pieces == 0) return;
+  bus::publish_signed(lcm_, piece_request_channel_, request);
+  last_piece_activity_ = bus::monotonic_seconds();
+  ++piece_requests_sent_;
+  last_progress_ = "model pieces: " + std::to_string(pieces_->received()) + " of " +
+                   std::to_string(pieces_->count()) + " received";
 }
 
 std::shared_ptr<const SplineContactGeometry> SplineModelSource::take() {
@@ -70,9 +96,52 @@ void SplineModelSource::on_model(const spline_model_t& reference, const std::str
     const spline_model_t full = protocol::resolve_model(reference);
     pending_ = protocol::decode_model(full);
     model_hash_ = full.model_hash;
+    pieces_.reset();
+    return;
   } catch (const std::exception& e) {
-    rejections_.reject(channel, std::string("spline model ") + reference.model_key.substr(0, 12) +
-                                    " not usable: " + e.what());
+    if (reference.file_path.empty() || (pieces_ && pieces_->file_hash() == reference.file_hash)) {
+      if (reference.file_path.empty())
+        rejections_.reject(channel, std::string("spline model ") + reference.model_key.substr(0, 12) +
+                                        " not usable: " + e.what());
+      return;  // inline and unusable, or already coming in pieces
+    }
+    std::cerr << stamper_.sender() << ": cannot read the file of spline model " << reference.model_key.substr(0, 12)
+              << " (" << e.what() << "); asking wrc-geometryd for it in pieces\n";
+  }
+  try {
+    pieces_.emplace(reference);
+  } catch (const std::exception& e) {
+    rejections_.reject(channel, std::string("spline model ") + reference.model_key.substr(0, 12) + ": " + e.what());
+    return;
+  }
+  pieced_reference_ = reference;
+  request_missing_pieces();
+}
+
+void SplineModelSource::on_piece(const model_piece_t& piece, const std::string& channel) {
+  if (!pieces_ || !pieces_->names_this_file(piece)) return;  // nothing coming, or an earlier file's
+  last_piece_activity_ = bus::monotonic_seconds();
+  if (const auto why = pieces_->add(piece)) {
+    rejections_.reject(channel, "model piece refused: " + *why);
+    return;
+  }
+  last_progress_ = "model pieces: " + std::to_string(pieces_->received()) + " of " +
+                   std::to_string(pieces_->count()) + " received";
+  if (!pieces_->complete()) return;
+  try {
+    const std::vector<char> bytes = pieces_->take_file();
+    const spline_model_t full = protocol::model_from_file_bytes(pieced_reference_, bytes, "from pieces");
+    pending_ = protocol::decode_model(full);
+    model_hash_ = full.model_hash;
+    std::cerr << stamper_.sender() << ": spline model " << model_key_.substr(0, 12) << " came in "
+              << pieces_->count() << " pieces (" << bytes.size() << " B, SHA-256 checked) after "
+              << piece_requests_sent_ << " piece request(s)\n";
+    pieces_.reset();
+  } catch (const std::exception& e) {
+    // A corrupt piece: all are asked for again (take_file forgot them). A whole that does not
+    // decode: the file itself is bad, so nothing is asked for until another reference comes.
+    rejections_.reject(channel, std::string("spline model ") + model_key_.substr(0, 12) + " from pieces: " + e.what());
+    if (pieces_->complete()) pieces_.reset();
   }
 }
 

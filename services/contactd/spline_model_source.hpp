@@ -4,10 +4,14 @@
 /// How wrc-contactd --model spline gets its model: it asks wrc-geometryd (geometry_request_t on
 /// GEOMETRY_REQUEST, re-sent every retry period while nothing has come), listens on SPLINE_MODEL
 /// for the answer or any later publication of the same model (same model_key: a recompute),
-/// reads the model file, checks its SHA-256 and the model hash, and decodes it. Used from the
-/// service's loop thread only.
+/// reads the model file, checks its SHA-256 and the model hash, and decodes it. A model file it
+/// cannot read (wrc-geometryd on another machine) comes in pieces instead (model_piece_t on a
+/// reply channel of its own, protocol/geometry/model_pieces.hpp): all asked for at once, the
+/// missing ones again while none comes for kPieceRetryPeriod, the whole used only with the file's
+/// size and SHA-256. Used from the service's loop thread only.
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <lcm/lcm-cpp.hpp>
@@ -19,10 +23,15 @@
 #include "core/geometry/geometry_spec.hpp"
 #include "core/spline/spline_contact_geometry.hpp"
 #include "core/spline/spline_fit_options.hpp"
+#include "protocol/geometry/model_pieces.hpp"
+#include "wrc/model_piece_t.hpp"
 #include "wrc/progress_t.hpp"
 #include "wrc/spline_model_t.hpp"
 
 namespace wrc::contactd {
+
+/// [s] silence of the pieces after which the missing ones are asked for again.
+inline constexpr double kPieceRetryPeriod = 0.3;
 
 class SplineModelSource {
  public:
@@ -34,7 +43,8 @@ class SplineModelSource {
   SplineModelSource(const SplineModelSource&) = delete;
   SplineModelSource& operator=(const SplineModelSource&) = delete;
 
-  /// Sends the request when none was sent yet or the retry period has passed without a model.
+  /// Sends the request when none was sent yet or the retry period has passed without a model, and
+  /// asks again for the missing pieces of a model coming in pieces.
   void tick();
   /// The model received and checked since the last call, or null.
   std::shared_ptr<const SplineContactGeometry> take();
@@ -45,6 +55,8 @@ class SplineModelSource {
   const std::string& model_hash() const { return model_hash_; }
   /// Requests sent so far.
   int requests_sent() const { return requests_sent_; }
+  /// Piece requests sent so far (0 when the model file was read) [-].
+  int piece_requests_sent() const { return piece_requests_sent_; }
   /// What wrc-geometryd last reported for this service's request (its stage and fraction done;
   /// empty before any report), for the heartbeat's activity.
   const std::string& last_progress() const { return last_progress_; }
@@ -52,7 +64,10 @@ class SplineModelSource {
  private:
   void on_model(const spline_model_t& reference, const std::string& channel);
   void on_progress(const progress_t& progress);
+  void on_piece(const model_piece_t& piece, const std::string& channel);
   void send_request();
+  /// Asks wrc-geometryd for the missing pieces (at most MAX_PIECES of them).
+  void request_missing_pieces();
 
   lcm::LCM& lcm_;
   std::string request_channel_;
@@ -71,6 +86,14 @@ class SplineModelSource {
   bus::RejectionLog rejections_;
   std::unique_ptr<bus::GuardedSubscription<spline_model_t>> model_subscription_;
   std::unique_ptr<bus::GuardedSubscription<progress_t>> progress_subscription_;
+  // A model coming in pieces: its reference, the pieces so far, where they come.
+  std::string piece_request_channel_;
+  std::string piece_channel_;
+  spline_model_t pieced_reference_;
+  std::optional<protocol::ModelPieces> pieces_;
+  double last_piece_activity_ = -1e300;  // [s] monotonic: the last piece or piece request
+  int piece_requests_sent_ = 0;
+  std::unique_ptr<bus::GuardedSubscription<model_piece_t>> piece_subscription_;
 };
 
 }  // namespace wrc::contactd

@@ -26,6 +26,7 @@
 #include "geometryd/geometry_service.hpp"
 #include "geometryd/geometryd_options.hpp"
 #include "geometryd/model_cache.hpp"
+#include "geometryd/model_piece_server.hpp"
 
 namespace {
 
@@ -42,6 +43,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::geometryd::Geometryd
 
   wrc::geometryd::FitWorker worker(kProgressInterval);
   wrc::geometryd::GeometryService server(*lcm, names, sender, cache, worker);
+  wrc::geometryd::ModelPieceServer pieces(*lcm, names, sender, cache);  // for spline services on other machines
   HeartbeatPublisher heartbeat(*lcm, names.name(channel::kHeartbeat),
                                {"wrc-geometryd", "geometryd", service.instance, server.request_channel()},
                                service.heartbeat_period);
@@ -57,7 +59,8 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::geometryd::Geometryd
   const auto& c = server.counters();
   std::cerr << sender << ": stopped (signal " << ShutdownSignal::signal_number() << "), answered " << c.answered
             << " (from the cache " << c.from_cache << ", waited for a running fit " << c.joined << "), fits "
-            << c.fits << ", failed " << c.failed << ", rejected " << server.rejected() << "\n";
+            << c.fits << ", failed " << c.failed << ", rejected " << server.rejected() << "; model pieces sent "
+            << pieces.pieces_sent() << ", piece requests refused " << pieces.refused() << "\n";
   if (worker.stop()) {
     std::cerr << sender << ": a fit is still running; exiting without waiting for it\n";
     std::cerr.flush();

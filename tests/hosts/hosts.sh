@@ -58,20 +58,33 @@ host() {
   mkdir -p "$work/$1/home" "$work/$1/cache"
 }
 
-# on NAME COMMAND...: COMMAND on host NAME, with its own home and cache.
+# host_command NAME: sets host_cmd to the command prefix that runs a command on host NAME, with its
+# own home and cache; the other hosts' folders are hidden from it (an empty tmpfs over each, in a
+# mount namespace of its own), as another machine's disk is: a file path from another host does
+# not resolve there. Each part execs the next, so a command started with it keeps its pid.
+host_command() {
+  local h=$1 hidden=() other
+  for other in "${made_hosts[@]}"; do [ "$other" = "$h" ] || hidden+=("$work/$other"); done
+  host_cmd=(ip netns exec "$tag$h" unshare -m --propagation private sh -c
+    'n=$1; shift; while [ "$n" -gt 0 ]; do mount -t tmpfs tmpfs "$1"; shift; n=$((n - 1)); done; exec "$@"'
+    sh "${#hidden[@]}" "${hidden[@]}" env HOME="$work/$h/home" WRC_CACHE_DIR="$work/$h/cache" LCM_DEFAULT_URL="$url")
+}
+
+# on NAME COMMAND...: COMMAND on host NAME (host_command).
 on() {
-  local h=$1
+  local host_cmd
+  host_command "$1"
   shift
-  ip netns exec "$tag$h" env HOME="$work/$h/home" WRC_CACHE_DIR="$work/$h/cache" LCM_DEFAULT_URL="$url" "$@"
+  "${host_cmd[@]}" "$@"
 }
 
 # launch_on NAME LOG [wrc launch arguments...]: `wrc launch` on host NAME in the background; its
-# pid (ip netns exec and env exec it, so the pid is the launcher's) joins launchers.
+# pid, the launcher's, joins launchers.
 launch_on() {
-  local h=$1 log=$2
+  local host_cmd log=$2
+  host_command "$1"
   shift 2
-  ip netns exec "$tag$h" env HOME="$work/$h/home" WRC_CACHE_DIR="$work/$h/cache" LCM_DEFAULT_URL="$url" \
-    "$cli" launch "$@" --build-dir "$build" >"$log" 2>&1 &
+  "${host_cmd[@]}" "$cli" launch "$@" --build-dir "$build" >"$log" 2>&1 &
   launchers+=($!)
 }
 

@@ -94,6 +94,19 @@ void visit_strings(wrc::integrator_stats_t& m, const StringVisitor& f) {
   f("run_id", m.run_id, kMaxIdBytes, kId);
 }
 
+void visit_strings(wrc::model_piece_request_t& m, const StringVisitor& f) {
+  visit_header(m.header, f);
+  f("model_key", m.model_key, kMaxHashBytes, kId);
+  f("file_hash", m.file_hash, kMaxHashBytes, kId);
+  f("reply_channel", m.reply_channel, kMaxChannelLength, kId);
+}
+
+void visit_strings(wrc::model_piece_t& m, const StringVisitor& f) {
+  visit_header(m.header, f);
+  f("model_key", m.model_key, kMaxHashBytes, kId);
+  f("file_hash", m.file_hash, kMaxHashBytes, kId);
+}
+
 void visit_strings(wrc::ping_reply_t& m, const StringVisitor& f) {
   visit_header(m.header, f);
   f("instance", m.instance, kMaxNameBytes, kId);

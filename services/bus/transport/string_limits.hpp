@@ -20,6 +20,8 @@
 #include "wrc/geometry_table_t.hpp"
 #include "wrc/heartbeat_t.hpp"
 #include "wrc/integrator_stats_t.hpp"
+#include "wrc/model_piece_request_t.hpp"
+#include "wrc/model_piece_t.hpp"
 #include "wrc/ping_reply_t.hpp"
 #include "wrc/ping_request_t.hpp"
 #include "wrc/progress_t.hpp"
@@ -58,6 +60,8 @@ void visit_strings(wrc::geometry_request_t& m, const StringVisitor& f);
 void visit_strings(wrc::geometry_table_t& m, const StringVisitor& f);
 void visit_strings(wrc::heartbeat_t& m, const StringVisitor& f);
 void visit_strings(wrc::integrator_stats_t& m, const StringVisitor& f);
+void visit_strings(wrc::model_piece_request_t& m, const StringVisitor& f);
+void visit_strings(wrc::model_piece_t& m, const StringVisitor& f);
 void visit_strings(wrc::ping_reply_t& m, const StringVisitor& f);
 void visit_strings(wrc::ping_request_t& m, const StringVisitor& f);
 void visit_strings(wrc::progress_t& m, const StringVisitor& f);

@@ -38,9 +38,14 @@ spline_model_t read_model_file(const std::string& path) {
 
 spline_model_t resolve_model(const spline_model_t& reference) {
   if (reference.file_path.empty()) return reference;
-  spline_model_t full = decode_bytes<spline_model_t>(checked_file(reference, kModelFile), reference.file_path, kModelFile);
+  return model_from_file_bytes(reference, checked_file(reference, kModelFile), reference.file_path);
+}
+
+spline_model_t model_from_file_bytes(const spline_model_t& reference, const std::vector<char>& bytes,
+                                     const std::string& where) {
+  spline_model_t full = decode_bytes<spline_model_t>(bytes, where, kModelFile);
   if (full.model_key != reference.model_key || full.model_hash != reference.model_hash)
-    throw std::runtime_error(std::string(kModelFile) + " " + reference.file_path +
+    throw std::runtime_error(std::string(kModelFile) + " " + where +
                              " holds another model (model_key or model_hash differ)");
   full.header = reference.header;
   full.request_id = reference.request_id;

@@ -6,6 +6,7 @@
 /// to the complete model with its size and SHA-256 checked.
 
 #include <string>
+#include <vector>
 
 #include "wrc/spline_model_t.hpp"
 
@@ -29,4 +30,11 @@ spline_model_t read_model_file(const std::string& path);
 /// read from file_path, checked against file_size and file_hash, decoded.
 /// @throws std::runtime_error naming the path and what does not match.
 spline_model_t resolve_model(const spline_model_t& reference);
+
+/// The complete message behind a reference from the file's bytes as they came (read, or put
+/// together from pieces, already checked against file_size and file_hash): decoded, and holding
+/// the reference's model_key and model_hash. @throws std::runtime_error naming where what does
+/// not match (where: the path, or "from pieces").
+spline_model_t model_from_file_bytes(const spline_model_t& reference, const std::vector<char>& bytes,
+                                     const std::string& where);
 }  // namespace wrc::protocol

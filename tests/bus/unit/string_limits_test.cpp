@@ -82,6 +82,8 @@ TEST(StringLimits, EveryStringOfEveryMessageIsBoundedAtDecoding) {
   expect_every_string_bounded(table, 12);
   expect_every_string_bounded(wrc::heartbeat_t{}, 8);
   expect_every_string_bounded(wrc::integrator_stats_t{}, 2);
+  expect_every_string_bounded(wrc::model_piece_request_t{}, 4);
+  expect_every_string_bounded(wrc::model_piece_t{}, 3);
   expect_every_string_bounded(wrc::ping_reply_t{}, 3);
   expect_every_string_bounded(wrc::ping_request_t{}, 3);
   expect_every_string_bounded(wrc::progress_t{}, 3);

@@ -82,6 +82,129 @@ ModeKind classify(const Eigen::Vector4cd& v, std::complex<double> spin, const Wh
   return vertical > lateral ? ModeKind::kVerticalRoll : ModeKind::kLateralYaw;
 }
 
+// dF/dy (jy) by central differences about x0, every perturbed state in one batch; dF/dy' (jyp)
+// the same way with the contact of the steady state (the residual is linear in y', so this is exact).
+void difference_jacobians(Evaluation& e, ContactFormulation f, const std::vector<double>& x0,
+                          const ContactResult& steady_contact, Eigen::MatrixXd& jy, Eigen::MatrixXd& jyp) {
+  const int n = static_cast<int>(x0.size());
+  std::vector<ContactQuery> batch;
+  std::vector<double> h(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    h[static_cast<size_t>(k)] = increment(k, x0[static_cast<size_t>(k)]);
+    for (int sign : {1, -1}) {
+      std::vector<double> x = x0;
+      x[static_cast<size_t>(k)] += sign * h[static_cast<size_t>(k)];
+      batch.push_back(e.equations.query(f, x.data(), e.branches));
+    }
+  }
+  const std::vector<ContactResult> results = e.evaluator.evaluate(batch);
+  jy.resize(n, n);
+  jyp.resize(n, n);
+  std::vector<double> zero(static_cast<size_t>(n), 0.0), plus(static_cast<size_t>(n)), minus(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const double hk = h[static_cast<size_t>(k)];
+    std::vector<double> xp = x0, xm = x0;
+    xp[static_cast<size_t>(k)] += hk;
+    xm[static_cast<size_t>(k)] -= hk;
+    e.equations.residual(f, xp.data(), zero.data(), results[static_cast<size_t>(2 * k)], e.branches, plus.data());
+    e.equations.residual(f, xm.data(), zero.data(), results[static_cast<size_t>(2 * k + 1)], e.branches, minus.data());
+    for (int i = 0; i < n; ++i) jy(i, k) = (plus[static_cast<size_t>(i)] - minus[static_cast<size_t>(i)]) / (2.0 * hk);
+    std::vector<double> dp = zero, dm = zero;
+    dp[static_cast<size_t>(k)] = 1.0;
+    dm[static_cast<size_t>(k)] = -1.0;
+    e.equations.residual(f, x0.data(), dp.data(), steady_contact, e.branches, plus.data());
+    e.equations.residual(f, x0.data(), dm.data(), steady_contact, e.branches, minus.data());
+    for (int i = 0; i < n; ++i) jyp(i, k) = (plus[static_cast<size_t>(i)] - minus[static_cast<size_t>(i)]) / 2.0;
+  }
+}
+
+// The linearised DAE jyp dx' + jy dx = 0 reduced to x' = A x, with the states' names and the
+// rows that give a state vector's coordinate velocities (4) and spin rate.
+struct ReducedSystem {
+  Eigen::MatrixXd a;
+  std::vector<std::string> state_names;
+  Eigen::MatrixXd velocity_of_state;
+  Eigen::RowVectorXd spin_of_state;
+};
+
+// Elastic contact: every unknown is a state and jyp is diagonal.
+ReducedSystem reduce_elastic(const Eigen::MatrixXd& jy, const Eigen::MatrixXd& jyp) {
+  const int n = static_cast<int>(jy.rows());
+  ReducedSystem r;
+  r.a = -(jyp.diagonal().cwiseInverse().asDiagonal() * jy);
+  r.state_names = {"y [m]",          "z [m]",         "roll [rad]",       "yaw [rad]",      "y_dot [m/s]",
+                   "z_dot [m/s]",    "roll_dot [rad/s]", "yaw_dot [rad/s]", "spin_rate [rad/s]"};
+  r.velocity_of_state = Eigen::MatrixXd::Zero(4, n);
+  r.velocity_of_state.block(0, kPoseUnknowns, 4, 4).setIdentity();
+  r.spin_of_state = Eigen::RowVectorXd::Zero(n);
+  r.spin_of_state[kUnknownSpinRate] = 1.0;
+  return r;
+}
+
+// Rigid contact: the states y, yaw, their rates and the spin rate on the constraints.
+ReducedSystem reduce_rigid(const Eigen::MatrixXd& jy, const Eigen::MatrixXd& jyp) {
+  ReducedSystem r;
+  // G: the gap rows' derivatives by the pose. T: the pose changes that keep both gaps, with
+  // y and yaw free (z and roll follow: their 2 x 2 block of G is the one the position projection
+  // inverts).
+  const Eigen::Matrix<double, 2, 4> g = jy.block(kUnknownNormalLeft, 0, 2, kPoseUnknowns);
+  Eigen::Matrix2d dependent, independent;
+  dependent << g(0, kUnknownZ), g(0, kUnknownRoll), g(1, kUnknownZ), g(1, kUnknownRoll);
+  independent << g(0, kUnknownY), g(0, kUnknownYaw), g(1, kUnknownY), g(1, kUnknownYaw);
+  const Eigen::Matrix2d follow = -dependent.fullPivLu().solve(independent);
+  Eigen::Matrix<double, 4, 2> t = Eigen::Matrix<double, 4, 2>::Zero();
+  t(kUnknownY, 0) = 1.0;
+  t(kUnknownYaw, 1) = 1.0;
+  t.row(kUnknownZ) = follow.row(0);
+  t.row(kUnknownRoll) = follow.row(1);
+  // The equations of motion on the constraints: M T w' + J_N dN = -(J_q T p + J_v T w + J_Omega dOmega),
+  // four equations for w' (2) and dN (2); dmu = 0 (G dq' = G dv - G G^T dmu = 0 with G dv = 0).
+  const int v0 = kPoseUnknowns;
+  Eigen::Matrix4d k;
+  k.leftCols(2) = jyp.block(v0, v0, 4, 4) * t;
+  k.rightCols(2) = jy.block(v0, kUnknownNormalLeft, 4, 2);
+  Eigen::Matrix<double, 4, 5> rhs;
+  rhs.leftCols(2) = -jy.block(v0, 0, 4, 4) * t;
+  rhs.middleCols(2, 2) = -jy.block(v0, v0, 4, 4) * t;
+  rhs.col(4) = -jy.block(v0, kUnknownSpinRate, 4, 1);
+  const Eigen::Matrix<double, 4, 5> solved = k.fullPivLu().solve(rhs);  // rows: w' (2), dN (2)
+  Eigen::Matrix<double, 1, 5> spin;
+  spin.leftCols(2) = jy.block(kUnknownSpinRate, 0, 1, 4) * t;
+  spin.middleCols(2, 2) = jy.block(kUnknownSpinRate, v0, 1, 4) * t;
+  spin(4) = jy(kUnknownSpinRate, kUnknownSpinRate);
+  spin += jy.block(kUnknownSpinRate, kUnknownNormalLeft, 1, 2) * solved.bottomRows(2);
+  r.a = Eigen::MatrixXd::Zero(5, 5);
+  r.a(0, 2) = r.a(1, 3) = 1.0;
+  r.a.block(2, 0, 2, 5) = solved.topRows(2);
+  r.a.row(4) = -spin / jyp(kUnknownSpinRate, kUnknownSpinRate);
+  r.state_names = {"y [m]", "yaw [rad]", "y_dot [m/s]", "yaw_dot [rad/s]", "spin_rate [rad/s]"};
+  r.velocity_of_state = Eigen::MatrixXd::Zero(4, 5);
+  r.velocity_of_state.block(0, 2, 4, 2) = t;
+  r.spin_of_state = Eigen::RowVectorXd::Zero(5);
+  r.spin_of_state[4] = 1.0;
+  return r;
+}
+
+// The eigenvalues of the reduced system, each classified by its eigenvector, largest real part
+// first (of a pair, the one with Im >= 0).
+std::vector<StabilityMode> modes_of(const ReducedSystem& system, const WheelsetParameters& p, double speed) {
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(system.a, true);
+  if (solver.info() != Eigen::Success)
+    throw std::runtime_error("linear stability: the eigenvalues at " + number(speed) + " m/s did not converge");
+  std::vector<StabilityMode> modes;
+  for (int i = 0; i < system.a.rows(); ++i) {
+    const Eigen::VectorXcd vector = solver.eigenvectors().col(i);
+    const Eigen::Vector4cd velocity = system.velocity_of_state.cast<std::complex<double>>() * vector;
+    const std::complex<double> spin_rate = (system.spin_of_state.cast<std::complex<double>>() * vector)(0);
+    modes.push_back({solver.eigenvalues()[i], classify(velocity, spin_rate, p)});
+  }
+  std::sort(modes.begin(), modes.end(), [](const StabilityMode& l, const StabilityMode& r) {
+    if (l.eigenvalue.real() != r.eigenvalue.real()) return l.eigenvalue.real() > r.eigenvalue.real();
+    return l.eigenvalue.imag() > r.eigenvalue.imag();
+  });
+  return modes;
+}
+
 }  // namespace
 
 const char* mode_kind_name(ModeKind kind) {
@@ -193,108 +316,13 @@ LinearisedWheelset LinearStability::linearise(double speed) {
   p.speed = speed;
   Evaluation e(p, nominal_radius_, *contact_, formulation_);
   e.equations.set_z_reference(out.steady.z_reference);
-  const ContactFormulation f = formulation_;
-  const std::vector<double>& x0 = out.steady.state;
-  const int n = static_cast<int>(x0.size());
-
-  // dF/dy by central differences, every perturbed state in one batch; dF/dy' the same way with
-  // the contact of the steady state (the residual is linear in y', so this is exact).
-  std::vector<ContactQuery> batch;
-  std::vector<double> h(static_cast<size_t>(n));
-  for (int k = 0; k < n; ++k) {
-    h[static_cast<size_t>(k)] = increment(k, x0[static_cast<size_t>(k)]);
-    for (int sign : {1, -1}) {
-      std::vector<double> x = x0;
-      x[static_cast<size_t>(k)] += sign * h[static_cast<size_t>(k)];
-      batch.push_back(e.equations.query(f, x.data(), e.branches));
-    }
-  }
-  const std::vector<ContactResult> results = contact_->evaluate(batch);
-  Eigen::MatrixXd jy(n, n), jyp(n, n);
-  std::vector<double> zero(static_cast<size_t>(n), 0.0), plus(static_cast<size_t>(n)), minus(static_cast<size_t>(n));
-  for (int k = 0; k < n; ++k) {
-    const double hk = h[static_cast<size_t>(k)];
-    std::vector<double> xp = x0, xm = x0;
-    xp[static_cast<size_t>(k)] += hk;
-    xm[static_cast<size_t>(k)] -= hk;
-    e.equations.residual(f, xp.data(), zero.data(), results[static_cast<size_t>(2 * k)], e.branches, plus.data());
-    e.equations.residual(f, xm.data(), zero.data(), results[static_cast<size_t>(2 * k + 1)], e.branches, minus.data());
-    for (int i = 0; i < n; ++i) jy(i, k) = (plus[static_cast<size_t>(i)] - minus[static_cast<size_t>(i)]) / (2.0 * hk);
-    std::vector<double> dp = zero, dm = zero;
-    dp[static_cast<size_t>(k)] = 1.0;
-    dm[static_cast<size_t>(k)] = -1.0;
-    e.equations.residual(f, x0.data(), dp.data(), out.steady.contact, e.branches, plus.data());
-    e.equations.residual(f, x0.data(), dm.data(), out.steady.contact, e.branches, minus.data());
-    for (int i = 0; i < n; ++i) jyp(i, k) = (plus[static_cast<size_t>(i)] - minus[static_cast<size_t>(i)]) / 2.0;
-  }
-
-  // The linearised DAE jyp dx' + jy dx = 0, reduced to x' = A x.
-  Eigen::MatrixXd a;
-  Eigen::MatrixXd velocity_of_state;  // the coordinates' velocities (4 rows) of a state vector
-  Eigen::RowVectorXd spin_of_state;
-  if (f == ContactFormulation::kElastic) {
-    a = -(jyp.diagonal().cwiseInverse().asDiagonal() * jy);
-    out.state_names = {"y [m]",          "z [m]",         "roll [rad]",       "yaw [rad]",      "y_dot [m/s]",
-                       "z_dot [m/s]",    "roll_dot [rad/s]", "yaw_dot [rad/s]", "spin_rate [rad/s]"};
-    velocity_of_state = Eigen::MatrixXd::Zero(4, n);
-    velocity_of_state.block(0, kPoseUnknowns, 4, 4).setIdentity();
-    spin_of_state = Eigen::RowVectorXd::Zero(n);
-    spin_of_state[kUnknownSpinRate] = 1.0;
-  } else {
-    // G: the gap rows' derivatives by the pose. T: the pose changes that keep both gaps, with
-    // y and yaw free (z and roll follow: their 2 x 2 block of G is the one the position projection
-    // inverts).
-    const Eigen::Matrix<double, 2, 4> g = jy.block(kUnknownNormalLeft, 0, 2, kPoseUnknowns);
-    Eigen::Matrix2d dependent, independent;
-    dependent << g(0, kUnknownZ), g(0, kUnknownRoll), g(1, kUnknownZ), g(1, kUnknownRoll);
-    independent << g(0, kUnknownY), g(0, kUnknownYaw), g(1, kUnknownY), g(1, kUnknownYaw);
-    const Eigen::Matrix2d follow = -dependent.fullPivLu().solve(independent);
-    Eigen::Matrix<double, 4, 2> t = Eigen::Matrix<double, 4, 2>::Zero();
-    t(kUnknownY, 0) = 1.0;
-    t(kUnknownYaw, 1) = 1.0;
-    t.row(kUnknownZ) = follow.row(0);
-    t.row(kUnknownRoll) = follow.row(1);
-    // The equations of motion on the constraints: M T w' + J_N dN = -(J_q T p + J_v T w + J_Omega dOmega),
-    // four equations for w' (2) and dN (2); dmu = 0 (G dq' = G dv - G G^T dmu = 0 with G dv = 0).
-    const int v0 = kPoseUnknowns;
-    Eigen::Matrix4d k;
-    k.leftCols(2) = jyp.block(v0, v0, 4, 4) * t;
-    k.rightCols(2) = jy.block(v0, kUnknownNormalLeft, 4, 2);
-    Eigen::Matrix<double, 4, 5> rhs;
-    rhs.leftCols(2) = -jy.block(v0, 0, 4, 4) * t;
-    rhs.middleCols(2, 2) = -jy.block(v0, v0, 4, 4) * t;
-    rhs.col(4) = -jy.block(v0, kUnknownSpinRate, 4, 1);
-    const Eigen::Matrix<double, 4, 5> solved = k.fullPivLu().solve(rhs);  // rows: w' (2), dN (2)
-    Eigen::Matrix<double, 1, 5> spin;
-    spin.leftCols(2) = jy.block(kUnknownSpinRate, 0, 1, 4) * t;
-    spin.middleCols(2, 2) = jy.block(kUnknownSpinRate, v0, 1, 4) * t;
-    spin(4) = jy(kUnknownSpinRate, kUnknownSpinRate);
-    spin += jy.block(kUnknownSpinRate, kUnknownNormalLeft, 1, 2) * solved.bottomRows(2);
-    a = Eigen::MatrixXd::Zero(5, 5);
-    a(0, 2) = a(1, 3) = 1.0;
-    a.block(2, 0, 2, 5) = solved.topRows(2);
-    a.row(4) = -spin / jyp(kUnknownSpinRate, kUnknownSpinRate);
-    out.state_names = {"y [m]", "yaw [rad]", "y_dot [m/s]", "yaw_dot [rad/s]", "spin_rate [rad/s]"};
-    velocity_of_state = Eigen::MatrixXd::Zero(4, 5);
-    velocity_of_state.block(0, 2, 4, 2) = t;
-    spin_of_state = Eigen::RowVectorXd::Zero(5);
-    spin_of_state[4] = 1.0;
-  }
-  out.state_matrix = a;
-
-  const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, true);
-  if (solver.info() != Eigen::Success)
-    throw std::runtime_error("linear stability: the eigenvalues at " + number(speed) + " m/s did not converge");
-  for (int i = 0; i < a.rows(); ++i) {
-    const Eigen::VectorXcd vector = solver.eigenvectors().col(i);
-    const Eigen::Vector4cd velocity = velocity_of_state.cast<std::complex<double>>() * vector;
-    const std::complex<double> spin_rate = (spin_of_state.cast<std::complex<double>>() * vector)(0);
-    out.modes.push_back({solver.eigenvalues()[i], classify(velocity, spin_rate, p)});
-  }
-  std::sort(out.modes.begin(), out.modes.end(), [](const StabilityMode& l, const StabilityMode& r) {
-    if (l.eigenvalue.real() != r.eigenvalue.real()) return l.eigenvalue.real() > r.eigenvalue.real();
-    return l.eigenvalue.imag() > r.eigenvalue.imag();
-  });
+  Eigen::MatrixXd jy, jyp;
+  difference_jacobians(e, formulation_, out.steady.state, out.steady.contact, jy, jyp);
+  const ReducedSystem reduced =
+      formulation_ == ContactFormulation::kElastic ? reduce_elastic(jy, jyp) : reduce_rigid(jy, jyp);
+  out.state_names = reduced.state_names;
+  out.state_matrix = reduced.a;
+  out.modes = modes_of(reduced, p, speed);
   return out;
 }
 

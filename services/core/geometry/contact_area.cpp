@@ -231,17 +231,10 @@ std::vector<Run> runs_along(V&& value, const std::vector<double>& coord, double 
   return runs;
 }
 
-}  // namespace
-
-ContactAreaSummary ContactAreaGrid::summary(double eps0) const {
-  const size_t nx = xi.size(), ny = eta.size();
-  if (nx < 2 || ny < 2 || distance.size() != nx * ny)
-    throw std::invalid_argument("contact area grid: needs at least 2 x 2 nodes and one distance per node");
-  ContactAreaSummary out;
-  out.eps0 = eps0;
-
-  // Connected components of the nodes below eps0 (4-neighbour flood fill).
-  std::vector<int> label(nx * ny, -1);
+// Connected components of the nodes below eps0 (4-neighbour flood fill): label[k] the component
+// of node k (-1: not below eps0); returns their number.
+int label_components(const std::vector<double>& distance, size_t nx, size_t ny, double eps0, std::vector<int>& label) {
+  label.assign(nx * ny, -1);
   std::vector<size_t> stack;
   int count = 0;
   for (size_t start = 0; start < nx * ny; ++start) {
@@ -263,49 +256,68 @@ ContactAreaSummary ContactAreaGrid::summary(double eps0) const {
     }
     ++count;
   }
-  if (count == 0) return out;
+  return count;
+}
 
+// One patch per component with its node count and least distance, extents still empty.
+std::vector<ContactAreaPatch> count_patches(const std::vector<double>& distance, const std::vector<int>& label,
+                                            int count) {
   std::vector<ContactAreaPatch> patches(static_cast<size_t>(count));
-  std::vector<double> moment_xi(patches.size(), 0.0), moment_eta(patches.size(), 0.0);
   const double inf = std::numeric_limits<double>::infinity();
   for (auto& p : patches) {
     p.xi_min = p.eta_min = p.min_distance = inf;
     p.xi_max = p.eta_max = -inf;
   }
-  for (size_t k = 0; k < nx * ny; ++k) {
+  for (size_t k = 0; k < distance.size(); ++k) {
     if (label[k] < 0) continue;
     ContactAreaPatch& p = patches[static_cast<size_t>(label[k])];
     ++p.nodes;
     p.min_distance = std::min(p.min_distance, distance[k]);
   }
+  return patches;
+}
 
-  // Columns (fixed xi): chord lengths give area, eta extent and moments.
-  const double h_xi = (xi.back() - xi.front()) / static_cast<double>(nx - 1);
+// Columns (fixed xi): chord lengths give area, eta extent and moments.
+void add_columns(const ContactAreaGrid& grid, double eps0, const std::vector<int>& label,
+                 std::vector<ContactAreaPatch>& patches, std::vector<double>& moment_xi,
+                 std::vector<double>& moment_eta) {
+  const size_t nx = grid.xi.size();
+  const double h_xi = (grid.xi.back() - grid.xi.front()) / static_cast<double>(nx - 1);
   for (size_t i = 0; i < nx; ++i) {
-    auto value = [&](size_t j) { return distance[j * nx + i]; };
-    for (const Run& r : runs_along(value, eta, eps0)) {
+    auto value = [&](size_t j) { return grid.distance[j * nx + i]; };
+    for (const Run& r : runs_along(value, grid.eta, eps0)) {
       const size_t id = static_cast<size_t>(label[r.first * nx + i]);
       ContactAreaPatch& p = patches[id];
       const double length = r.upper - r.lower;
       p.area += h_xi * length;
-      moment_xi[id] += h_xi * length * xi[i];
+      moment_xi[id] += h_xi * length * grid.xi[i];
       moment_eta[id] += h_xi * 0.5 * (r.upper * r.upper - r.lower * r.lower);
       p.eta_min = std::min(p.eta_min, r.lower);
       p.eta_max = std::max(p.eta_max, r.upper);
       if (r.truncated || i == 0 || i + 1 == nx) p.truncated = true;
     }
   }
-  // Rows (fixed eta): the xi extent.
+}
+
+// Rows (fixed eta): the xi extent.
+void add_rows(const ContactAreaGrid& grid, double eps0, const std::vector<int>& label,
+              std::vector<ContactAreaPatch>& patches) {
+  const size_t nx = grid.xi.size(), ny = grid.eta.size();
   for (size_t j = 0; j < ny; ++j) {
-    auto value = [&](size_t i) { return distance[j * nx + i]; };
-    for (const Run& r : runs_along(value, xi, eps0)) {
+    auto value = [&](size_t i) { return grid.distance[j * nx + i]; };
+    for (const Run& r : runs_along(value, grid.xi, eps0)) {
       ContactAreaPatch& p = patches[static_cast<size_t>(label[j * nx + r.first])];
       p.xi_min = std::min(p.xi_min, r.lower);
       p.xi_max = std::max(p.xi_max, r.upper);
       if (r.truncated || j == 0 || j + 1 == ny) p.truncated = true;
     }
   }
+}
 
+// The patches' centroids, and the whole area's size, extent and centroid from its patches.
+void add_totals(std::vector<ContactAreaPatch>& patches, const std::vector<double>& moment_xi,
+                const std::vector<double>& moment_eta, ContactAreaSummary& out) {
+  const double inf = std::numeric_limits<double>::infinity();
   double total_xi = 0, total_eta = 0;
   out.xi_min = out.eta_min = inf;
   out.xi_max = out.eta_max = -inf;
@@ -328,6 +340,24 @@ ContactAreaSummary ContactAreaGrid::summary(double eps0) const {
     out.xi_centroid = total_xi / out.area;
     out.eta_centroid = total_eta / out.area;
   }
+}
+
+}  // namespace
+
+ContactAreaSummary ContactAreaGrid::summary(double eps0) const {
+  const size_t nx = xi.size(), ny = eta.size();
+  if (nx < 2 || ny < 2 || distance.size() != nx * ny)
+    throw std::invalid_argument("contact area grid: needs at least 2 x 2 nodes and one distance per node");
+  ContactAreaSummary out;
+  out.eps0 = eps0;
+  std::vector<int> label;
+  const int count = label_components(distance, nx, ny, eps0, label);
+  if (count == 0) return out;
+  std::vector<ContactAreaPatch> patches = count_patches(distance, label, count);
+  std::vector<double> moment_xi(patches.size(), 0.0), moment_eta(patches.size(), 0.0);
+  add_columns(*this, eps0, label, patches, moment_xi, moment_eta);
+  add_rows(*this, eps0, label, patches);
+  add_totals(patches, moment_xi, moment_eta, out);
   std::sort(patches.begin(), patches.end(),
             [](const ContactAreaPatch& a, const ContactAreaPatch& b) { return a.eta_centroid < b.eta_centroid; });
   out.patches = std::move(patches);

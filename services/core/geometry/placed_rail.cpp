@@ -28,21 +28,33 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
   sin_ = std::sin(alpha_);
 
   const double lo = rail_->lower(), hi = rail_->upper();
-  auto z_raw = [&](double u) { return u * sin_ + rail_->evaluate(u).height * cos_; };
-  auto dz_du = [&](double u) { return sin_ + rail_->evaluate(u).slope * cos_; };
-  // Part of the rail surface graph: y(u) increasing and |dz/dy| <= kMaxRailSlope.
-  auto on_surface = [&](double u) {
-    const double v1 = rail_->evaluate(u).slope;
-    const double dy = cos_ - v1 * sin_, dz = sin_ + v1 * cos_;
-    return dy > 0 && std::fabs(dz) <= kMaxRailSlope * dy;
-  };
+  const double du = (hi - lo) / kScanSamples;
+  find_top_of_rail(lo, hi, du);      // top of rail: the highest point of the inclined profile
+  find_surface_range(lo, hi, du);    // the rail surface seen from above
+  place_gauge_point(track, lo, du);  // the gauge point at |y| = gauge / 2 places the profile
+  build_inverse_table();             // u(y) for the Newton start, and the lateral extent
+  build_envelope_and_breaks();       // the step-size bounds and curvature breaks
+}
 
-  // Top of rail: the highest point of the inclined profile.
+// Rail-local profile rotated by the inclination (before the shift to z = 0).
+double PlacedRail::inclined_height(double u) const { return u * sin_ + rail_->evaluate(u).height * cos_; }
+
+// Its derivative dz/du.
+double PlacedRail::inclined_slope(double u) const { return sin_ + rail_->evaluate(u).slope * cos_; }
+
+// Part of the rail surface graph: y(u) increasing and |dz/dy| <= kMaxRailSlope.
+bool PlacedRail::on_surface(double u) const {
+  const double v1 = rail_->evaluate(u).slope;
+  const double dy = cos_ - v1 * sin_, dz = sin_ + v1 * cos_;
+  return dy > 0 && std::fabs(dz) <= kMaxRailSlope * dy;
+}
+
+// The highest of kScanSamples + 1 samples, refined to the root of dz/du between its neighbours.
+void PlacedRail::find_top_of_rail(double lo, double hi, double du) {
   int best = 0;
   double best_z = -1e300;
-  const double du = (hi - lo) / kScanSamples;
   for (int i = 0; i <= kScanSamples; ++i) {
-    const double z = z_raw(lo + i * du);
+    const double z = inclined_height(lo + i * du);
     if (z > best_z) {
       best_z = z;
       best = i;
@@ -50,6 +62,7 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
   }
   u_top_ = lo + best * du;
   {
+    auto dz_du = [&](double u) { return inclined_slope(u); };
     const double a = std::max(lo, u_top_ - du), b = std::min(hi, u_top_ + du);
     const double fa = dz_du(a), fb = dz_du(b);
     if (fa > 0 && fb < 0) {
@@ -57,19 +70,23 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
                                  "rail profile '" + rail_->name() + "': highest point");
     }
   }
-  z0_ = -z_raw(u_top_);
+  z0_ = -inclined_height(u_top_);
+}
 
-  // The part of the profile over which y(u) increases: the rail surface seen from above.
+// From the top of rail outwards in steps of du while the profile stays on the surface graph.
+void PlacedRail::find_surface_range(double lo, double hi, double du) {
   u_lower_ = u_top_;
   while (u_lower_ - du >= lo && on_surface(u_lower_ - du)) u_lower_ -= du;
   u_upper_ = u_top_;
   while (u_upper_ + du <= hi && on_surface(u_upper_ + du)) u_upper_ += du;
+}
 
-  // Gauge point: innermost point of the head between the top of rail and gauge_depth below it,
-  // searched over the whole gauge side where y(u) still increases (steep faces included).
+// Gauge point: innermost point of the head between the top of rail and gauge_depth below it,
+// searched over the whole gauge side where y(u) still increases (steep faces included).
+void PlacedRail::place_gauge_point(const TrackParameters& track, double lo, double du) {
   double u_gauge_side = u_top_;
   while (u_gauge_side - du >= lo && cos_ - rail_->evaluate(u_gauge_side - du).slope * sin_ > 0) u_gauge_side -= du;
-  auto depth = [&](double u) { return z_raw(u) + z0_ + track.gauge_depth; };
+  auto depth = [&](double u) { return inclined_height(u) + z0_ + track.gauge_depth; };
   double u_gauge = u_top_;
   if (track.gauge_depth > 0) {
     if (depth(u_gauge_side) > 0) {
@@ -88,8 +105,11 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
   }
   axis_ = 0.5 * track.gauge - inner;
   gauge_point_y_ = side_sign_ * 0.5 * track.gauge;
+}
 
-  // Inverse table u(y) on uniform y nodes, for a direct-indexed starting value of the Newton solve.
+// Inverse table u(y) on uniform y nodes, for a direct-indexed starting value of the Newton solve,
+// and the surface's lateral extent in the track frame.
+void PlacedRail::build_inverse_table() {
   const double y_first = local_y(u_lower_, rail_->evaluate(u_lower_).height);
   const double y_last = local_y(u_upper_, rail_->evaluate(u_upper_).height);
   table_y0_ = y_first;
@@ -125,6 +145,10 @@ PlacedRail::PlacedRail(ProfilePtr rail, const TrackParameters& track, WheelSide 
     y_lower_ = -table_y_last_;
     y_upper_ = -table_y0_;
   }
+}
+
+// The slope envelope over the surface's extent, and the positions where its curvature may jump.
+void PlacedRail::build_envelope_and_breaks() {
   envelope_ = SlopeEnvelope(y_lower_, y_upper_, 1e-3, 32, 1.25, [this](double y, double& d1, double& d2) {
     const RailSample r = at(y);
     d1 = r.slope;

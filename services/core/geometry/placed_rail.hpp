@@ -72,6 +72,22 @@ class PlacedRail {
   double local_z(double u, double v) const { return z0_ + u * sin_ + v * cos_; }
   double solve_u(double side_local_y) const;
   double hermite_u(double side_local_y) const;
+  // Height [m] and dz/du [-] of the inclined profile at u before the shift to z = 0.
+  double inclined_height(double u) const;
+  double inclined_slope(double u) const;
+  // Part of the rail surface graph at u: y(u) increasing and |dz/dy| <= 6.
+  bool on_surface(double u) const;
+  // The steps of the constructor, in order (lo, hi the profile's range, du its scan step [m]):
+  // top of rail u_top_ (the highest point of the inclined profile) and z0_;
+  void find_top_of_rail(double lo, double hi, double du);
+  // u_lower_, u_upper_: the part of the profile over which y(u) increases (seen from above);
+  void find_surface_range(double lo, double hi, double du);
+  // axis_ and gauge_point_y_ from the gauge point;
+  void place_gauge_point(const TrackParameters& track, double lo, double du);
+  // the inverse table u(y) and the lateral extent y_lower_, y_upper_;
+  void build_inverse_table();
+  // envelope_ and surface_breaks_.
+  void build_envelope_and_breaks();
 
   ProfilePtr rail_;
   WheelSide side_;

@@ -144,6 +144,17 @@ WheelsetPose with_roll(double y, double z, double roll, double yaw) {
   return p;
 }
 
+// The rigid wheelset at node (y, yaw), warm-started from near when given; a failure names the node.
+RigidContact solve_node(const RigidWheelsetSolver& solver, double y, double yaw, const RigidContact* near) {
+  try {
+    return near ? solver.solve(y, yaw, *near) : solver.solve(y, yaw);
+  } catch (const std::runtime_error& e) {
+    std::ostringstream msg;
+    msg << "interp table node y = " << y << " m, yaw = " << yaw << " rad: " << e.what() << " (reduce y_max)";
+    throw ContactConfigurationError(msg.str());
+  }
+}
+
 }  // namespace
 
 static_assert(kFieldCount == kContactPointFieldCount + 2, "ContactPointTable::kFields must match the field list");
@@ -151,36 +162,43 @@ static_assert(kFieldCount == kContactPointFieldCount + 2, "ContactPointTable::kF
 ContactPointTable::ContactPointTable(const WheelsetGeometry& geometry, const ContactModelOptions& options)
     : grid_(options.interp) {
   options.validate();
-  const PotentialPointSearch& search = options.search;
-  const double z_ref = geometry.track().nominal_radius;
   const double steepest = steepest_flange_point(geometry.wheel_profile());
-  const int nr = grid_.roll_points, nk = grid_.yaw_points;
   RigidSolverOptions rigid_options;
-  rigid_options.search = search;
+  rigid_options.search = options.search;
   rigid_options.all_potential_points = false;
   const RigidWheelsetSolver solver(geometry, rigid_options);
-  auto solve = [&](double y, double yaw, const RigidContact* near) {
-    try {
-      return near ? solver.solve(y, yaw, *near) : solver.solve(y, yaw);
-    } catch (const std::runtime_error& e) {
-      std::ostringstream msg;
-      msg << "interp table node y = " << y << " m, yaw = " << yaw << " rad: " << e.what() << " (reduce y_max)";
-      throw ContactConfigurationError(msg.str());
-    }
-  };
 
   // The rigid wheelset at the equally spaced nodes, and the jumps between them at every yaw node.
   std::vector<double> uniform(static_cast<size_t>(grid_.y_points));
   for (int i = 0; i < grid_.y_points; ++i) uniform[static_cast<size_t>(i)] = node(i, grid_.y_points, grid_.y_max);
+  const std::vector<std::vector<RigidContact>> rigid_uniform = find_jumps(solver, options, uniform);
+  // The y nodes, and the jumps' bands on them.
+  place_bands(uniform);
+
+  const int nk = grid_.yaw_points, ny = y_node_count();
+  roll_.assign(static_cast<size_t>(nk) * static_cast<size_t>(ny) * 2, 0.0);
+  for (auto& v : values_) v.assign(offset(nk, 0, 0), 0.0);
+  for (int k = 0; k < nk; ++k) {
+    // Per yaw node: the node values, their slopes in y, and the other point in each band.
+    tabulate_nodes(geometry, solver, options.search, steepest, k, rigid_uniform[static_cast<size_t>(k)]);
+    add_monotone_slopes(k);
+    follow_other_points(geometry, options.search, k);
+  }
+}
+
+std::vector<std::vector<RigidContact>> ContactPointTable::find_jumps(const RigidWheelsetSolver& solver,
+                                                                     const ContactModelOptions& options,
+                                                                     const std::vector<double>& uniform) {
+  const int nk = grid_.yaw_points;
   std::vector<std::vector<RigidContact>> rigid_uniform(static_cast<size_t>(nk));
   JumpTransitionOptions jump_options;
   jump_options.transition = grid_.transition;
   jump_options.transition_load = grid_.transition_load;
   jump_options.lateral_curvature_floor = options.lateral_curvature_floor;
-  jump_options.search = search;
+  jump_options.search = options.search;
   for (int k = 0; k < nk; ++k) {
     std::vector<RigidContact>& line = rigid_uniform[static_cast<size_t>(k)];
-    for (double y : uniform) line.push_back(solve(y, yaw_node(k), line.empty() ? nullptr : &line.back()));
+    for (double y : uniform) line.push_back(solve_node(solver, y, yaw_node(k), line.empty() ? nullptr : &line.back()));
     try {
       // A folded jump keeps the one-cell ramp: a smooth maximum of two branches that end within
       // the load-sharing range would share the load over the fold's height, a tenth of the
@@ -196,8 +214,11 @@ ContactPointTable::ContactPointTable(const WheelsetGeometry& geometry, const Con
                                       " (reduce y_max)");
     }
   }
+  return rigid_uniform;
+}
+
+void ContactPointTable::place_bands(const std::vector<double>& uniform) {
   y_nodes_ = y_nodes_around(uniform, transitions_);
-  const int ny = y_node_count();
   for (size_t n = 0; n < transitions_.size(); ++n) {
     Band band;
     band.yaw_node = transition_yaw_node_[n];
@@ -207,92 +228,101 @@ ContactPointTable::ContactPointTable(const WheelsetGeometry& geometry, const Con
     locate_y(transitions_[n].y, band.jump_cell, unused);
     bands_.push_back(band);
   }
+}
 
-  roll_.assign(static_cast<size_t>(nk) * static_cast<size_t>(ny) * 2, 0.0);
-  for (auto& v : values_) v.assign(offset(nk, 0, 0), 0.0);
-  for (int k = 0; k < nk; ++k) {
-    const double yaw = yaw_node(k);
-    const std::vector<RigidContact>& line = rigid_uniform[static_cast<size_t>(k)];
-    RigidContact rigid;
-    for (int i = 0; i < ny; ++i) {
-      const double y = y_node(i);
-      const auto same = std::find_if(line.begin(), line.end(), [y](const RigidContact& c) { return c.pose.y == y; });
-      rigid = same != line.end() ? *same : solve(y, yaw, i == 0 ? nullptr : &rigid);
-      // Implicit differentiation of gap_L = gap_R = 0 at fixed yaw: dz + g_roll dphi = -g_y dy.
-      const Eigen::Vector4d gl = vertical_gap_gradient(rigid.left(), rigid.pose);
-      const Eigen::Vector4d gr = vertical_gap_gradient(rigid.right(), rigid.pose);
-      const double roll_slope = -(gl[0] - gr[0]) / (gl[2] - gr[2]);
-      roll_[index(k, i) * 2] = rigid.pose.roll;
-      roll_[index(k, i) * 2 + 1] = roll_slope;
-      for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
-        std::vector<double>& v = values_[static_cast<int>(side)];
-        for (int j = 0; j < nr; ++j) {
-          const WheelsetPose pose = with_roll(y, z_ref, rigid.pose.roll + roll_offset(j), yaw);
-          ContactPoint p;
-          try {
-            p = require_common_point(geometry, side, pose, search, steepest);
-          } catch (const ContactConfigurationError& e) {
-            throw ContactConfigurationError(std::string("interp table node: ") + e.what() +
-                                            " (reduce the table's y_max, roll_band or yaw_max)");
-          }
-          const Eigen::Vector4d g = vertical_gap_gradient(p, pose);
-          const ContactPointFields fields = contact_point_fields(p, pose);
-          double* node = &v[offset(k, j, i)];
-          std::copy(fields.begin(), fields.end(), node);
-          node[kDistance0] = p.distance - z_ref;
-          node[kDistanceRoll] = g[2];
-          // The distance's exact slope along y at fixed delta (envelope gradient).
-          node[kFields + kDistance0] = g[0] + g[2] * roll_slope;
-        }
-      }
-    }
-    for (auto& v : values_) {
+void ContactPointTable::tabulate_nodes(const WheelsetGeometry& geometry, const RigidWheelsetSolver& solver,
+                                       const PotentialPointSearch& search, double steepest, int k,
+                                       const std::vector<RigidContact>& line) {
+  const double z_ref = geometry.track().nominal_radius;
+  const int nr = grid_.roll_points, ny = y_node_count();
+  const double yaw = yaw_node(k);
+  RigidContact rigid;
+  for (int i = 0; i < ny; ++i) {
+    const double y = y_node(i);
+    const auto same = std::find_if(line.begin(), line.end(), [y](const RigidContact& c) { return c.pose.y == y; });
+    rigid = same != line.end() ? *same : solve_node(solver, y, yaw, i == 0 ? nullptr : &rigid);
+    // Implicit differentiation of gap_L = gap_R = 0 at fixed yaw: dz + g_roll dphi = -g_y dy.
+    const Eigen::Vector4d gl = vertical_gap_gradient(rigid.left(), rigid.pose);
+    const Eigen::Vector4d gr = vertical_gap_gradient(rigid.right(), rigid.pose);
+    const double roll_slope = -(gl[0] - gr[0]) / (gl[2] - gr[2]);
+    roll_[index(k, i) * 2] = rigid.pose.roll;
+    roll_[index(k, i) * 2 + 1] = roll_slope;
+    for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
+      std::vector<double>& v = values_[static_cast<int>(side)];
       for (int j = 0; j < nr; ++j) {
-        for (int f = 0; f < kFields; ++f) {
-          if (f == kDistance0) continue;
-          double* first = &v[offset(k, j, 0)];
-          monotone_slopes(first + f, 2 * kFields, y_nodes_.data(), ny, first + kFields + f);
+        const WheelsetPose pose = with_roll(y, z_ref, rigid.pose.roll + roll_offset(j), yaw);
+        ContactPoint p;
+        try {
+          p = require_common_point(geometry, side, pose, search, steepest);
+        } catch (const ContactConfigurationError& e) {
+          throw ContactConfigurationError(std::string("interp table node: ") + e.what() +
+                                          " (reduce the table's y_max, roll_band or yaw_max)");
         }
+        const Eigen::Vector4d g = vertical_gap_gradient(p, pose);
+        const ContactPointFields fields = contact_point_fields(p, pose);
+        double* node = &v[offset(k, j, i)];
+        std::copy(fields.begin(), fields.end(), node);
+        node[kDistance0] = p.distance - z_ref;
+        node[kDistanceRoll] = g[2];
+        // The distance's exact slope along y at fixed delta (envelope gradient).
+        node[kFields + kDistance0] = g[0] + g[2] * roll_slope;
       }
     }
-    // In each band of this yaw node, at every node on the manifold (delta = 0), the other point:
-    // the minimum that continues the point across the jump, followed node by node outwards from
-    // the jump's cell.
-    for (size_t n = 0; n < bands_.size(); ++n) {
-      Band& band = bands_[n];
-      if (band.yaw_node != k) continue;
-      const WheelSide side = transitions_[n].side;
-      const std::vector<double>& v = values_[static_cast<int>(side)];
-      const int j = nr / 2;
-      band.other.assign(static_cast<size_t>(band.high - band.low + 1) * kBandValues, 0.0);
-      band.usable = true;
-      for (int direction : {+1, -1}) {
-        // Upwards the lower-y point continues, starting from its s at the jump cell's lower node.
-        const int first = direction > 0 ? band.jump_cell + 1 : band.jump_cell;
-        double s_near = v[offset(k, j, direction > 0 ? band.jump_cell : band.jump_cell + 1) + kPointS];
-        for (int i = first; band.usable && i >= band.low && i <= band.high; i += direction) {
-          const double roll = roll_[index(k, i) * 2], roll_slope = roll_[index(k, i) * 2 + 1];
-          const WheelsetPose pose = with_roll(y_node(i), z_ref, roll, yaw);
-          const double own_s = v[offset(k, j, i) + kPointS];
-          const std::vector<ContactPoint> points = geometry.potential_points(side, pose, search);
-          const ContactPoint* other = nullptr;
-          for (const ContactPoint& p : points) {
-            if (!p.is_minimum || std::fabs(p.s - own_s) < 1e-9 || std::fabs(p.s - s_near) >= kFollowShift) continue;
-            if (!other || std::fabs(p.s - s_near) < std::fabs(other->s - s_near)) other = &p;
-          }
-          if (!other) {
-            band.usable = false;  // folded away inside the band (at a coarser walk's resolution)
-            break;
-          }
-          s_near = other->s;
-          const Eigen::Vector4d g = vertical_gap_gradient(*other, pose);
-          const ContactPointFields fields = contact_point_fields(*other, pose);
-          double* o = &band.other[static_cast<size_t>(i - band.low) * kBandValues];
-          std::copy(fields.begin(), fields.end(), o);
-          o[kDistance0] = other->distance - z_ref;
-          o[kDistanceRoll] = g[2];
-          o[kFields] = g[0] + g[2] * roll_slope;
+  }
+}
+
+void ContactPointTable::add_monotone_slopes(int k) {
+  const int nr = grid_.roll_points, ny = y_node_count();
+  for (auto& v : values_) {
+    for (int j = 0; j < nr; ++j) {
+      for (int f = 0; f < kFields; ++f) {
+        if (f == kDistance0) continue;
+        double* first = &v[offset(k, j, 0)];
+        monotone_slopes(first + f, 2 * kFields, y_nodes_.data(), ny, first + kFields + f);
+      }
+    }
+  }
+}
+
+void ContactPointTable::follow_other_points(const WheelsetGeometry& geometry, const PotentialPointSearch& search,
+                                            int k) {
+  const double z_ref = geometry.track().nominal_radius;
+  const int nr = grid_.roll_points;
+  const double yaw = yaw_node(k);
+  for (size_t n = 0; n < bands_.size(); ++n) {
+    Band& band = bands_[n];
+    if (band.yaw_node != k) continue;
+    const WheelSide side = transitions_[n].side;
+    const std::vector<double>& v = values_[static_cast<int>(side)];
+    const int j = nr / 2;
+    band.other.assign(static_cast<size_t>(band.high - band.low + 1) * kBandValues, 0.0);
+    band.usable = true;
+    for (int direction : {+1, -1}) {
+      // Upwards the lower-y point continues, starting from its s at the jump cell's lower node.
+      const int first = direction > 0 ? band.jump_cell + 1 : band.jump_cell;
+      double s_near = v[offset(k, j, direction > 0 ? band.jump_cell : band.jump_cell + 1) + kPointS];
+      for (int i = first; band.usable && i >= band.low && i <= band.high; i += direction) {
+        const double roll = roll_[index(k, i) * 2], roll_slope = roll_[index(k, i) * 2 + 1];
+        const WheelsetPose pose = with_roll(y_node(i), z_ref, roll, yaw);
+        const double own_s = v[offset(k, j, i) + kPointS];
+        const std::vector<ContactPoint> points = geometry.potential_points(side, pose, search);
+        const ContactPoint* other = nullptr;
+        for (const ContactPoint& p : points) {
+          if (!p.is_minimum || std::fabs(p.s - own_s) < 1e-9 || std::fabs(p.s - s_near) >= kFollowShift) continue;
+          if (!other || std::fabs(p.s - s_near) < std::fabs(other->s - s_near)) other = &p;
         }
+        if (!other) {
+          band.usable = false;  // folded away inside the band (at a coarser walk's resolution)
+          break;
+        }
+        s_near = other->s;
+        const Eigen::Vector4d g = vertical_gap_gradient(*other, pose);
+        const ContactPointFields fields = contact_point_fields(*other, pose);
+        double* o = &band.other[static_cast<size_t>(i - band.low) * kBandValues];
+        std::copy(fields.begin(), fields.end(), o);
+        o[kDistance0] = other->distance - z_ref;
+        o[kDistanceRoll] = g[2];
+        o[kFields] = g[0] + g[2] * roll_slope;
       }
     }
   }

@@ -136,6 +136,23 @@ class ContactPointTable {
   }
   // The y cell of y and the local coordinate t in [0, 1] in it.
   void locate_y(double y, int& cell, double& t) const;
+  // The steps of the constructor, in order: the rigid wheelset at the equally spaced y nodes of
+  // every yaw node (returned, per yaw node) and the jumps between them (transitions_);
+  std::vector<std::vector<RigidContact>> find_jumps(const RigidWheelsetSolver& solver,
+                                                    const ContactModelOptions& options,
+                                                    const std::vector<double>& uniform);
+  // the y nodes around the jumps' bands (y_nodes_) and the bands' node ranges (bands_);
+  void place_bands(const std::vector<double>& uniform);
+  // at yaw node k, the rigid roll and its y slope (roll_) and both wheels' node values (values_),
+  // line the rigid wheelset at the equally spaced nodes there;
+  void tabulate_nodes(const WheelsetGeometry& geometry, const RigidWheelsetSolver& solver,
+                      const PotentialPointSearch& search, double steepest, int k, const std::vector<RigidContact>& line);
+  // the monotone y slopes of the fields of yaw node k (all but the distance's, which is exact);
+  void add_monotone_slopes(int k);
+  // in each band of yaw node k, at every node on the manifold (delta = 0), the other point: the
+  // minimum that continues the point across the jump, followed node by node outwards from the
+  // jump's cell (Band::other, Band::usable).
+  void follow_other_points(const WheelsetGeometry& geometry, const PotentialPointSearch& search, int k);
   // A jump's band at one yaw node: its node range, the cell of the jump, and at every node of the
   // range the other point on the manifold (kBandValues per node: the fields of the table, then the
   // distance's y slope).

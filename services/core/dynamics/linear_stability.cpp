@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include <Eigen/Dense>
@@ -12,6 +11,7 @@
 #include "core/dynamics/consistent_initialisation.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/numerics/inclusive_range.hpp"
+#include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
@@ -30,16 +30,9 @@ constexpr double kScaledIncrement = 1e-6;        // normal forces [-] and GGL mu
 constexpr double kSpinTolerance = 1e-11;
 constexpr int kMaxSpinIterations = 20;
 
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-
 void check_speed(double speed) {
   if (!(std::isfinite(speed) && speed > 0.0))
-    throw std::invalid_argument("linear stability: speed " + number(speed) + " m/s must be finite and > 0");
+    throw std::invalid_argument("linear stability: speed " + number_text(speed) + " m/s must be finite and > 0");
 }
 
 double increment(int k, double value) {
@@ -190,7 +183,7 @@ ReducedSystem reduce_rigid(const Eigen::MatrixXd& jy, const Eigen::MatrixXd& jyp
 std::vector<StabilityMode> modes_of(const ReducedSystem& system, const WheelsetParameters& p, double speed) {
   const Eigen::EigenSolver<Eigen::MatrixXd> solver(system.a, true);
   if (solver.info() != Eigen::Success)
-    throw std::runtime_error("linear stability: the eigenvalues at " + number(speed) + " m/s did not converge");
+    throw std::runtime_error("linear stability: the eigenvalues at " + number_text(speed) + " m/s did not converge");
   std::vector<StabilityMode> modes;
   for (int i = 0; i < system.a.rows(); ++i) {
     const Eigen::VectorXcd vector = solver.eigenvectors().col(i);
@@ -230,13 +223,13 @@ const StabilityMode& LinearisedWheelset::least_damped() const {
 
 std::vector<double> stability_speeds(double from, double to, double step) {
   const auto bad = [](const std::string& what) { throw std::invalid_argument("speed range: " + what); };
-  if (!std::isfinite(from) || !(from > 0.0)) bad("the first speed " + number(from) + " m/s must be finite and > 0");
+  if (!std::isfinite(from) || !(from > 0.0)) bad("the first speed " + number_text(from) + " m/s must be finite and > 0");
   if (!std::isfinite(to) || !(to >= from))
-    bad("the last speed " + number(to) + " m/s must be finite and >= the first, " + number(from) + " m/s");
-  if (!std::isfinite(step) || !(step > 0.0)) bad("the step " + number(step) + " m/s must be finite and > 0");
+    bad("the last speed " + number_text(to) + " m/s must be finite and >= the first, " + number_text(from) + " m/s");
+  if (!std::isfinite(step) || !(step > 0.0)) bad("the step " + number_text(step) + " m/s must be finite and > 0");
   const long count = inclusive_range_count(from, to, step);
   if (count > kMaxStabilitySpeeds)
-    bad("the step " + number(step) + " m/s gives " + std::to_string(count) + " speeds, more than " +
+    bad("the step " + number_text(step) + " m/s gives " + std::to_string(count) + " speeds, more than " +
         std::to_string(kMaxStabilitySpeeds));
   return inclusive_range(from, to, step);
 }
@@ -245,12 +238,12 @@ LinearStability::LinearStability(WheelsetParameters parameters, std::shared_ptr<
                                  double nominal_radius)
     : parameters_(parameters), contact_(std::move(contact)), nominal_radius_(nominal_radius) {
   if (parameters_.lateral_force != 0.0)
-    throw std::invalid_argument("linear stability: lateral_force " + number(parameters_.lateral_force) +
+    throw std::invalid_argument("linear stability: lateral_force " + number_text(parameters_.lateral_force) +
                                 " N must be 0 (with a lateral load the wheelset has no centred steady state)");
   parameters_.validate();
   if (!contact_) throw std::invalid_argument("linear stability: no contact evaluator");
   if (!(std::isfinite(nominal_radius) && nominal_radius > 0.0))
-    throw std::invalid_argument("linear stability: nominal radius " + number(nominal_radius) + " m must be > 0");
+    throw std::invalid_argument("linear stability: nominal radius " + number_text(nominal_radius) + " m must be > 0");
   formulation_ = contact_model_entry(contact_->model()).dynamics_formulation;
 }
 
@@ -284,15 +277,15 @@ CentredSteadyState LinearStability::steady_state(double speed) {
   double moment = axle_moment(y);
   for (int iteration = 0; std::abs(moment) > moment_tolerance; ++iteration) {
     if (iteration == kMaxSpinIterations)
-      throw std::runtime_error("linear stability: no spin rate balances the axle moment at " + number(speed) +
-                               " m/s (left " + number(moment) + " N m)");
+      throw std::runtime_error("linear stability: no spin rate balances the axle moment at " + number_text(speed) +
+                               " m/s (left " + number_text(moment) + " N m)");
     std::vector<double> ahead = y;
     const double h = increment(kUnknownSpinRate, y[kUnknownSpinRate]);
     ahead[kUnknownSpinRate] += h;
     const double slope = (axle_moment(ahead) - moment) / h;
     if (!(slope < 0.0))
       throw std::runtime_error("linear stability: the axle moment does not fall with the spin rate at " +
-                               number(speed) + " m/s");
+                               number_text(speed) + " m/s");
     y[kUnknownSpinRate] -= moment / slope;
     moment = axle_moment(y);
   }

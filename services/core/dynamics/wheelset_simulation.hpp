@@ -3,10 +3,12 @@
 /// @file
 /// A wheelset run: the equations of wheelset_equations.hpp integrated by SUNDIALS IDA step by
 /// step, with the contact from a ContactEvaluator, events where the contact point jumps, restarts
-/// with consistent initial values, and model swaps at step boundaries.
+/// with consistent initial values, and model swaps at step boundaries. The run drives its units:
+/// the integrator (ida_integrator.hpp), the Jacobian (wheelset_jacobian.hpp), the contact and its
+/// cache (wheelset_contact.hpp), the contact-point switches (contact_switching.hpp) and the output
+/// samples (output_sampler.hpp).
 
 #include <array>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -14,9 +16,12 @@
 
 #include "core/dynamics/consistent_initialisation.hpp"
 #include "core/dynamics/contact_evaluator.hpp"
+#include "core/dynamics/contact_switching.hpp"
+#include "core/dynamics/ida_integrator.hpp"
+#include "core/dynamics/output_sampler.hpp"
 #include "core/dynamics/run_counters.hpp"
 #include "core/dynamics/run_extremes.hpp"
-#include "core/dynamics/sundials_support.hpp"
+#include "core/dynamics/wheelset_contact.hpp"
 #include "core/dynamics/wheelset_equations.hpp"
 #include "core/dynamics/wheel_forces.hpp"
 #include "core/dynamics/wheel_output.hpp"
@@ -48,23 +53,15 @@ struct SwapRecord {
   std::string to;      ///< model after
 };
 
-/// One located switch of a wheel's contact point (or regime).
-struct SwitchRecord {
-  double t = 0;        ///< [s]
-  int wheel = 0;       ///< 0 left, 1 right
-  double s_from = 0;   ///< wheel coordinate before [m]
-  double s_to = 0;     ///< after [m]
-};
-
 /// How a run ends.
 enum class RunState { kRunning, kFinished, kFailed, kStopped };
 
-class WheelsetSimulation {
+class WheelsetSimulation : private DaeSystem {
  public:
   /// @param nominal_radius r0 of the wheel profile (nominal spin V / r0) [m].
   /// @throws std::invalid_argument for an invalid spec or a null contact.
   WheelsetSimulation(RunSpec spec, std::shared_ptr<ContactEvaluator> contact, double nominal_radius);
-  ~WheelsetSimulation();
+  ~WheelsetSimulation() override;
   WheelsetSimulation(const WheelsetSimulation&) = delete;
   WheelsetSimulation& operator=(const WheelsetSimulation&) = delete;
 
@@ -91,8 +88,8 @@ class WheelsetSimulation {
   RunState state() const { return state_; }
   const std::string& message() const { return message_; }
   double time() const { return t_; }
-  std::string model() const { return contact_->model(); }
-  ContactFormulation formulation() const { return formulation_; }
+  std::string model() const { return contact_.evaluator()->model(); }
+  ContactFormulation formulation() const { return contact_.formulation(); }
   /// The wheelset now (after the last step).
   WheelsetSnapshot snapshot();
   /// Counters summed over the whole run.
@@ -101,89 +98,62 @@ class WheelsetSimulation {
   const std::vector<SwitchRecord>& switches() const { return switch_log_; }
   /// The largest |Y/Q|, |sum Y|, T gamma and p_max so far, over every accepted step and output
   /// sample, with their time and distance travelled (docs/run-quantities.md).
-  const RunExtremes& extremes() const { return extremes_; }
+  const RunExtremes& extremes() const { return output_.extremes(); }
   const RunSpec& spec() const { return spec_; }
   const WheelsetEquations& equations() const { return equations_; }
 
-  /// IDA's residual, Jacobian and event callbacks (public for the C trampolines only).
+ private:
+  /// The DAE IDA integrates (ida_integrator.hpp): each function first places the equations on the
+  /// track where the wheelset is at time t.
+  int residual(double t, const double* y, const double* yp, double* r) override;
+  int jacobian(double t, double cj, const double* y, const double* yp, const double* r, DenseMatrixView jac) override;
+  int roots(double t, const double* y, double* g) override;
+  /// IDA's error and warning text: kept for the run's failure message instead of printed (a
+  /// failure the run recovers from, a convergence restart, is no error for the user).
+  void message(const char* function, const char* text) override;
+
   /// Places the equations on the track where the wheelset is at time t [s] (s = speed t).
   void place_on_track(double t);
-  int residual_callback(const double* y, const double* yp, double* r);
-  int jacobian_callback(double cj, const double* y, const double* yp, const double* r, SUNMatrix jac);
-  int root_callback(const double* y, double* g);
-  /// IDA's error and warning text [-]: kept for the run's failure message instead of printed (a
-  /// failure the run recovers from, a convergence restart, is no error for the user).
-  void solver_message(const char* function, const char* text);
-
- private:
-  struct CachedContact {
-    std::vector<double> key;
-    ContactResult result;
-  };
-  const ContactResult& contact_at(const double* y);
-  std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch);
-  /// Unknowns of the current formulation and branches (unknown_count()).
-  int unknowns() const;
-  /// Follows other branches: the state resized to their layout, the contact cache cleared.
-  void set_branches(const FollowedBranches& branches, std::vector<double>& y);
-  /// Wheel i leaves its branch for the point at target_s [m] (an event, or a switch the branch
-  /// check found at a step): one-point contact on the target, or, where one-point contact would
-  /// at once switch back (the point it leaves is not separating and two-point contact loads both
-  /// points), rigid two-point contact on both: Filippov's sliding mode on the switching surface
-  /// (only with IntegratorSettings::two_point_sliding; without it, one-point contact on the target).
-  /// Sets branches_ and the state y (positions and velocities projected).
-  void switch_wheel(int wheel, double target_s, std::vector<double>& y);
-  /// Releases the point of wheel i whose normal force fell to 0 (second: the second point).
-  void release_point(int wheel, bool second, std::vector<double>& y);
-  /// How far a followed point is above the lowest minimum (or past a fold) at the contact of y,
-  /// per wheel [m] (<= 0 on the right branch): -switch_function.
-  std::array<double, 2> branch_excess(const ContactResult& c) const;
-
   /// The run's equations, formulation, branches and contact for the consistent initialisation
   /// (consistent_initialisation.hpp).
   InitialisationContext initialisation();
+  /// The contact-point switches at the current time.
+  SwitchingContext switching();
+  /// The start's consistent state at t = 0 (both formulations from rigid contact).
+  std::vector<double> initial_state();
   void begin_segment(std::vector<double> y, bool first);
   void perform_swap(std::shared_ptr<ContactEvaluator> next);
+  /// The state after a swap from formulation from to the current one.
+  void adapt_to_swap(ContactFormulation from, std::vector<double>& y, const std::array<double, 2>& normal_forces,
+                     double z_acceleration, double roll_acceleration);
+  /// One IDASolve step's aftermath; false once the run is over.
+  bool after_step(const IdaStep& step);
   void handle_roots();
+  /// Follows the branches at an accepted step without an event, or restarts where the check finds
+  /// a followed point that is not the lowest (rigid formulation).
+  void check_branches();
   /// Projects y onto the constraints, switches every wheel whose followed point is not the lowest
-  /// (at most kMaxSwitchesPerEvent times; not without IntegratorSettings::two_point_sliding) and
-  /// restarts the integrator there.
+  /// and restarts the integrator there.
   void restart_on_right_branches(std::vector<double>& y);
   /// After IDA's corrector failed at every step size (rigid formulation): a wheel in two-point
   /// contact keeps its more loaded point, and the run restarts on the right branches there.
   void restart_after_convergence_failure();
-  /// The contact of each wheel at the state y (one contact evaluation, usually cached); forces, when
-  /// given, receives each wheel's patch sums.
-  std::array<WheelOutput, 2> wheel_outputs(const std::vector<double>& y, std::array<WheelForces, 2>* forces = nullptr);
-  /// Every output sample up to t: the state interpolated by IDA, the contact data linearly
-  /// between the last two accepted steps (no contact evaluation per sample).
+  /// The contact of each wheel at the state y (one contact evaluation, usually cached).
+  StepContact step_contact_at(const std::vector<double>& y);
+  /// Every output sample up to t [s].
   void emit_outputs_until(double t);
   WheelsetSnapshot snapshot_of(const std::vector<double>& y, double t, const std::array<WheelOutput, 2>& wheels);
-  /// The contact data of the step just accepted (and of the previous one).
-  struct StepContact {
-    double t = 0;
-    std::array<WheelOutput, 2> wheels;
-    std::array<WheelForces, 2> forces;  // each wheel's patch sums (Y and Q at an output apply its normal force)
-  };
   void record_step_contact(bool restart);
-  RunCounters ida_counters() const;
-  std::vector<double> current_state() const;
   void fail(const std::string& why);
 
   RunSpec spec_;
   WheelsetEquations equations_;
-  std::shared_ptr<ContactEvaluator> contact_;
-  ContactFormulation formulation_ = ContactFormulation::kRigid;
-  FollowedBranches branches_;
+  WheelsetContact contact_;
   std::function<void(const WheelsetSnapshot&)> on_output_;
 
-  SundialsContext ctx_;
-  std::unique_ptr<SerialVector> y_, yp_, id_, atol_;
-  std::unique_ptr<SerialVector> output_state_;  // the state interpolated at an output time
-  IdaSolver ida_;
+  IdaIntegrator integrator_;
+  OutputSampler output_;
   double t_ = 0;
-  double next_output_ = 0;
-  long output_index_ = 0;
   RunState state_ = RunState::kRunning;
   std::string message_;
   std::string last_contact_error_;
@@ -193,12 +163,9 @@ class WheelsetSimulation {
   double scheduled_swap_time_ = -1;
   std::shared_ptr<ContactEvaluator> scheduled_swap_;
   RunCounters accumulated_;  // finished segments
-  RunCounters own_;          // counted here, not by IDA (queries, Jacobians, restarts, switches)
-  std::deque<CachedContact> cache_;
-  StepContact previous_step_, current_step_;
+  RunCounters own_;          // counted here, not by IDA (Jacobians, restarts, switches)
   std::vector<SwapRecord> swaps_;
   std::vector<SwitchRecord> switch_log_;
-  RunExtremes extremes_;
   int convergence_restarts_in_a_row_ = 0;  // without a step in between
 };
 

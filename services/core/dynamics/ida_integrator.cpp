@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "core/dynamics/ida_integrator.hpp"
+
+#include <algorithm>
+
+#include "core/dynamics/sundials_support.hpp"
+
+namespace wrc {
+namespace {
+
+DaeSystem* system_of(void* user) { return static_cast<DaeSystem*>(user); }
+
+int ida_residual(sunrealtype t, N_Vector y, N_Vector yp, N_Vector r, void* user) {
+  return system_of(user)->residual(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r));
+}
+
+int ida_jacobian(sunrealtype t, sunrealtype cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix jac, void* user,
+                 N_Vector, N_Vector, N_Vector) {
+  const DenseMatrixView view{SM_DATA_D(jac), static_cast<long>(SM_ROWS_D(jac))};
+  return system_of(user)->jacobian(t, cj, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r),
+                                   view);
+}
+
+void ida_message(int, const char*, const char* function, char* text, void* user) {
+  system_of(user)->message(function, text);
+}
+
+int ida_roots(sunrealtype t, N_Vector y, N_Vector, sunrealtype* g, void* user) {
+  return system_of(user)->roots(t, N_VGetArrayPointer(y), g);
+}
+
+}  // namespace
+
+struct IdaIntegrator::Impl {
+  explicit Impl(DaeSystem& s) : system(s) {}
+  void set_up(const IdaSegment& settings);
+
+  DaeSystem& system;
+  SundialsContext ctx;
+  std::unique_ptr<SerialVector> y, yp, id, atol;
+  std::unique_ptr<SerialVector> output_state;  // the state interpolated at an output time
+  IdaSolver ida;
+  double t = 0;  // time of y [s]
+};
+
+IdaIntegrator::IdaIntegrator(DaeSystem& system) : impl_(std::make_unique<Impl>(system)) {}
+
+IdaIntegrator::~IdaIntegrator() = default;
+
+bool IdaIntegrator::started() const { return static_cast<bool>(impl_->ida); }
+
+void IdaIntegrator::begin(double t, const std::vector<double>& y, const std::vector<double>& yp,
+                          const IdaSegment& settings) {
+  Impl& m = *impl_;
+  const long n = static_cast<long>(y.size());
+  const bool same_size = m.y && m.y->size() == n;
+  if (!same_size) {
+    m.y = std::make_unique<SerialVector>(n, m.ctx.get());
+    m.yp = std::make_unique<SerialVector>(n, m.ctx.get());
+    m.id = std::make_unique<SerialVector>(n, m.ctx.get());
+    m.atol = std::make_unique<SerialVector>(n, m.ctx.get());
+    m.output_state = std::make_unique<SerialVector>(n, m.ctx.get());
+  }
+  std::copy(y.begin(), y.end(), m.y->data());
+  std::copy(yp.begin(), yp.end(), m.yp->data());
+  std::copy(settings.differential.begin(), settings.differential.end(), m.id->data());
+  std::copy(settings.absolute_tolerance.begin(), settings.absolute_tolerance.end(), m.atol->data());
+  m.t = t;
+  if (same_size && m.ida) {
+    check_sundials(IDAReInit(m.ida.mem(), t, m.y->get(), m.yp->get()), "IDAReInit");
+  } else {
+    m.ida.create(m.ctx.get(), ida_residual, t, m.y->get(), m.yp->get());
+    m.set_up(settings);
+  }
+}
+
+void IdaIntegrator::Impl::set_up(const IdaSegment& s) {
+  void* mem = ida.mem();
+  check_sundials(IDASetUserData(mem, &system), "IDASetUserData");
+  check_sundials(IDASetErrHandlerFn(mem, ida_message, &system), "IDASetErrHandlerFn");
+  check_sundials(IDASVtolerances(mem, s.relative_tolerance, atol->get()), "IDASVtolerances");
+  check_sundials(IDASetId(mem, id->get()), "IDASetId");
+  check_sundials(IDASetJacFn(mem, ida_jacobian), "IDASetJacFn");
+  check_sundials(IDASetMaxStep(mem, s.max_step), "IDASetMaxStep");
+  check_sundials(IDASetDeltaCjLSetup(mem, s.newton_matrix_cj_change), "IDASetDeltaCjLSetup");
+  if (!s.index2) return;
+  check_sundials(IDASetSuppressAlg(mem, SUNTRUE), "IDASetSuppressAlg");
+  check_sundials(IDASetMaxNonlinIters(mem, s.max_newton_iterations), "IDASetMaxNonlinIters");
+  std::vector<int> direction = s.root_direction;
+  check_sundials(IDARootInit(mem, static_cast<int>(direction.size()), ida_roots), "IDARootInit");
+  check_sundials(IDASetRootDirection(mem, direction.data()), "IDASetRootDirection");
+  check_sundials(IDASetNoInactiveRootWarn(mem), "IDASetNoInactiveRootWarn");
+}
+
+IdaStep IdaIntegrator::step(double t_stop) {
+  Impl& m = *impl_;
+  check_sundials(IDASetStopTime(m.ida.mem(), t_stop), "IDASetStopTime");
+  IdaStep s;
+  s.t = m.t;
+  s.flag = IDASolve(m.ida.mem(), t_stop, &s.t, m.y->get(), m.yp->get(), IDA_ONE_STEP);
+  s.root = s.flag == IDA_ROOT_RETURN;
+  s.stop_time = s.flag == IDA_TSTOP_RETURN;
+  s.convergence_failure = s.flag == IDA_CONV_FAIL;
+  if (s.flag >= 0) m.t = s.t;
+  return s;
+}
+
+std::vector<int> IdaIntegrator::root_info(int root_count) const {
+  std::vector<int> info(static_cast<size_t>(root_count), 0);
+  check_sundials(IDAGetRootInfo(impl_->ida.mem(), info.data()), "IDAGetRootInfo");
+  return info;
+}
+
+RunCounters IdaIntegrator::counters() const {
+  RunCounters c;
+  if (!impl_->ida) return c;
+  void* mem = impl_->ida.mem();
+  long v = 0;
+  check_sundials(IDAGetNumSteps(mem, &v), "IDAGetNumSteps");
+  c.steps = v;
+  check_sundials(IDAGetNumResEvals(mem, &v), "IDAGetNumResEvals");
+  c.residual_evals = v;
+  check_sundials(IDAGetNumLinSolvSetups(mem, &v), "IDAGetNumLinSolvSetups");
+  c.lin_setups = v;
+  check_sundials(IDAGetNumErrTestFails(mem, &v), "IDAGetNumErrTestFails");
+  c.err_test_fails = v;
+  check_sundials(IDAGetNumNonlinSolvIters(mem, &v), "IDAGetNumNonlinSolvIters");
+  c.nonlin_iters = v;
+  check_sundials(IDAGetNumNonlinSolvConvFails(mem, &v), "IDAGetNumNonlinSolvConvFails");
+  c.nonlin_conv_fails = v;
+  // 0 for a segment without event functions.
+  if (IDAGetNumGEvals(mem, &v) == IDA_SUCCESS) c.root_evals = v;
+  int order = 0;
+  check_sundials(IDAGetLastOrder(mem, &order), "IDAGetLastOrder");
+  c.last_order = order;
+  double h = 0;
+  check_sundials(IDAGetLastStep(mem, &h), "IDAGetLastStep");
+  c.last_step = h;
+  return c;
+}
+
+std::vector<double> IdaIntegrator::state() const {
+  const SerialVector& y = *impl_->y;
+  return std::vector<double>(y.data(), y.data() + y.size());
+}
+
+const double* IdaIntegrator::state_data() const { return impl_->y->data(); }
+
+const double* IdaIntegrator::derivative_data() const { return impl_->yp->data(); }
+
+std::vector<double> IdaIntegrator::state_at(double t) {
+  Impl& m = *impl_;
+  SerialVector& tmp = *m.output_state;
+  check_sundials(IDAGetDky(m.ida.mem(), t, 0, tmp.get()), "IDAGetDky");
+  if (t == m.t) N_VScale(1.0, m.y->get(), tmp.get());  // exactly the step's state
+  return std::vector<double>(tmp.data(), tmp.data() + tmp.size());
+}
+
+}  // namespace wrc

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+/// @file
+/// The contact of a wheelset run as its equations see it: the contact evaluator, the formulation
+/// it implies, the branches the run follows on each wheel, and the contact results kept for the
+/// states last asked (the residual, event and output functions ask again for the states of the
+/// step just taken). It counts the contact queries it sends.
+
+#include <deque>
+#include <memory>
+#include <vector>
+
+#include "core/dynamics/contact_evaluator.hpp"
+#include "core/dynamics/followed_branches.hpp"
+#include "core/dynamics/run_counters.hpp"
+#include "core/dynamics/wheelset_equations.hpp"
+
+namespace wrc {
+
+/// The formulation the dynamics takes for the evaluator's contact model.
+ContactFormulation formulation_of(const ContactEvaluator& contact);
+
+class WheelsetContact {
+ public:
+  /// @param equations give each query the pose, the track and the rails; they must outlive this.
+  /// @param rails_move whether the rails move (irregularities): their offsets then enter the
+  ///        cache's key.
+  WheelsetContact(std::shared_ptr<ContactEvaluator> evaluator, const WheelsetEquations& equations, bool rails_move);
+
+  const std::shared_ptr<ContactEvaluator>& evaluator() const { return evaluator_; }
+  ContactFormulation formulation() const { return formulation_; }
+  const FollowedBranches& branches() const { return branches_; }
+  /// Unknowns of the current formulation and branches (unknown_count()).
+  int unknowns() const { return unknown_count(formulation_, branches_.any_two_point()); }
+
+  /// The contact at the state y, usually from the cache; valid until the next call.
+  const ContactResult& at(const double* y);
+  /// One evaluation of a batch, one result per query in order (not cached).
+  /// @throws std::runtime_error when the evaluator answers another number of results.
+  std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch);
+  void clear_cache() { cache_.clear(); }
+
+  /// Follows other branches: the state resized to their layout (rigid), the contact cache cleared.
+  void set_branches(const FollowedBranches& branches, std::vector<double>& y);
+  /// Follows the points of c (the contact at an accepted step) on the branches it is on.
+  void follow(const ContactResult& c);
+  /// The formulation alone (the start takes both formulations from rigid contact); the cache is
+  /// cleared.
+  void set_formulation(ContactFormulation f);
+  /// Another evaluator, formulation and branches (a model swap, or its undoing); the cache is
+  /// cleared.
+  void replace(std::shared_ptr<ContactEvaluator> evaluator, ContactFormulation f, const FollowedBranches& branches);
+
+  /// contact_queries and contact_configurations so far; every other counter 0.
+  const RunCounters& counters() const { return counters_; }
+
+ private:
+  struct CachedContact {
+    std::vector<double> key;
+    ContactResult result;
+  };
+  std::shared_ptr<ContactEvaluator> evaluator_;
+  const WheelsetEquations& equations_;
+  bool rails_move_;
+  ContactFormulation formulation_;
+  FollowedBranches branches_;
+  std::deque<CachedContact> cache_;
+  RunCounters counters_;
+};
+
+}  // namespace wrc

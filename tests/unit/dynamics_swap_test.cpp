@@ -96,6 +96,25 @@ TEST(WheelsetSwap, RigidToElasticAndBack) {
   for (int i = 0; i < 2; ++i) EXPECT_NEAR(c.wheels[static_cast<size_t>(i)].gap, 0.0, 1e-9) << "wheel " << i;
 }
 
+// Two scheduled swaps, scheduled out of order (the later first): both take effect, in the order
+// of their times, each at the first step boundary at or after it (`wrc run --swap-at
+// 0.1:multipoint,0.2:interp`; a single slot once kept only the last one scheduled).
+TEST(WheelsetSwap, EveryScheduledSwapTakesEffectInTheOrderOfItsTime) {
+  WheelsetSimulation sim(short_benchmark(0.3), contact("interp"), kR0);
+  sim.schedule_swap(0.2, contact("interp"));
+  sim.schedule_swap(0.1, contact("multipoint"));
+  sim.run();
+  ASSERT_EQ(sim.state(), RunState::kFinished) << sim.message();
+  ASSERT_EQ(sim.swaps().size(), 2u);
+  EXPECT_EQ(sim.swaps()[0].to, "multipoint");
+  EXPECT_GE(sim.swaps()[0].t, 0.1);
+  EXPECT_LT(sim.swaps()[0].t, 0.2);
+  EXPECT_EQ(sim.swaps()[1].from, "multipoint");
+  EXPECT_EQ(sim.swaps()[1].to, "interp");
+  EXPECT_GE(sim.swaps()[1].t, 0.2);
+  EXPECT_EQ(sim.formulation(), ContactFormulation::kRigid);
+}
+
 // A run that starts elastic (multipoint) and swaps to rigid (interp) at 0.2 s: listed, rigid
 // afterwards, normal forces continuous, finished. Not earlier: an elastic start is not settled
 // (its wheel loads swing by 10 % and more until about 0.15 s, measured), and the rigid

@@ -306,8 +306,9 @@ void WheelsetSimulation::fail(const std::string& why) {
 void WheelsetSimulation::request_swap(std::shared_ptr<ContactEvaluator> next) { pending_swap_ = std::move(next); }
 
 void WheelsetSimulation::schedule_swap(double t, std::shared_ptr<ContactEvaluator> next) {
-  scheduled_swap_time_ = t;
-  scheduled_swap_ = std::move(next);
+  const auto later = std::upper_bound(scheduled_swaps_.begin(), scheduled_swaps_.end(), t,
+                                      [](double time, const ScheduledSwap& s) { return time < s.t; });
+  scheduled_swaps_.insert(later, ScheduledSwap{t, std::move(next)});
 }
 
 void WheelsetSimulation::adapt_to_swap(ContactFormulation from, std::vector<double>& y,
@@ -465,7 +466,11 @@ bool WheelsetSimulation::after_step(const IdaStep& step) {
   }
   // A scheduled swap acts at the first step boundary at or after its time, as a live one does
   // at the first boundary after it arrived (no stop time: the steps stay those of the live run).
-  if (scheduled_swap_ && t_ >= scheduled_swap_time_) perform_swap(std::exchange(scheduled_swap_, nullptr));
+  while (!scheduled_swaps_.empty() && t_ >= scheduled_swaps_.front().t) {
+    std::shared_ptr<ContactEvaluator> next = std::move(scheduled_swaps_.front().next);
+    scheduled_swaps_.pop_front();
+    perform_swap(std::move(next));
+  }
   if (counters().steps >= spec_.integrator.max_steps) {
     fail("more than " + std::to_string(spec_.integrator.max_steps) + " steps before t_end");
     return false;

@@ -9,6 +9,7 @@
 /// samples (output_sampler.hpp).
 
 #include <array>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -80,7 +81,9 @@ class WheelsetSimulation : private DaeSystem {
   /// Takes effect at the next step boundary (the next advance()).
   void request_swap(std::shared_ptr<ContactEvaluator> next);
   /// A swap to next at the first step boundary at or after time t [s]: reproduces, bit for bit, a
-  /// live swap recorded at t (which took effect at a step boundary).
+  /// live swap recorded at t (which took effect at a step boundary). Every scheduled swap takes
+  /// effect, in the order of their times (of equal times, in the order scheduled); several due at
+  /// one boundary are performed there one after the other.
   void schedule_swap(double t, std::shared_ptr<ContactEvaluator> next);
   /// Ends the run at the next step boundary with RunState::kStopped.
   void request_stop() { stop_requested_ = true; }
@@ -160,8 +163,11 @@ class WheelsetSimulation : private DaeSystem {
   std::string last_solver_message_;  // IDA's last error or warning text, for a failure's message
   bool stop_requested_ = false;
   std::shared_ptr<ContactEvaluator> pending_swap_;
-  double scheduled_swap_time_ = -1;
-  std::shared_ptr<ContactEvaluator> scheduled_swap_;
+  struct ScheduledSwap {
+    double t = 0;  // [s]
+    std::shared_ptr<ContactEvaluator> next;
+  };
+  std::deque<ScheduledSwap> scheduled_swaps_;  // in the order of their times
   RunCounters accumulated_;  // finished segments
   RunCounters own_;          // counted here, not by IDA (Jacobians, restarts, switches)
   std::vector<SwapRecord> swaps_;

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // `wrc plot KIND` as the user runs it: each kind writes a PNG of the size asked for (read from the
-// PNG header) or an SVG from a small case; for run, conicity, geometry, area and bifurcation what
-// was handed to gnuplot (captured by a gnuplot on PATH that copies the job's script and data) is
-// checked against the physics and the inputs; a bad option and a missing gnuplot give one-line
-// errors.
+// PNG header) or an SVG from a small case; for every kind what was handed to gnuplot (captured by
+// a gnuplot on PATH that copies the job's script and data) is checked against the physics (the
+// common point the lowest, the rigid wheelset on its rails, a cone's conicity, the area's
+// outlines, roll as lift) or against the inputs drawn; a bad option and a missing gnuplot give
+// one-line errors.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -263,6 +264,131 @@ TEST_F(PlotTest, ConicityAndGeometryOfAConeDrawTheirSeries) {
     }
   }
   EXPECT_NE(captured_script().find("using ($1*1e3):($2*1e3)"), std::string::npos);  // y and delta_r in mm
+}
+
+// What `wrc plot distance` draws (S1002 on UIC60, y = 3 mm): the distance along the locus C above
+// the common point is never negative (the common point is the lowest over the whole locus, and
+// the sampled locus comes within 1 um of it), and among the potential points exactly one is the
+// common point, at distance 0, none below it.
+TEST_F(PlotTest, DistanceDrawsTheCommonPointAsTheLowest) {
+  plot_captured("distance --y 0.003", "d.png");
+  double lowest = 1e300;
+  for (const auto& row : data_rows("locus.dat")) lowest = std::min(lowest, row[1]);
+  EXPECT_GE(lowest, -1e-12);
+  EXPECT_LT(lowest, 1e-6);
+  int common = 0;
+  for (const auto& row : data_rows("points.dat")) {
+    ASSERT_EQ(row.size(), 4u);
+    EXPECT_GE(row[1], -1e-12) << "a potential point below the common point at y = " << row[0];
+    if (row[3] == 1.0) {
+      ++common;
+      EXPECT_EQ(row[1], 0.0);
+      EXPECT_EQ(row[2], 1.0);  // a local minimum
+    }
+  }
+  EXPECT_EQ(common, 1);
+}
+
+// What `wrc plot displacement` draws: the left wheel's vertical displacement at the nominal
+// height over (y, roll). A roll phi lifts the left wheel's contact point, at y_c = 0.74 m from the
+// centre, by y_c phi, less r0 tan(delta) phi for the sideways move of a point r0 = 0.46 m below the
+// axle on a profile sloping at the contact angle delta (0 to 0.12 rad on the tread): at y = 0 the
+// map's slope in roll (central difference over one grid step each way) lies in [0.68, 0.75] m.
+// The grid is complete and finite over the default range.
+TEST_F(PlotTest, DisplacementDrawsTheRollAsALift) {
+  plot_captured("displacement --grid 21", "m.png");
+  const auto rows = data_rows("map.dat");  // y roll s displacement
+  ASSERT_EQ(rows.size(), 21u * 21u);
+  for (const auto& row : rows) {
+    ASSERT_EQ(row.size(), 4u);
+    EXPECT_TRUE(std::isfinite(row[3])) << "y " << row[0] << " roll " << row[1];
+  }
+  const auto& below = rows[9 * 21 + 10];  // y = 0, one roll step below 0
+  const auto& level = rows[10 * 21 + 10];
+  const auto& above = rows[11 * 21 + 10];
+  ASSERT_NEAR(level[0], 0.0, 1e-15);
+  ASSERT_NEAR(level[1], 0.0, 1e-15);
+  const double slope = (above[3] - below[3]) / (above[1] - below[1]);  // [m/rad]
+  EXPECT_GT(slope, 0.68);
+  EXPECT_LT(slope, 0.75);
+}
+
+// What `wrc plot profiles` draws (y = 5 mm): the rigid wheelset sits on its rails, so each
+// wheel's contact point, drawn on its own, lies on the drawn rail curve and on the drawn wheel
+// curve (both sampled at 801 points over their profiles: within 0.05 mm of the polylines), and it
+// is one of the drawn potential points, a local minimum.
+TEST_F(PlotTest, ProfilesDrawTheContactPointOnBothCurves) {
+  plot_captured("profiles --y 0.005", "p.png");
+  // Distance [m] from (y, z) to the polyline of rows.
+  auto to_curve = [](const std::vector<std::vector<double>>& rows, double y, double z) {
+    double best = 1e300;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+      const double ay = rows[i - 1][0], az = rows[i - 1][1], by = rows[i][0], bz = rows[i][1];
+      const double ly = by - ay, lz = bz - az, l2 = ly * ly + lz * lz;
+      const double t = l2 > 0 ? std::clamp(((y - ay) * ly + (z - az) * lz) / l2, 0.0, 1.0) : 0.0;
+      best = std::min(best, std::hypot(y - (ay + t * ly), z - (az + t * lz)));
+    }
+    return best;
+  };
+  for (const std::string side : {"left", "right"}) {
+    const auto points = data_rows(side + "_points.dat");
+    ASSERT_GE(points.size(), 2u) << side;
+    const auto& contact = points.back();  // the contact point, after the potential points
+    ASSERT_EQ(contact.size(), 2u) << side;
+    EXPECT_LT(to_curve(data_rows(side + "_rail.dat"), contact[0], contact[1]), 5e-5) << side;
+    EXPECT_LT(to_curve(data_rows(side + "_wheel.dat"), contact[0], contact[1]), 5e-5) << side;
+    bool among_minima = false;
+    for (std::size_t i = 0; i + 1 < points.size(); ++i)
+      among_minima = among_minima || (points[i][2] == 1.0 && std::hypot(points[i][0] - contact[0],
+                                                                        points[i][1] - contact[1]) < 1e-12);
+    EXPECT_TRUE(among_minima) << side;
+  }
+}
+
+// What `wrc plot irregularities` draws: the file's own samples, every channel, in m (the script
+// scales them to mm), from a file `wrc irregularities` wrote.
+TEST_F(PlotTest, IrregularitiesDrawTheFilesSamples) {
+  const std::string csv = (dir_ / "track.csv").string();
+  int status = -1;
+  run_command(kCli + " irregularities --length 20 --spacing 0.5 --fade-in 5 --out " + csv + " 2>&1", &status);
+  ASSERT_EQ(status, 0);
+  plot_captured("irregularities " + csv, "i.png");
+  std::ifstream in(csv);
+  std::vector<std::vector<double>> expected;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line[0] == 's') continue;  // the command line, the header
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    std::vector<double> row;
+    for (double v; fields >> v;) row.push_back(v);
+    expected.push_back(row);
+  }
+  const auto drawn = data_rows("irregularities.dat");  // s alignment vertical_level cross_level gauge
+  ASSERT_EQ(drawn.size(), expected.size());
+  ASSERT_EQ(drawn.size(), 41u);
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    ASSERT_EQ(drawn[i].size(), 5u);
+    for (std::size_t k = 0; k < 5; ++k) EXPECT_NEAR(drawn[i][k], expected[i][k], 1e-6 * (1 + std::abs(expected[i][k])));
+  }
+  EXPECT_NE(captured_script().find("*1e3"), std::string::npos);  // drawn in mm
+}
+
+// What `wrc plot sweep` draws: one series per value of --by, each the finished rows' (x, y) in
+// increasing x; a failed row is left out; the key names the group.
+TEST_F(PlotTest, SweepDrawsOneSeriesPerGroup) {
+  const fs::path csv = dir_ / "sweep.csv";
+  {
+    std::ofstream out(csv);
+    out << "point [-],speed [m/s],y0 [m],status [-],final_state.y [m],error [-],wall_time [s]\n"
+        << "0,20,0.001,finished,-0.004,,1\n1,10,0.001,finished,-0.003,,1\n2,30,0.001,failed,,flange climb,1\n"
+        << "3,10,0.002,finished,-0.0035,,1\n4,20,0.002,finished,-0.0045,,1\n";
+  }
+  plot_captured("sweep " + csv.string() + " --y final_state.y --x speed --by y0", "s.png");
+  EXPECT_EQ(data_rows("line0.dat"), (std::vector<std::vector<double>>{{10, -0.003}, {20, -0.004}}));
+  EXPECT_EQ(data_rows("line1.dat"), (std::vector<std::vector<double>>{{10, -0.0035}, {20, -0.0045}}));
+  const std::string gp = captured_script();
+  EXPECT_NE(gp.find("y0 = 0.001"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("y0 = 0.002"), std::string::npos) << gp;
 }
 
 // What `wrc plot area` draws (S1002 on UIC60, y = 3 mm): in the rolling direction the gap near P is

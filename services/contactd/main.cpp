@@ -270,6 +270,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   if (served.splines) {
     // A recompute of the same model (same model_key, new data) replaces the model between queries.
     loop.set_idle_hook([&] {
+      served.splines->tick();  // the missing pieces of a recompute coming in pieces
       auto fitted = served.splines->take();
       if (!fitted) return;
       served.adopt(std::move(fitted), heartbeat);

@@ -46,9 +46,10 @@ SplineModelSource::SplineModelSource(lcm::LCM& lcm, const bus::ChannelNames& nam
 SplineModelSource::~SplineModelSource() = default;
 
 void SplineModelSource::tick() {
-  if (!model_hash_.empty() || pending_) return;  // a model came: no more requests
   const double now = bus::monotonic_seconds();
+  // Pieces are asked for again also once a model is in use: a recompute may come in pieces.
   if (pieces_ && now - last_piece_activity_ >= kPieceRetryPeriod) request_missing_pieces();
+  if (!model_hash_.empty() || pending_) return;  // a model came: no more requests
   if (now - last_request_ >= retry_period_) send_request();
 }
 

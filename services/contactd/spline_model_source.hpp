@@ -44,7 +44,8 @@ class SplineModelSource {
   SplineModelSource& operator=(const SplineModelSource&) = delete;
 
   /// Sends the request when none was sent yet or the retry period has passed without a model, and
-  /// asks again for the missing pieces of a model coming in pieces.
+  /// asks again for the missing pieces of a model coming in pieces (also of a recompute, once a
+  /// model is in use: call it from the serving loop too).
   void tick();
   /// The model received and checked since the last call, or null.
   std::shared_ptr<const SplineContactGeometry> take();

@@ -258,12 +258,11 @@ struct QueryService {
   }
 };
 
-// A READY instance of model (the one named by --instance, which must run), one that is starting,
-// or one started here.
+// A READY instance of model (the one named by --instance, which must run), one that is starting
+// (waited for up to start_timeout [s]), or one started here.
 QueryService find_or_start_service(CommandBus& session, const Options& o, const std::string& model,
-                                   const GeometrySpec& spec, const std::string& key) {
+                                   const GeometrySpec& spec, const std::string& key, double start_timeout) {
   const std::string wanted = o.text("--instance");
-  const double start_timeout = o.number("--start-timeout");
   QueryService found;
   std::optional<bus::ServiceStatus>& service = found.status;
   service = discover_service(*session.lcm, session.monitor, model, key, wanted, kServiceDiscoveryTime);
@@ -331,7 +330,7 @@ int run_query(const std::vector<std::string>& args) {
   bus::CallPolicy policy;
   policy.timeout = o.number("--timeout");
   policy.retries = o.integer("--retries");
-  o.number("--start-timeout");  // checked before anything starts
+  const double start_timeout = o.number("--start-timeout");  // [s] checked before anything starts
   const std::string format = o.choice("--format", {"csv", "table"});
   const GeometrySpec spec = geometry_spec_from_options(o);
   const ContactQuery q = library_query_from(o, spec);
@@ -341,7 +340,7 @@ int run_query(const std::vector<std::string>& args) {
   query.geometry_key = geometry_key(spec);
 
   CommandBus session(o, "query");
-  QueryService service = find_or_start_service(session, o, model, spec, query.geometry_key);
+  QueryService service = find_or_start_service(session, o, model, spec, query.geometry_key, start_timeout);
   query.instance = service.status->last.instance;
   const std::string client_id = bus::make_client_id("query");
   QueryClient client(*session.lcm, session.names.name(bus::channel::kContactQuery, model),

@@ -53,6 +53,11 @@ void SplineModelSource::tick() {
   if (now - last_request_ >= retry_period_) send_request();
 }
 
+std::string SplineModelSource::pieces_progress() const {
+  return "model pieces: " + std::to_string(pieces_->received()) + " of " + std::to_string(pieces_->count()) +
+         " received";
+}
+
 void SplineModelSource::request_missing_pieces() {
   model_piece_request_t request{};
   stamper_.stamp(request.header);
@@ -65,8 +70,7 @@ void SplineModelSource::request_missing_pieces() {
   bus::publish_signed(lcm_, piece_request_channel_, request);
   last_piece_activity_ = bus::monotonic_seconds();
   ++piece_requests_sent_;
-  last_progress_ = "model pieces: " + std::to_string(pieces_->received()) + " of " +
-                   std::to_string(pieces_->count()) + " received";
+  last_progress_ = pieces_progress();
 }
 
 std::shared_ptr<const SplineContactGeometry> SplineModelSource::take() {
@@ -100,12 +104,12 @@ void SplineModelSource::on_model(const spline_model_t& reference, const std::str
     pieces_.reset();
     return;
   } catch (const std::exception& e) {
-    if (reference.file_path.empty() || (pieces_ && pieces_->file_hash() == reference.file_hash)) {
-      if (reference.file_path.empty())
-        rejections_.reject(channel, std::string("spline model ") + reference.model_key.substr(0, 12) +
-                                        " not usable: " + e.what());
-      return;  // inline and unusable, or already coming in pieces
+    if (reference.file_path.empty()) {
+      rejections_.reject(channel, std::string("spline model ") + reference.model_key.substr(0, 12) +
+                                      " not usable: " + e.what());
+      return;
     }
+    if (pieces_ && pieces_->file_hash() == reference.file_hash) return;  // already coming in pieces
     std::cerr << stamper_.sender() << ": cannot read the file of spline model " << reference.model_key.substr(0, 12)
               << " (" << e.what() << "); asking wrc-geometryd for it in pieces\n";
   }
@@ -126,8 +130,7 @@ void SplineModelSource::on_piece(const model_piece_t& piece, const std::string& 
     rejections_.reject(channel, "model piece refused: " + *why);
     return;
   }
-  last_progress_ = "model pieces: " + std::to_string(pieces_->received()) + " of " +
-                   std::to_string(pieces_->count()) + " received";
+  last_progress_ = pieces_progress();
   if (!pieces_->complete()) return;
   try {
     const std::vector<char> bytes = pieces_->take_file();

@@ -69,6 +69,8 @@ class SplineModelSource {
   void send_request();
   /// Asks wrc-geometryd for the missing pieces (at most MAX_PIECES of them).
   void request_missing_pieces();
+  /// "model pieces: N of M received", for the activity.
+  std::string pieces_progress() const;
 
   lcm::LCM& lcm_;
   std::string request_channel_;

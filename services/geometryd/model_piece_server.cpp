@@ -64,6 +64,10 @@ void ModelPieceServer::on_request(const model_piece_request_t& request, const st
   const std::vector<char>* bytes = nullptr;
   try {
     bytes = &file_bytes(request.model_key);
+    if (file_hash_ != request.file_hash) {  // the file kept may have been fitted again since: read it anew
+      file_key_.clear();
+      bytes = &file_bytes(request.model_key);
+    }
   } catch (const std::exception& e) {
     rejections_.reject(channel, std::string("pieces of model ") + request.model_key.substr(0, 12) + ": " + e.what());
     return;

@@ -43,7 +43,8 @@ class ModelPieceServer {
 
  private:
   void on_request(const model_piece_request_t& request, const std::string& channel);
-  /// The bytes of model_key's cache file (the last file read is kept for its next request).
+  /// The bytes of model_key's cache file (the last file read is kept for its next request; a
+  /// request naming another SHA-256 reads it again, for a recompute rewrites the file).
   const std::vector<char>& file_bytes(const std::string& model_key);
 
   lcm::LCM& lcm_;

@@ -39,6 +39,7 @@
 #include "bus/service/serving_activity.hpp"
 #include "bus/transport/channels.hpp"
 #include "bus/transport/clock.hpp"
+#include "bus/transport/lcm_url.hpp"
 #include "bus/transport/request_server.hpp"
 #include "contactd/contactd_options.hpp"
 #include "contactd/instance_filter.hpp"
@@ -48,6 +49,7 @@
 #include "core/geometry/geometry_spec.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "protocol/contact/contact_lane.hpp"
 #include "protocol/contact/contact_query_codec.hpp"
 #include "wrc/contact_query_t.hpp"
 #include "wrc/contact_reply_t.hpp"
@@ -251,7 +253,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
 
   LatencyWindow compute_times;  // recent evaluation times [s], for the log
   wrc::contactd::InstanceFilter filter(*lcm, names.name(channel::kHeartbeat), served.name, instance);
-  ContactServer server(*lcm, request_channel, sender, [&](const contact_query_t& query, contact_reply_t& reply) {
+  const ContactServer::Handler answer = [&](const contact_query_t& query, contact_reply_t& reply) {
     const double t0 = monotonic_seconds();
     reply.model = served.name;
     reply.instance = instance;
@@ -260,13 +262,27 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     wrc::contactd::evaluate_query(*served.model, query, reply);
     reply.compute_time = monotonic_seconds() - t0;
     compute_times.add(reply.compute_time);
-  });
-  server.set_address_filter([&filter](const contact_query_t& query) { return filter.answers(query); });
-  set_query_checks(server, served, instance, key);
-
-  activity = ServingActivity(served.name + " queries", [&server] { return server.counters().answered; });
+  };
+  // The same queries are answered on the bus (wrc query, lcm-spy users, any client) and on the
+  // model's lane, where the dynamics asks (protocol/contact/contact_lane.hpp).
+  const std::string lane_url = lane_lcm_url(effective_lcm_url(service.lcm_url), wrc::protocol::contact_lane(served.name));
+  std::unique_ptr<lcm::LCM> lane = lane_url.empty() ? nullptr : open_lcm(lane_url);
+  std::vector<std::unique_ptr<ContactServer>> servers;
+  for (lcm::LCM* on : {lcm.get(), lane.get()}) {
+    if (on == nullptr) continue;
+    servers.push_back(std::make_unique<ContactServer>(*on, request_channel, sender, answer));
+    servers.back()->set_address_filter([&filter](const contact_query_t& query) { return filter.answers(query); });
+    set_query_checks(*servers.back(), served, instance, key);
+  }
+  const auto counted = [&servers](auto field) {
+    std::int64_t sum = 0;
+    for (const auto& server : servers) sum += server->counters().*field;
+    return sum;
+  };
+  activity = ServingActivity(served.name + " queries", [&counted] { return counted(&ServerCounters::answered); });
   ServiceLoop loop(*lcm, heartbeat);
-  loop.add_load_source(&server);
+  if (lane) loop.add_lcm(*lane);
+  for (const auto& server : servers) loop.add_load_source(server.get());
   if (served.splines) {
     // A recompute of the same model (same model_key, new data) replaces the model between queries.
     loop.set_idle_hook([&] {
@@ -277,11 +293,11 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
       std::cerr << sender << ": replaced the spline model, model hash now " << served.model_hash << "\n";
     });
   }
-  std::cerr << sender << ": serving " << request_channel << "\n";
+  std::cerr << sender << ": serving " << request_channel << (lane ? " (also on its lane " + lane_url + ")" : "") << "\n";
   const int rc = loop.run();
-  const auto& c = server.counters();
-  std::cerr << sender << ": stopped (signal " << ShutdownSignal::signal_number() << "), answered " << c.answered
-            << ", rejected " << c.rejected << ", for other instances " << c.not_addressed << "; "
+  std::cerr << sender << ": stopped (signal " << ShutdownSignal::signal_number() << "), answered "
+            << counted(&ServerCounters::answered) << ", rejected " << counted(&ServerCounters::rejected)
+            << ", for other instances " << counted(&ServerCounters::not_addressed) << "; "
             << compute_time_summary(compute_times) << "\n";
   return rc;
 }

@@ -36,6 +36,20 @@ std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>&
   return out;
 }
 
+void BusContact::add_times(const bus::CallResult<contact_reply_t>& result) {
+  const contact_reply_t& reply = *result.reply;
+  times_.round_trip += result.round_trip;
+  times_.send += result.send_time;
+  times_.compute += reply.compute_time;
+  if (reply.query_receipt_utime <= 0 || result.receipt_utime <= 0) return;  // a service that does not say
+  const auto seconds = [](std::int64_t us) { return 1e-6 * static_cast<double>(us); };
+  times_.transfer += seconds(reply.query_receipt_utime - result.sent_utime);
+  times_.service_wakeup += reply.service_wakeup_time;
+  // The reply's header is stamped at the end of the evaluation, before encoding and signing.
+  times_.reply += seconds(result.receipt_utime - reply.header.utime);
+  times_.client_wakeup += seconds(result.handled_utime - result.receipt_utime);
+}
+
 std::vector<ContactResult> BusContact::evaluate_message(const std::vector<ContactQuery>& batch) {
   contact_query_t query{};
   protocol::to_query_message(batch, query);
@@ -67,6 +81,7 @@ std::vector<ContactResult> BusContact::evaluate_message(const std::vector<Contac
     }
     if (result) {
       const contact_reply_t& reply = *result.reply;
+      add_times(result);
       const std::string who = "contact model " + settings_.model + " (" + reply.instance + ")";
       if (!settings_.geometry_key.empty() && reply.geometry_key != settings_.geometry_key)
         throw std::runtime_error(who + " computes with geometry key " + reply.geometry_key + ", not " +

@@ -55,10 +55,13 @@ class BusContact final : public ContactEvaluator {
   long retries() const override { return retries_; }
   long timeouts() const override { return timeouts_; }
   long failovers() const override { return failovers_; }
+  QueryTimes query_times() const override { return times_; }
   /// The instance queries are addressed to after a fail-over (empty: unaddressed, or the named one).
   const std::string& addressed_instance() const { return addressed_; }
 
  private:
+  /// Adds where an answered call's time went to times_.
+  void add_times(const bus::CallResult<contact_reply_t>& result);
   /// One message for queries that share formulation, material, grid and speed.
   std::vector<ContactResult> evaluate_message(const std::vector<ContactQuery>& batch);
 
@@ -69,6 +72,7 @@ class BusContact final : public ContactEvaluator {
   long retries_ = 0;
   long timeouts_ = 0;
   long failovers_ = 0;
+  QueryTimes times_;
   std::string addressed_;  ///< instance that answered a fail-over, asked by name since
 };
 

@@ -36,15 +36,14 @@ std::int8_t status_code(RunState s) {
 
 }  // namespace
 
-DynamicsService::DynamicsService(lcm::LCM& lcm, const bus::ChannelNames& names, const std::string& sender,
-                                 std::function<void()> keepalive)
+DynamicsService::DynamicsService(lcm::LCM& lcm, const std::string& lcm_url, const bus::ChannelNames& names,
+                                 const std::string& sender, std::function<void()> keepalive)
     : lcm_(lcm),
       names_(names),
       keepalive_(std::move(keepalive)),
       stamper_(sender),
       monitor_(lcm, names.name(bus::channel::kHeartbeat)),
-      client_(lcm, names.name(bus::channel::kContactQuery, "onepoint"),
-              names.name(bus::channel::kContactReply, bus::make_client_id("wrc-dynamicsd")), sender) {
+      clients_(lcm, lcm_url, names, sender) {
   commands_ = std::make_unique<bus::GuardedSubscription<run_command_t>>(
       lcm_, names_.name(bus::channel::kRunCommand), "dynamics commands",
       [this](const run_command_t& c, const bus::ReceivedMessage&) { on_command(c); });
@@ -101,7 +100,7 @@ std::shared_ptr<ContactEvaluator> DynamicsService::make_contact(const std::strin
   s.policy.retries = request_.contact_retries;
   s.wait = request_.contact_wait;
   s.keepalive = keepalive_;
-  return std::make_shared<BusContact>(client_, monitor_, names_, s);
+  return std::make_shared<BusContact>(clients_.client(model), monitor_, names_, s);
 }
 
 void DynamicsService::start(const run_command_t& command) {

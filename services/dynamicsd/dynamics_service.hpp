@@ -21,12 +21,10 @@
 #include "bus/transport/channels.hpp"
 #include "bus/transport/guarded_subscription.hpp"
 #include "bus/transport/header_stamper.hpp"
-#include "bus/transport/request_client.hpp"
 #include "core/dynamics/wheelset_simulation.hpp"
+#include "dynamicsd/contact_clients.hpp"
 #include "protocol/run/run_command_codec.hpp"
 #include "protocol/run/run_output_codec.hpp"
-#include "wrc/contact_query_t.hpp"
-#include "wrc/contact_reply_t.hpp"
 #include "wrc/contact_select_t.hpp"
 #include "wrc/run_command_t.hpp"
 #include "wrc/run_summary_t.hpp"
@@ -36,7 +34,8 @@ namespace wrc::dynamics {
 class DynamicsService {
  public:
   /// keepalive: called while a contact query waits for a (restarted) service (the heartbeat).
-  DynamicsService(lcm::LCM& lcm, const bus::ChannelNames& names, const std::string& sender,
+  /// lcm: opened at lcm_url (empty: the default bus), whose lanes carry the contact queries.
+  DynamicsService(lcm::LCM& lcm, const std::string& lcm_url, const bus::ChannelNames& names, const std::string& sender,
                   std::function<void()> keepalive = {});
   /// Acts on pending commands and swaps, then advances a running simulation for up to
   /// budget seconds of wall time (whole steps) and publishes what is due.
@@ -70,7 +69,7 @@ class DynamicsService {
   std::function<bool()> serving_;
   bus::HeaderStamper stamper_;
   bus::HeartbeatMonitor monitor_;
-  bus::RequestClient<contact_query_t, contact_reply_t> client_;
+  ContactClients clients_;
   std::unique_ptr<bus::GuardedSubscription<run_command_t>> commands_;
   std::unique_ptr<bus::GuardedSubscription<contact_select_t>> selects_;
 

@@ -46,7 +46,11 @@ class ServiceLoop {
  public:
   /// Listens on the heartbeat's channel for duplicates of this process.
   ServiceLoop(lcm::LCM& lcm, HeartbeatPublisher& heartbeat)
-      : lcm_(lcm), heartbeat_(heartbeat), duplicates_(lcm, heartbeat.channel(), heartbeat) {}
+      : heartbeat_(heartbeat), duplicates_(lcm, heartbeat.channel(), heartbeat), lcms_{&lcm} {}
+
+  /// Dispatches the messages of another LCM object too (a lane of the bus the service serves on;
+  /// bus/transport/lcm_url.hpp). It must outlive the loop.
+  void add_lcm(lcm::LCM& other) { lcms_.push_back(&other); }
 
   /// Adds a request server whose load goes into the heartbeat.
   void add_load_source(LoadSource* source) { sources_.push_back(source); }
@@ -70,7 +74,6 @@ class ServiceLoop {
   /// The idle hook, its exceptions caught and logged.
   void run_idle_hook();
 
-  lcm::LCM& lcm_;
   HeartbeatPublisher& heartbeat_;
   DuplicateInstanceGuard duplicates_;
   bool duplicate_ = false;
@@ -81,6 +84,7 @@ class ServiceLoop {
   double next_idle_failure_log_ = 0.0;  // [s] monotonic time before which no failure is logged
   double max_wait_ = 0.1;
   int max_queue_ = 0;  // most messages handled back to back without waiting, this period, minus 1
+  std::vector<lcm::LCM*> lcms_;  // the bus first, then lanes
 };
 
 }  // namespace wrc::bus

@@ -38,6 +38,7 @@ struct ReceivedMessage {
   const std::string* channel = nullptr;  ///< channel it arrived on
   MessageOrigin origin;                  ///< sender nonce, sequence and signing time (verified)
   std::size_t bytes = 0;                 ///< [B] datagram size, trailer included
+  std::int64_t receipt_utime = 0;        ///< [us] when LCM received it (lcm::ReceiveBuffer::recv_utime, wall clock)
 };
 
 /// A subscription to one channel (exact name, not a pattern) delivering decoded, authenticated
@@ -86,6 +87,7 @@ class GuardedSubscription {
     ReceivedMessage info;
     info.channel = &channel;
     info.bytes = size;
+    info.receipt_utime = rbuf->recv_utime;
     std::size_t payload = 0;
     switch (auth_.verify(channel, data, size, &payload, &info.origin)) {
       case TrailerCheck::kMissing:

@@ -21,4 +21,16 @@ inline constexpr long kWantedReceiveBufferBytes = 4L << 20;
 /// kernel would refuse. Other providers (memq, file, tcpq) and URLs that set it are kept as given.
 std::string effective_lcm_url(const std::string& url);
 
+/// [-] lanes a bus may have: its port + 1 ... + kMaxLanes are kept for them.
+inline constexpr int kMaxLanes = 8;
+
+/// The URL of lane `lane` (1..kMaxLanes) of the bus at `url` (as effective_lcm_url gives it): the
+/// same multicast group and options on port + lane (LCM's default port 7667 when the URL names
+/// none). A lane is a multicast group of its own: only the processes that open it read its
+/// datagrams, where every process of the bus reads every datagram of the bus (and a sender's
+/// kernel delivers each copy within its send call). Empty for providers other than udpm (memq,
+/// file, tcpq): their traffic stays on the bus. Throws std::invalid_argument for a lane outside
+/// 1..kMaxLanes or a udpm URL whose port is not a number from 1 to 65535 - kMaxLanes.
+std::string lane_lcm_url(const std::string& url, int lane);
+
 }  // namespace wrc::bus

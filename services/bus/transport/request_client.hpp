@@ -19,12 +19,14 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bus/auth/signed_publish.hpp"
 #include "bus/transport/channels.hpp"
 #include "bus/transport/clock.hpp"
 #include "bus/transport/guarded_subscription.hpp"
 #include "bus/transport/header_stamper.hpp"
+#include "bus/transport/lcm_wait.hpp"
 #include "bus/transport/rejection_log.hpp"
 
 namespace wrc::bus {
@@ -53,6 +55,10 @@ struct CallResult {
   std::optional<Reply> reply;  ///< the reply; empty when every attempt timed out
   int attempts = 0;            ///< [-] attempts made for this call (1 = no retry; call_any sends all its requests in each)
   double round_trip = 0.0;     ///< [s] from the first send to the accepted reply
+  double send_time = 0.0;      ///< [s] stamping, encoding, signing and sending of the attempt answered
+  std::int64_t sent_utime = 0;      ///< [us] wall clock at the end of that attempt's send calls
+  std::int64_t receipt_utime = 0;   ///< [us] when LCM received the reply (ReceivedMessage::receipt_utime)
+  std::int64_t handled_utime = 0;   ///< [us] wall clock when the reply had been verified and decoded
   explicit operator bool() const { return reply.has_value(); }
 };
 
@@ -72,10 +78,11 @@ class RequestClient {
         request_channel_(std::move(request_channel)),
         reply_channel_(std::move(reply_channel)),
         stamper_(std::move(sender)),
-        last_id_(first_request_id()) {
+        last_id_(first_request_id()),
+        dispatched_{&lcm} {
     subscription_ = std::make_unique<GuardedSubscription<Reply>>(
         lcm_, reply_channel_, "request client on " + reply_channel_,
-        [this](const Reply& reply, const ReceivedMessage&) { on_reply(reply); }, 100);
+        [this](const Reply& reply, const ReceivedMessage& info) { on_reply(reply, info); }, 100);
     subscription_->set_drop_observer([this](DropKind) { ++counters_.rejected_replies; });
   }
   RequestClient(const RequestClient&) = delete;
@@ -110,6 +117,7 @@ class RequestClient {
     const double start = monotonic_seconds();
     for (int attempt = 0; attempt <= policy.retries && !answer_; ++attempt) {
       if (attempt > 0) ++counters_.retries;
+      const double send_start = monotonic_seconds();
       for (std::size_t k = 0; k < count; ++k) {
         stamper_.stamp(requests[k].header);
         if (publish_signed(lcm_, request_channel_, requests[k]) != 0) {
@@ -118,6 +126,8 @@ class RequestClient {
         ++counters_.sent;
       }
       ++result.attempts;
+      result.send_time = monotonic_seconds() - send_start;
+      result.sent_utime = wall_utime();
       wait_for_answer(monotonic_seconds() + policy.timeout);
     }
     pending_id_ = 0;
@@ -125,6 +135,8 @@ class RequestClient {
       completed_id_ = requests[0].request_id;
       ++counters_.replies;
       result.round_trip = monotonic_seconds() - start;
+      result.receipt_utime = answer_receipt_utime_;
+      result.handled_utime = answer_handled_utime_;
       result.reply = std::move(answer_);
       answer_.reset();
     } else {
@@ -132,6 +144,11 @@ class RequestClient {
     }
     return result;
   }
+
+  /// While waiting, dispatches other's subscriptions too (a client on a lane of the bus keeps
+  /// the bus's heartbeat monitors and commands working; bus/transport/lcm_url.hpp). other must
+  /// outlive the client.
+  void also_dispatch(lcm::LCM& other) { dispatched_.push_back(&other); }
 
   /// Directs later requests to another channel (hot swap between services).
   void set_request_channel(std::string channel) { request_channel_ = std::move(channel); }
@@ -150,7 +167,7 @@ class RequestClient {
     // dynamics' contact client) would publish without ever reading: its queues overflowed, the
     // heartbeats of the services it needs were lost, and no reply was ever seen.
     for (int handled = 0; !answer_ && handled < kMaxDrain; ++handled) {
-      const int rc = lcm_.handleTimeout(0);
+      const int rc = handle_any(dispatched_, 0);
       if (rc < 0 && errno != EINTR) throw std::runtime_error("LCM handle failed while waiting for a reply");
       if (rc <= 0) break;
     }
@@ -158,7 +175,7 @@ class RequestClient {
       const double remaining = deadline - monotonic_seconds();
       if (remaining <= 0.0) return;
       const int ms = static_cast<int>(std::ceil(remaining * 1e3));
-      const int rc = lcm_.handleTimeout(ms);
+      const int rc = handle_any(dispatched_, ms);
       if (rc < 0 && errno != EINTR) throw std::runtime_error("LCM handle failed while waiting for a reply");
       if (rc < 0) return;  // interrupted by a signal: let the caller look at its shutdown flag
     }
@@ -172,9 +189,11 @@ class RequestClient {
     return static_cast<std::int64_t>((MessageAuth::random_nonce() % ((std::uint64_t{1} << 30) - 1)) + 1) << 32;
   }
 
-  void on_reply(const Reply& reply) {
+  void on_reply(const Reply& reply, const ReceivedMessage& info) {
     if (pending_id_ != 0 && reply.request_id == pending_id_ && !answer_) {
       answer_ = reply;
+      answer_receipt_utime_ = info.receipt_utime;
+      answer_handled_utime_ = wall_utime();
     } else if ((completed_id_ != 0 && reply.request_id == completed_id_) ||
                (pending_id_ != 0 && reply.request_id == pending_id_)) {
       ++counters_.duplicate_replies;
@@ -193,6 +212,9 @@ class RequestClient {
   std::int64_t pending_id_ = 0;    // id of the call in progress, 0 = none
   std::int64_t completed_id_ = 0;  // id of the last call that got its reply
   std::optional<Reply> answer_;
+  std::int64_t answer_receipt_utime_ = 0;  // [us] of answer_
+  std::int64_t answer_handled_utime_ = 0;  // [us] of answer_
+  std::vector<lcm::LCM*> dispatched_;  // read while waiting: the client's own object first
 };
 
 }  // namespace wrc::bus

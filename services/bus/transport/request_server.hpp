@@ -19,6 +19,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "bus/auth/signed_publish.hpp"
@@ -152,6 +153,7 @@ class RequestServer : public LoadSource {
       error_filler_(request, RequestError::kBadRequest, why, reply);
     } else {
       try {
+        stamp_receipt(reply, info);
         handler_(request, reply);
       } catch (const std::invalid_argument& e) {
         reject(channel, e.what());
@@ -169,6 +171,23 @@ class RequestServer : public LoadSource {
     publish(request.reply_channel, reply, start);
     if (cache_.size() == kCacheSize) cache_.pop_front();
     cache_.emplace_back(key, std::move(reply));
+  }
+
+  /// Replies that carry query_receipt_utime and service_wakeup_time (contact_reply_t) get when the
+  /// query was received and how long it took to reach the handler.
+  template <class R, class = void>
+  struct CarriesReceipt : std::false_type {};
+  template <class R>
+  struct CarriesReceipt<R, std::void_t<decltype(R::query_receipt_utime), decltype(R::service_wakeup_time)>>
+      : std::true_type {};
+  static void stamp_receipt(Reply& reply, const ReceivedMessage& info) {
+    if constexpr (CarriesReceipt<Reply>::value) {
+      reply.query_receipt_utime = info.receipt_utime;
+      const std::int64_t now = wall_utime();
+      reply.service_wakeup_time = info.receipt_utime > 0 ? 1e-6 * static_cast<double>(now - info.receipt_utime) : 0.0;
+    } else {
+      (void)reply, (void)info;
+    }
   }
 
   void publish(const std::string& reply_channel, Reply& reply, double start) {

@@ -13,6 +13,20 @@
 
 namespace wrc {
 
+/// Where the time of the answered queries of a source over the bus went, summed over them [s],
+/// in the order a query goes (the clocks of two hosts differ: across hosts transfer and reply
+/// carry the offset between them, with opposite signs).
+struct QueryTimes {
+  double round_trip = 0;       ///< first send to the reply handled
+  double send = 0;             ///< the client's stamping, encoding, signing and send call
+  double transfer = 0;         ///< end of the send call to the query's receipt by the service's LCM
+  double service_wakeup = 0;   ///< receipt to the service's handler (wake-up, verification, decoding)
+  double compute = 0;          ///< the service's evaluation
+  double reply = 0;            ///< end of the evaluation to the reply's receipt by the client's LCM
+  double client_wakeup = 0;    ///< receipt to the reply handled (wake-up, verification, decoding)
+  QueryTimes& operator+=(const QueryTimes& o);
+};
+
 /// A source of contact results. Not thread-safe.
 class ContactEvaluator {
  public:
@@ -30,6 +44,8 @@ class ContactEvaluator {
   virtual long timeouts() const { return 0; }
   /// Queries that went to another instance of the model after one got no reply [-] (0 in-process).
   virtual long failovers() const { return 0; }
+  /// Where the answered queries' time went so far (zeros in-process).
+  virtual QueryTimes query_times() const { return {}; }
 };
 
 /// A ContactModel called directly.

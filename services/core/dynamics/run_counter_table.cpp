@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "core/dynamics/contact_evaluator.hpp"
+
 namespace wrc {
 namespace {
 
@@ -58,6 +60,20 @@ const std::vector<RunCounter>& run_counter_table() {
       counter("contact_failovers", "-",
               "queries sent to every other READY instance of the model after a round without a reply",
               &C::contact_failovers),
+      counter("bus_round_trip_time", "s", "answered contact queries over the bus: first send to the reply handled, summed",
+              &C::bus_round_trip_time),
+      counter("bus_send_time", "s", "of that: the dynamics' stamping, encoding, signing and send call",
+              &C::bus_send_time),
+      counter("bus_transfer_time", "s", "of that: on to the query's receipt by the service's LCM (one host's clock)",
+              &C::bus_transfer_time),
+      counter("bus_service_wakeup_time", "s",
+              "of that: receipt to the service's handler (wake-up, verification, decoding)", &C::bus_service_wakeup_time),
+      counter("bus_compute_time", "s", "of that: the service's evaluation", &C::bus_compute_time),
+      counter("bus_reply_time", "s",
+              "of that: the service's reply (encoding, signing, send call) to its receipt by the dynamics' LCM",
+              &C::bus_reply_time),
+      counter("bus_client_wakeup_time", "s", "of that: receipt to the reply handled (wake-up, verification, decoding)",
+              &C::bus_client_wakeup_time),
       counter("last_order", "-", "method order of the last step", &C::last_order, CounterSum::kKept),
       counter("last_step", "s", "size of the last step", &C::last_step, CounterSum::kKept),
   };
@@ -73,6 +89,20 @@ RunCounters& RunCounters::operator+=(const RunCounters& later) {
     }
   }
   return *this;
+}
+
+void RunCounters::add_evaluator(const ContactEvaluator& evaluator) {
+  contact_retries += evaluator.retries();
+  contact_timeouts += evaluator.timeouts();
+  contact_failovers += evaluator.failovers();
+  const QueryTimes t = evaluator.query_times();
+  bus_round_trip_time += t.round_trip;
+  bus_send_time += t.send;
+  bus_transfer_time += t.transfer;
+  bus_service_wakeup_time += t.service_wakeup;
+  bus_compute_time += t.compute;
+  bus_reply_time += t.reply;
+  bus_client_wakeup_time += t.client_wakeup;
 }
 
 }  // namespace wrc

@@ -6,6 +6,8 @@
 
 namespace wrc {
 
+class ContactEvaluator;
+
 struct RunCounters {
   long steps = 0;              ///< accepted integrator steps [-]
   long residual_evals = 0;     ///< residual evaluations by IDA (not those of the Jacobian) [-]
@@ -31,12 +33,22 @@ struct RunCounters {
   long contact_retries = 0;    ///< contact queries re-sent after a timeout (over the bus) [-]
   long contact_timeouts = 0;   ///< attempt rounds without a reply (the run waited for a service) [-]
   long contact_failovers = 0;  ///< queries sent to every other READY instance after a round without a reply [-]
+  // where the answered queries' time over the bus went, summed (QueryTimes, contact_evaluator.hpp)
+  double bus_round_trip_time = 0;      ///< first send to the reply handled [s]
+  double bus_send_time = 0;            ///< the dynamics' stamping, encoding, signing and send call [s]
+  double bus_transfer_time = 0;        ///< to the query's receipt by the service's LCM [s]
+  double bus_service_wakeup_time = 0;  ///< receipt to the service's handler (wake-up, verification, decoding) [s]
+  double bus_compute_time = 0;         ///< the service's evaluation [s]
+  double bus_reply_time = 0;           ///< end of the evaluation to the reply's receipt by the dynamics' LCM [s]
+  double bus_client_wakeup_time = 0;   ///< receipt to the reply handled (wake-up, verification, decoding) [s]
   int last_order = 0;          ///< method order of the last step [-]
   double last_step = 0;        ///< size of the last step [s]
 
   /// Adds the counters of a later stretch of the run: sums, the larger of max_branch_excess;
   /// last_order and last_step stay (run_counter_table() says which is which).
   RunCounters& operator+=(const RunCounters& later);
+  /// Adds an evaluator's counts of retries, timeouts, fail-overs and its query times.
+  void add_evaluator(const ContactEvaluator& evaluator);
 };
 
 }  // namespace wrc

@@ -174,10 +174,7 @@ RunCounters WheelsetSimulation::counters() const {
   c += now;
   c += own_;
   c += contact_.counters();
-  const ContactEvaluator& evaluator = *contact_.evaluator();
-  c.contact_retries += evaluator.retries();
-  c.contact_timeouts += evaluator.timeouts();
-  c.contact_failovers += evaluator.failovers();
+  c.add_evaluator(*contact_.evaluator());
   c.last_order = now.last_order;
   c.last_step = now.last_step;
   return c;
@@ -355,9 +352,7 @@ void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
     begin_segment(y, false);
     record_step_contact(true);
     swaps_.push_back({t_, previous->model(), next->model()});
-    own_.contact_retries += previous->retries();
-    own_.contact_timeouts += previous->timeouts();
-    own_.contact_failovers += previous->failovers();
+    own_.add_evaluator(*previous);
   } catch (const std::exception& e) {
     contact_.replace(previous, from, previous_branches);
     message_ = "swap to " + next->model() + " at t = " + format_time(t_) + " s failed, keeping " +

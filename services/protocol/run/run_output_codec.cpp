@@ -81,6 +81,13 @@ const std::vector<MessageField<integrator_stats_t>>& stats_fields() {
       WRC_MESSAGE_FIELD(M, contact_retries),
       WRC_MESSAGE_FIELD(M, contact_timeouts),
       WRC_MESSAGE_FIELD(M, contact_failovers),
+      WRC_MESSAGE_FIELD(M, bus_round_trip_time),
+      WRC_MESSAGE_FIELD(M, bus_send_time),
+      WRC_MESSAGE_FIELD(M, bus_transfer_time),
+      WRC_MESSAGE_FIELD(M, bus_service_wakeup_time),
+      WRC_MESSAGE_FIELD(M, bus_compute_time),
+      WRC_MESSAGE_FIELD(M, bus_reply_time),
+      WRC_MESSAGE_FIELD(M, bus_client_wakeup_time),
       WRC_MESSAGE_FIELD(M, last_order),
       WRC_MESSAGE_FIELD(M, last_step),
   };

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+/// @file
+/// The dynamics' contact request clients, one per contact model, each on its model's lane of the
+/// bus (protocol/contact/contact_lane.hpp): a run's queries and replies then wake only the
+/// dynamics and the instances of its model. While a client waits it reads the bus too
+/// (heartbeats, commands, swaps). On a bus without lanes (memq, file, tcpq URLs) every model
+/// shares one client on the bus itself.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "bus/transport/channels.hpp"
+#include "bus/transport/request_client.hpp"
+#include "wrc/contact_query_t.hpp"
+#include "wrc/contact_reply_t.hpp"
+
+namespace wrc::dynamics {
+
+using ContactClient = bus::RequestClient<contact_query_t, contact_reply_t>;
+
+class ContactClients {
+ public:
+  /// bus: the process's LCM object, opened at bus_url (as given to open_lcm; empty = the default).
+  ContactClients(lcm::LCM& bus, std::string bus_url, bus::ChannelNames names, std::string sender);
+  ContactClients(const ContactClients&) = delete;
+  ContactClients& operator=(const ContactClients&) = delete;
+
+  /// The client for model's queries, its lane opened at the first call. Throws
+  /// std::invalid_argument for an unknown model, std::runtime_error when the lane cannot be opened.
+  ContactClient& client(const std::string& model);
+
+ private:
+  struct Lane {
+    std::unique_ptr<lcm::LCM> lcm;
+    std::unique_ptr<ContactClient> client;
+  };
+  std::unique_ptr<ContactClient> make_client(lcm::LCM& on) const;
+
+  lcm::LCM& bus_;
+  std::string bus_url_;  // effective URL of the bus
+  bus::ChannelNames names_;
+  std::string sender_;
+  std::unique_ptr<ContactClient> on_bus_;  // without lanes
+  std::map<std::string, Lane> lanes_;
+};
+
+}  // namespace wrc::dynamics

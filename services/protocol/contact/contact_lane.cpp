@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "protocol/contact/contact_lane.hpp"
+
+#include "core/models/contact_model_factory.hpp"
+
+namespace wrc::protocol {
+
+int contact_lane(const std::string& model) {
+  const ContactModelEntry& entry = contact_model_entry(model);  // throws for an unknown one
+  return static_cast<int>(&entry - contact_model_registry().data()) + 1;
+}
+
+}  // namespace wrc::protocol

@@ -264,9 +264,13 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     compute_times.add(reply.compute_time);
   };
   // The same queries are answered on the bus (wrc query, lcm-spy users, any client) and on the
-  // model's lane, where the dynamics asks (protocol/contact/contact_lane.hpp).
-  const std::string lane_url = lane_lcm_url(effective_lcm_url(service.lcm_url), wrc::protocol::contact_lane(served.name));
+  // model's query lane, where the dynamics asks, with the replies on its reply lane
+  // (protocol/contact/contact_lane.hpp).
+  const std::string bus_url = effective_lcm_url(service.lcm_url);
+  const std::string lane_url = lane_lcm_url(bus_url, wrc::protocol::contact_query_lane(served.name));
   std::unique_ptr<lcm::LCM> lane = lane_url.empty() ? nullptr : open_lcm(lane_url);
+  std::unique_ptr<lcm::LCM> reply_lane =
+      lane_url.empty() ? nullptr : open_lcm(lane_lcm_url(bus_url, wrc::protocol::contact_reply_lane(served.name)));
   std::vector<std::unique_ptr<ContactServer>> servers;
   for (lcm::LCM* on : {lcm.get(), lane.get()}) {
     if (on == nullptr) continue;
@@ -274,6 +278,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
     servers.back()->set_address_filter([&filter](const contact_query_t& query) { return filter.answers(query); });
     set_query_checks(*servers.back(), served, instance, key);
   }
+  if (reply_lane) servers.back()->reply_on(*reply_lane);
   const auto counted = [&servers](auto field) {
     std::int64_t sum = 0;
     for (const auto& server : servers) sum += server->counters().*field;

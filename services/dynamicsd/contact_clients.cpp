@@ -18,7 +18,7 @@ std::unique_ptr<ContactClient> ContactClients::make_client(lcm::LCM& on) const {
 }
 
 ContactClient& ContactClients::client(const std::string& model) {
-  const std::string url = bus::lane_lcm_url(bus_url_, protocol::contact_lane(model));
+  const std::string url = bus::lane_lcm_url(bus_url_, protocol::contact_reply_lane(model));
   if (url.empty()) {
     if (!on_bus_) on_bus_ = make_client(bus_);
     return *on_bus_;
@@ -26,8 +26,10 @@ ContactClient& ContactClients::client(const std::string& model) {
   auto found = lanes_.find(model);
   if (found == lanes_.end()) {
     Lane lane;
-    lane.lcm = bus::open_lcm(url);
-    lane.client = make_client(*lane.lcm);
+    lane.replies = bus::open_lcm(url);
+    lane.queries = bus::open_lcm(bus::lane_lcm_url(bus_url_, protocol::contact_query_lane(model)));
+    lane.client = make_client(*lane.replies);
+    lane.client->publish_on(*lane.queries);
     lane.client->also_dispatch(bus_);
     found = lanes_.emplace(model, std::move(lane)).first;
   }

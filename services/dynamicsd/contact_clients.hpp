@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
-/// The dynamics' contact request clients, one per contact model, each on its model's lane of the
-/// bus (protocol/contact/contact_lane.hpp): a run's queries and replies then wake only the
-/// dynamics and the instances of its model. While a client waits it reads the bus too
+/// The dynamics' contact request clients, one per contact model, each on its model's lanes of the
+/// bus (protocol/contact/contact_lane.hpp): queries on the query lane, replies on the reply lane,
+/// so that a run's queries wake only the instances of its model and its replies only the
+/// dynamics processes asking that model. While a client waits it reads the bus too
 /// (heartbeats, commands, swaps). On a bus without lanes (memq, file, tcpq URLs) every model
 /// shares one client on the bus itself.
 
@@ -35,7 +36,8 @@ class ContactClients {
 
  private:
   struct Lane {
-    std::unique_ptr<lcm::LCM> lcm;
+    std::unique_ptr<lcm::LCM> queries;  // publishes only: no receive socket
+    std::unique_ptr<lcm::LCM> replies;
     std::unique_ptr<ContactClient> client;
   };
   std::unique_ptr<ContactClient> make_client(lcm::LCM& on) const;

@@ -34,6 +34,7 @@ header='%-10s %-10s %7s %10s %10s %10s %9s %7s %9s %7s %8s %7s %9s %8s\n'
 printf "$header" model contact y0[m] y[mm] yaw[mrad] z[m] wall[s] steps residuals jacobs restarts 2-point queries rt/real
 rows="$work/rows"
 : >"$rows"
+: >"$work/cost"
 for model in "${models[@]}"; do
   for mode in bus in-process; do
     for y0 in "${starts[@]}"; do
@@ -49,6 +50,14 @@ for model in "${models[@]}"; do
           -v p="$(value two_point_entries "$summary")" -v q="$(value contact_queries "$summary")" \
           'BEGIN { printf "%-10s %-10s %7s %10.4f %10.4f %10.6f %9.3f %7d %9d %7d %8d %7d %9d %8.1f\n",
                    m, c, y0, y*1e3, yaw*1e3, z, w, s, r, j, x, p, q, t / w }' | tee -a "$rows"
+      if [ "$mode" = bus ]; then
+        # where each answered query's bus time went (the run's counters, docs/performance.md)
+        line="$model $y0 $(value contact_queries "$summary")"
+        for part in round_trip send transfer service_wakeup compute reply client_wakeup; do
+          line+=" $(value "bus_${part}_time" "$summary")"
+        done
+        echo "$line" >>"$work/cost"
+      fi
     done
   done
 done
@@ -75,3 +84,16 @@ sort -k1,1 -k2,2 -s "$rows" | awk '
   END { flush()
         for (c in wall) { split(c, k, " "); if (k[1] == "onepoint" && (("spline " k[2]) in wall))
           printf "spline / onepoint median wall time, %s: %.4f (onepoint %.0f times slower)\n", k[2], wall["spline " k[2]] / wall[c], wall[c] / wall["spline " k[2]] } }'
+
+# The bus against in-process, per model, and where a query's bus time goes.
+awk '{ key = $1 " " $2; n[key]++; w[key, n[key]] = $7 }
+  function median(k,   i, j, t, a, m) { m = n[k]; for (i = 1; i <= m; i++) a[i] = w[k, i]
+    for (i = 2; i <= m; i++) for (j = i; j > 1 && a[j-1] > a[j]; j--) { t = a[j]; a[j] = a[j-1]; a[j-1] = t }
+    return m % 2 ? a[(m+1)/2] : 0.5 * (a[m/2] + a[m/2+1]) }
+  END { for (k in n) { split(k, p, " "); if (p[2] == "bus" && ((p[1] " in-process") in n))
+          printf "%s: bus / in-process median wall time %.2f\n", p[1], median(k) / median(p[1] " in-process") } }' "$rows"
+echo
+echo "per answered query over the bus [us]: round trip = send + transfer + service wake-up + compute + reply + client wake-up"
+printf '%-10s %7s %8s %10s %8s %9s %9s %8s %8s %9s\n' model y0 queries round-trip send transfer svc-wake compute reply cli-wake
+awk '{ q = $3 > 0 ? $3 : 1; printf "%-10s %7s %8d %10.1f %8.1f %9.1f %9.1f %8.1f %8.1f %9.1f\n", $1, $2, $3,
+       $4/q*1e6, $5/q*1e6, $6/q*1e6, $7/q*1e6, $8/q*1e6, $9/q*1e6, $10/q*1e6 }' "$work/cost"

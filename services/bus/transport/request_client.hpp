@@ -79,7 +79,8 @@ class RequestClient {
         reply_channel_(std::move(reply_channel)),
         stamper_(std::move(sender)),
         last_id_(first_request_id()),
-        dispatched_{&lcm} {
+        dispatched_{&lcm},
+        publish_on_(&lcm) {
     subscription_ = std::make_unique<GuardedSubscription<Reply>>(
         lcm_, reply_channel_, "request client on " + reply_channel_,
         [this](const Reply& reply, const ReceivedMessage& info) { on_reply(reply, info); }, 100);
@@ -120,7 +121,7 @@ class RequestClient {
       const double send_start = monotonic_seconds();
       for (std::size_t k = 0; k < count; ++k) {
         stamper_.stamp(requests[k].header);
-        if (publish_signed(lcm_, request_channel_, requests[k]) != 0) {
+        if (publish_signed(*publish_on_, request_channel_, requests[k]) != 0) {
           throw std::runtime_error("publish on '" + request_channel_ + "' failed");
         }
         ++counters_.sent;
@@ -149,6 +150,9 @@ class RequestClient {
   /// the bus's heartbeat monitors and commands working; bus/transport/lcm_url.hpp). other must
   /// outlive the client.
   void also_dispatch(lcm::LCM& other) { dispatched_.push_back(&other); }
+  /// Publishes the requests on other instead (an object that subscribes to nothing has no
+  /// receive socket, so its own requests do not come back to it). other must outlive the client.
+  void publish_on(lcm::LCM& other) { publish_on_ = &other; }
 
   /// Directs later requests to another channel (hot swap between services).
   void set_request_channel(std::string channel) { request_channel_ = std::move(channel); }
@@ -215,6 +219,7 @@ class RequestClient {
   std::int64_t answer_receipt_utime_ = 0;  // [us] of answer_
   std::int64_t answer_handled_utime_ = 0;  // [us] of answer_
   std::vector<lcm::LCM*> dispatched_;  // read while waiting: the client's own object first
+  lcm::LCM* publish_on_;               // where requests go
 };
 
 }  // namespace wrc::bus

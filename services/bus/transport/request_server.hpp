@@ -81,6 +81,8 @@ class RequestServer : public LoadSource {
   RequestServer(const RequestServer&) = delete;
   RequestServer& operator=(const RequestServer&) = delete;
 
+  /// Publishes the replies on other instead (see RequestClient::publish_on); it must outlive the server.
+  void reply_on(lcm::LCM& other) { reply_on_ = &other; }
   /// Optional range/consistency check run before the handler.
   void set_validator(Validator validator) { validator_ = std::move(validator); }
   /// Optional: how to express errors in the reply type; without it, bad requests get no reply.
@@ -192,7 +194,7 @@ class RequestServer : public LoadSource {
 
   void publish(const std::string& reply_channel, Reply& reply, double start) {
     stamper_.stamp(reply.header);
-    if (publish_signed(lcm_, reply_channel, reply) != 0) {
+    if (publish_signed(*reply_on_, reply_channel, reply) != 0) {
       rejections_.reject(reply_channel, "publishing the reply failed");
     }
     ++counters_.answered;
@@ -207,6 +209,7 @@ class RequestServer : public LoadSource {
   }
 
   lcm::LCM& lcm_;
+  lcm::LCM* reply_on_ = &lcm_;  // where replies go
   std::string channel_;
   HeaderStamper stamper_;
   RejectionLog rejections_;

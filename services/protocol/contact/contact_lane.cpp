@@ -5,9 +5,13 @@
 
 namespace wrc::protocol {
 
-int contact_lane(const std::string& model) {
+int contact_query_lane(const std::string& model) {
   const ContactModelEntry& entry = contact_model_entry(model);  // throws for an unknown one
   return static_cast<int>(&entry - contact_model_registry().data()) + 1;
+}
+
+int contact_reply_lane(const std::string& model) {
+  return contact_query_lane(model) + static_cast<int>(contact_model_registry().size());
 }
 
 }  // namespace wrc::protocol

@@ -321,7 +321,7 @@ TEST_F(DynamicsServiceTest, LiveSwapIsListedAndReproducedBySwapAt) {
   launcher->wait(20.0);
 }
 
-// 5 % of all bus datagrams dropped (queries, replies, commands, heartbeats): every lost query is
+// 5 % of all datagrams of the bus and its lanes dropped (queries, replies, commands, heartbeats): every lost query is
 // re-sent, and the run ends bit for bit where the undisturbed one does.
 TEST_F(DynamicsServiceTest, PacketLossGivesTheSameFinalState) {
   if (!in_netns()) GTEST_SKIP() << "packet loss is only injected inside a private network namespace";
@@ -332,7 +332,7 @@ TEST_F(DynamicsServiceTest, PacketLossGivesTheSameFinalState) {
   ASSERT_EQ(clean["state"], "finished") << clean.dump();
   if (std::system("nft add table inet t && nft add chain inet t in '{ type filter hook input priority 0; }'") != 0)
     GTEST_SKIP() << "nft cannot create a table in this namespace (no CAP_NET_ADMIN?)";
-  ASSERT_EQ(std::system("nft add rule inet t in udp dport 7667 numgen random mod 100 lt 5 counter drop"), 0);
+  ASSERT_EQ(std::system("nft add rule inet t in udp dport 7667-7675 numgen random mod 100 lt 5 counter drop"), 0);
   std::vector<std::string> lossy_args = run_args("spline", 0.5, temp_path("lossy.json"));
   lossy_args.insert(lossy_args.end(), {"--timeout", "0.02", "--retries", "5"});
   const nlohmann::json lossy = run(lossy_args, "lossy");
@@ -367,7 +367,7 @@ TEST_F(DynamicsServiceTest, LossyBusKillsNoServiceAndRunsEndTheSame) {
   const auto clean = runs("clean");
   if (std::system("nft add table inet t && nft add chain inet t in '{ type filter hook input priority 0; }'") != 0)
     GTEST_SKIP() << "nft cannot create a table in this namespace (no CAP_NET_ADMIN?)";
-  ASSERT_EQ(std::system("nft add rule inet t in udp dport 7667 numgen random mod 100 lt 5 counter drop"), 0);
+  ASSERT_EQ(std::system("nft add rule inet t in udp dport 7667-7675 numgen random mod 100 lt 5 counter drop"), 0);
   const char* seconds_text = std::getenv("WRC_LOSS_SECONDS");
   const double campaign = seconds_text ? std::atof(seconds_text) : 0.0;
   const double campaign_end = monotonic_seconds() + campaign;

@@ -39,12 +39,21 @@ constexpr double kEnd = 0.1;            // [s] simulated, multipoint and spline
 // about 0.42 s (the second point's fields of the query and the reply on the bus from then on).
 constexpr double kOnepointEnd = 0.5;
 
+// The run counters of where the bus time went (run_counter_table()).
+constexpr const char* kBusTimes[] = {"bus_round_trip_time", "bus_send_time",  "bus_transfer_time",
+                                     "bus_service_wakeup_time", "bus_compute_time", "bus_reply_time",
+                                     "bus_client_wakeup_time"};
+
 class InProcessComparisonTest : public BusTest {
  protected:
   void SetUp() override {
     BusTest::SetUp();
     ::setenv("WRC_CACHE_DIR", temp_path("models").c_str(), 1);  // the processes' spline model cache
+    auto* counter = lcm_->subscribeFunction(
+        ".*CONTACT_QUERY\\..*", +[](const lcm::ReceiveBuffer*, const std::string&, int* n) { ++*n; }, &queries_on_bus_);
+    counter->setQueueCapacity(100000);
   }
+  int queries_on_bus_ = 0;  // contact queries heard on the bus
   void TearDown() override {
     ::unsetenv("WRC_CACHE_DIR");
     BusTest::TearDown();
@@ -83,6 +92,33 @@ class InProcessComparisonTest : public BusTest {
     }
   }
 
+  // Where the bus run's query time went: nothing in-process; over the bus the parts add up to
+  // the round trips (they telescope from the first send to the reply handled; what they leave out
+  // is the service's few instructions between its evaluation and the reply's stamp and the
+  // dynamics' return from the call, under 20 us a query), each positive but the transfer (LCM's
+  // receive time is the kernel's, taken inside the send call that the send part ends with).
+  static void expect_query_times(const std::string& model, const nlohmann::json& local, const nlohmann::json& bus) {
+    for (const char* part : kBusTimes) EXPECT_EQ(local["counters"].value(part, -1.0), 0.0) << model << " " << part;
+    const nlohmann::json& c = bus["counters"];
+    const double round_trip = c.value("bus_round_trip_time", 0.0);
+    const double queries = c.value("contact_queries", 0.0);
+    ASSERT_GT(queries, 10.0) << model;
+    EXPECT_GT(round_trip, queries * 5e-6) << model << ": a round trip on a bus takes microseconds";
+    double parts = 0;
+    for (const char* part : kBusTimes) {
+      if (std::string(part) == "bus_round_trip_time") continue;
+      parts += c.value(part, 0.0);
+      if (std::string(part) != "bus_transfer_time") {
+        EXPECT_GT(c.value(part, 0.0), 0.0) << model << " " << part;
+      }
+    }
+    if (c.value("contact_retries", 0) == 0) {
+      EXPECT_LE(parts, round_trip + queries * 5e-6) << model;
+      EXPECT_GE(parts, round_trip - queries * 20e-6) << model;
+    }
+    EXPECT_LT(c.value("bus_compute_time", 0.0), round_trip) << model;
+  }
+
   // Both runs of model to t_end compared; returns the in-process summary.
   nlohmann::json expect_same_run(const std::string& model, double t_end) {
     std::map<std::string, std::string> local_rows, bus_rows;
@@ -101,8 +137,9 @@ class InProcessComparisonTest : public BusTest {
     std::map<std::string, nlohmann::json> a, b;
     leaves(local, "", a);
     leaves(bus, "", b);
-    const std::set<std::string> not_compared{"run_id", "in_process", "wall_time", "counters.contact_retries",
-                                             "counters.contact_timeouts"};
+    std::set<std::string> not_compared{"run_id", "in_process", "wall_time", "counters.contact_retries",
+                                       "counters.contact_timeouts"};
+    for (const char* part : kBusTimes) not_compared.insert(std::string("counters.") + part);
     int compared = 0;
     for (const auto& [key, value] : a) {
       if (not_compared.count(key)) continue;
@@ -119,6 +156,12 @@ class InProcessComparisonTest : public BusTest {
       if (!a.count(key) && !not_compared.count(key)) ADD_FAILURE() << model << ": " << key << " only in the bus summary";
     EXPECT_GT(compared, 50) << model;  // final state, counters, parameters
     EXPECT_GT(local["counters"]["contact_queries"].get<long>(), 10) << model;
+    expect_query_times(model, local, bus);
+    // The run's queries went on the model's lanes: none reached the bus (this process listens
+    // on it for every contact query channel).
+    while (lcm_->handleTimeout(0) > 0) {
+    }
+    EXPECT_EQ(queries_on_bus_, 0) << model << ": contact queries on the bus instead of the model's lanes";
 
     EXPECT_EQ(local_header, bus_header);
     size_t common = 0;

@@ -3,12 +3,31 @@
 
 #include "bus/service/service_loop.hpp"
 #include "bus/transport/lcm_url.hpp"
+#include "core/models/contact_model_factory.hpp"
 #include "protocol/contact/contact_lane.hpp"
 
 namespace wrc::dynamics {
 
 ContactClients::ContactClients(lcm::LCM& bus, std::string bus_url, bus::ChannelNames names, std::string sender)
-    : bus_(bus), bus_url_(bus::effective_lcm_url(bus_url)), names_(std::move(names)), sender_(std::move(sender)) {}
+    : bus_(bus), bus_url_(bus::effective_lcm_url(bus_url)), names_(std::move(names)), sender_(std::move(sender)) {
+  for (const std::string& model : contact_model_names()) {
+    const std::string url = bus::lane_lcm_url(bus_url_, protocol::contact_reply_lane(model));
+    if (url.empty()) return;  // no lanes on this bus
+    Lane lane;
+    lane.replies = bus::open_lcm(url);
+    lane.queries = bus::open_lcm(bus::lane_lcm_url(bus_url_, protocol::contact_query_lane(model)));
+    lane.client = make_client(*lane.replies);
+    lane.client->publish_on(*lane.queries);
+    lane.client->also_dispatch(bus_);
+    lanes_.emplace(model, std::move(lane));
+  }
+}
+
+std::vector<lcm::LCM*> ContactClients::reply_lanes() const {
+  std::vector<lcm::LCM*> out;
+  for (const auto& [model, lane] : lanes_) out.push_back(lane.replies.get());
+  return out;
+}
 
 std::unique_ptr<ContactClient> ContactClients::make_client(lcm::LCM& on) const {
   // The request channel is set per query (BusContact); this one is a placeholder.
@@ -18,22 +37,11 @@ std::unique_ptr<ContactClient> ContactClients::make_client(lcm::LCM& on) const {
 }
 
 ContactClient& ContactClients::client(const std::string& model) {
-  const std::string url = bus::lane_lcm_url(bus_url_, protocol::contact_reply_lane(model));
-  if (url.empty()) {
-    if (!on_bus_) on_bus_ = make_client(bus_);
-    return *on_bus_;
-  }
-  auto found = lanes_.find(model);
-  if (found == lanes_.end()) {
-    Lane lane;
-    lane.replies = bus::open_lcm(url);
-    lane.queries = bus::open_lcm(bus::lane_lcm_url(bus_url_, protocol::contact_query_lane(model)));
-    lane.client = make_client(*lane.replies);
-    lane.client->publish_on(*lane.queries);
-    lane.client->also_dispatch(bus_);
-    found = lanes_.emplace(model, std::move(lane)).first;
-  }
-  return *found->second.client;
+  protocol::contact_query_lane(model);  // throws for an unknown model
+  const auto found = lanes_.find(model);
+  if (found != lanes_.end()) return *found->second.client;
+  if (!on_bus_) on_bus_ = make_client(bus_);
+  return *on_bus_;
 }
 
 }  // namespace wrc::dynamics

@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "bus/transport/channels.hpp"
 #include "bus/transport/request_client.hpp"
@@ -26,13 +27,16 @@ using ContactClient = bus::RequestClient<contact_query_t, contact_reply_t>;
 class ContactClients {
  public:
   /// bus: the process's LCM object, opened at bus_url (as given to open_lcm; empty = the default).
+  /// Opens the lanes of every model. Throws std::runtime_error when one cannot be opened.
   ContactClients(lcm::LCM& bus, std::string bus_url, bus::ChannelNames names, std::string sender);
   ContactClients(const ContactClients&) = delete;
   ContactClients& operator=(const ContactClients&) = delete;
 
-  /// The client for model's queries, its lane opened at the first call. Throws
-  /// std::invalid_argument for an unknown model, std::runtime_error when the lane cannot be opened.
+  /// The client for model's queries. Throws std::invalid_argument for an unknown model.
   ContactClient& client(const std::string& model);
+  /// The reply lanes' LCM objects, for the service loop to read while no query waits (what
+  /// anyone sends there is read, checked and counted, never left to fill the socket).
+  std::vector<lcm::LCM*> reply_lanes() const;
 
  private:
   struct Lane {

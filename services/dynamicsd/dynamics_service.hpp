@@ -43,6 +43,8 @@ class DynamicsService {
   bool running() const { return simulation_ && simulation_->state() == RunState::kRunning; }
   /// What the service is doing, one line for its heartbeat (heartbeat_t::activity).
   std::string activity() const;
+  /// The LCM objects besides the bus that the service loop reads (the contact reply lanes).
+  std::vector<lcm::LCM*> lanes() const { return clients_.reply_lanes(); }
   /// serving() false: run commands and swaps are ignored (this process is a duplicate of an older
   /// instance of the same name, bus/service/duplicate_instance_guard.hpp), as a duplicate contact
   /// service answers no queries. Default: always serving.

@@ -591,10 +591,11 @@ TEST_F(DynamicsServiceTest, KilledContactServiceIsWaitedForAndTheRunEndsTheSame)
 }
 
 // Every counter of two summaries equal but the bus's own (re-sends and rounds without a reply,
-// which a loaded machine may cause): the same run from its start.
+// which a loaded machine may cause, and the bus times): the same run from its start.
 void expect_same_counters(const nlohmann::json& a, const nlohmann::json& b) {
   for (const auto& [name, value] : a["counters"].items()) {
-    if (name != "contact_retries" && name != "contact_timeouts" && name != "contact_failovers") {
+    if (name != "contact_retries" && name != "contact_timeouts" && name != "contact_failovers" &&
+        name.rfind("bus_", 0) != 0) {
       EXPECT_EQ(value, b["counters"][name]) << name;
     }
   }

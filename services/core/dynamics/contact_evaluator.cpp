@@ -5,17 +5,6 @@
 
 namespace wrc {
 
-QueryTimes& QueryTimes::operator+=(const QueryTimes& o) {
-  round_trip += o.round_trip;
-  send += o.send;
-  transfer += o.transfer;
-  service_wakeup += o.service_wakeup;
-  compute += o.compute;
-  reply += o.reply;
-  client_wakeup += o.client_wakeup;
-  return *this;
-}
-
 InProcessContact::InProcessContact(std::shared_ptr<const ContactModel> model) : model_(std::move(model)) {
   if (!model_) throw std::invalid_argument("InProcessContact: no contact model");
 }

@@ -24,7 +24,6 @@ struct QueryTimes {
   double compute = 0;          ///< the service's evaluation
   double reply = 0;            ///< end of the evaluation to the reply's receipt by the client's LCM
   double client_wakeup = 0;    ///< receipt to the reply handled (wake-up, verification, decoding)
-  QueryTimes& operator+=(const QueryTimes& o);
 };
 
 /// A source of contact results. Not thread-safe.

@@ -86,11 +86,13 @@ const run_summary_t& RunSession::run() {
   std::optional<integrator_stats_t> stats;
   std::string status_line;
   const std::string& run_id = request_.run_id;
-  bus::GuardedSubscription<wheelset_state_t> states(
+  bus::GuardedSubscription<wheelset_states_t> states(
       lcm, session_.names.name(bus::channel::kWheelsetState), "run history",
-      [&](const wheelset_state_t& m, const bus::ReceivedMessage&) {
-        if (m.run_id == run_id) history_[m.t] = m;
-      }, 10000);
+      [&](const wheelset_states_t& batch, const bus::ReceivedMessage&) {
+        if (batch.run_id != run_id) return;
+        for (const wheelset_state_t& m : batch.states)
+          if (m.run_id == run_id) history_[m.t] = m;
+      }, 1000);
   bus::GuardedSubscription<run_status_t> status(
       lcm, session_.names.name(bus::channel::kRunStatus), "run status",
       [&](const run_status_t& m, const bus::ReceivedMessage& info) {

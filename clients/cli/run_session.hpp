@@ -18,6 +18,7 @@
 #include "protocol/run/run_command_codec.hpp"
 #include "wrc/run_summary_t.hpp"
 #include "wrc/wheelset_state_t.hpp"
+#include "wrc/wheelset_states_t.hpp"
 
 namespace wrc::cli {
 

@@ -39,6 +39,7 @@
 #include "bus/service/serving_activity.hpp"
 #include "bus/transport/channels.hpp"
 #include "bus/transport/clock.hpp"
+#include "bus/transport/lane_socket.hpp"
 #include "bus/transport/lcm_url.hpp"
 #include "bus/transport/request_server.hpp"
 #include "contactd/contactd_options.hpp"
@@ -268,17 +269,19 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   // (protocol/contact/contact_lane.hpp).
   const std::string bus_url = effective_lcm_url(service.lcm_url);
   const std::string lane_url = lane_lcm_url(bus_url, wrc::protocol::contact_query_lane(served.name));
-  std::unique_ptr<lcm::LCM> lane = lane_url.empty() ? nullptr : open_lcm(lane_url);
+  // The query lane is read from a socket in this thread (bus/transport/lane_socket.hpp): the
+  // kernel wakes the service itself, with no LCM receive thread in between.
+  std::unique_ptr<LaneSocket> lane = lane_url.empty() ? nullptr : std::make_unique<LaneSocket>(lane_url);
   std::unique_ptr<lcm::LCM> reply_lane =
       lane_url.empty() ? nullptr : open_lcm(lane_lcm_url(bus_url, wrc::protocol::contact_reply_lane(served.name)));
   std::vector<std::unique_ptr<ContactServer>> servers;
-  for (lcm::LCM* on : {lcm.get(), lane.get()}) {
-    if (on == nullptr) continue;
-    servers.push_back(std::make_unique<ContactServer>(*on, request_channel, sender, answer));
-    servers.back()->set_address_filter([&filter](const contact_query_t& query) { return filter.answers(query); });
-    set_query_checks(*servers.back(), served, instance, key);
+  servers.push_back(std::make_unique<ContactServer>(*lcm, request_channel, sender, answer));
+  if (lane) servers.push_back(std::make_unique<ContactServer>(*lane, request_channel, sender, answer));
+  if (lane) servers.back()->reply_on(*reply_lane);
+  for (const auto& server : servers) {
+    server->set_address_filter([&filter](const contact_query_t& query) { return filter.answers(query); });
+    set_query_checks(*server, served, instance, key);
   }
-  if (reply_lane) servers.back()->reply_on(*reply_lane);
   const auto counted = [&servers](auto field) {
     std::int64_t sum = 0;
     for (const auto& server : servers) sum += server->counters().*field;
@@ -286,7 +289,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   };
   activity = ServingActivity(served.name + " queries", [&counted] { return counted(&ServerCounters::answered); });
   ServiceLoop loop(*lcm, heartbeat);
-  if (lane) loop.add_lcm(*lane);
+  if (lane) loop.add_inbox(*lane);
   for (const auto& server : servers) loop.add_load_source(server.get());
   if (served.splines) {
     // A recompute of the same model (same model_key, new data) replaces the model between queries.

@@ -14,7 +14,7 @@ ContactClients::ContactClients(lcm::LCM& bus, std::string bus_url, bus::ChannelN
     const std::string url = bus::lane_lcm_url(bus_url_, protocol::contact_reply_lane(model));
     if (url.empty()) return;  // no lanes on this bus
     Lane lane;
-    lane.replies = bus::open_lcm(url);
+    lane.replies = std::make_unique<bus::LaneSocket>(url);
     lane.queries = bus::open_lcm(bus::lane_lcm_url(bus_url_, protocol::contact_query_lane(model)));
     lane.client = make_client(*lane.replies);
     lane.client->publish_on(*lane.queries);
@@ -23,13 +23,13 @@ ContactClients::ContactClients(lcm::LCM& bus, std::string bus_url, bus::ChannelN
   }
 }
 
-std::vector<lcm::LCM*> ContactClients::reply_lanes() const {
-  std::vector<lcm::LCM*> out;
+std::vector<bus::LaneSocket*> ContactClients::reply_lanes() const {
+  std::vector<bus::LaneSocket*> out;
   for (const auto& [model, lane] : lanes_) out.push_back(lane.replies.get());
   return out;
 }
 
-std::unique_ptr<ContactClient> ContactClients::make_client(lcm::LCM& on) const {
+std::unique_ptr<ContactClient> ContactClients::make_client(bus::Inbox on) const {
   // The request channel is set per query (BusContact); this one is a placeholder.
   return std::make_unique<ContactClient>(on, names_.name(bus::channel::kContactQuery, "onepoint"),
                                          names_.name(bus::channel::kContactReply, bus::make_client_id("wrc-dynamicsd")),

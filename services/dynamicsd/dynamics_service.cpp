@@ -17,7 +17,7 @@
 #include "wrc/integrator_stats_t.hpp"
 #include "wrc/progress_t.hpp"
 #include "wrc/run_status_t.hpp"
-#include "wrc/wheelset_state_t.hpp"
+#include "wrc/wheelset_states_t.hpp"
 
 namespace wrc::dynamics {
 namespace {
@@ -43,7 +43,8 @@ DynamicsService::DynamicsService(lcm::LCM& lcm, const std::string& lcm_url, cons
       keepalive_(std::move(keepalive)),
       stamper_(sender),
       monitor_(lcm, names.name(bus::channel::kHeartbeat)),
-      clients_(lcm, lcm_url, names, sender) {
+      clients_(lcm, lcm_url, names, sender),
+      states_([this](wheelset_states_t& batch) { publish(bus::channel::kWheelsetState, batch); }) {
   commands_ = std::make_unique<bus::GuardedSubscription<run_command_t>>(
       lcm_, names_.name(bus::channel::kRunCommand), "dynamics commands",
       [this](const run_command_t& c, const bus::ReceivedMessage&) { on_command(c); });
@@ -117,9 +118,9 @@ void DynamicsService::start(const run_command_t& command) {
     for (const protocol::ScheduledSwap& swap : request_.swaps) simulation_->schedule_swap(swap.t, make_contact(swap.model));
     const std::string run_id = request_.run_id;
     const WheelsetParameters wheelset = request_.spec.wheelset;
+    states_.start(run_id);
     simulation_->on_output([this, run_id, wheelset](const WheelsetSnapshot& s) {
-      wheelset_state_t m = protocol::to_state_message(s, run_id, wheelset);
-      publish(bus::channel::kWheelsetState, m);
+      states_.add(protocol::to_state_message(s, run_id, wheelset), bus::monotonic_seconds());
     });
     wall_start_ = bus::monotonic_seconds();
     std::cerr << "wrc-dynamicsd: run " << bus::log_text(run_id) << " with " << request_.model
@@ -178,6 +179,7 @@ void DynamicsService::apply_select() {
 }
 
 void DynamicsService::finish() {
+  states_.flush();  // every sample before the summary that ends the run
   wall_time_ = bus::monotonic_seconds() - wall_start_;
   run_summary_t summary = protocol::to_summary_message(*simulation_, request_.run_id, request_id_, wall_time_);
   if (summary.message.empty()) summary.message = status_message_;
@@ -282,6 +284,7 @@ void DynamicsService::poll(double budget) {
       more = simulation_->advance();
     if (!more) finish();
   }
+  states_.tick(bus::monotonic_seconds());
   publish_status(false);
 }
 

@@ -3,7 +3,8 @@
 /// @file
 /// wrc-dynamicsd's run management: START/STOP commands (RUN_COMMAND), live swaps
 /// (CONTACT_SELECT), one WheelsetSimulation at a time advanced step by step from the service loop,
-/// and what it publishes (WHEELSET_STATE at the output period, RUN_STATUS and INTEGRATOR_STATS
+/// and what it publishes (WHEELSET_STATE: the samples of every output period in batches,
+/// dynamicsd/state_batches.hpp; RUN_STATUS and INTEGRATOR_STATS
 /// twice a second and on every change, RUN_SUMMARY at the end, repeated while idle so that a
 /// client that lost it gets it). Messages that arrive while a step waits for a contact reply
 /// only set flags here; they act at the next step boundary.
@@ -23,6 +24,7 @@
 #include "bus/transport/header_stamper.hpp"
 #include "core/dynamics/wheelset_simulation.hpp"
 #include "dynamicsd/contact_clients.hpp"
+#include "dynamicsd/state_batches.hpp"
 #include "protocol/run/run_command_codec.hpp"
 #include "protocol/run/run_output_codec.hpp"
 #include "wrc/contact_select_t.hpp"
@@ -43,8 +45,8 @@ class DynamicsService {
   bool running() const { return simulation_ && simulation_->state() == RunState::kRunning; }
   /// What the service is doing, one line for its heartbeat (heartbeat_t::activity).
   std::string activity() const;
-  /// The LCM objects besides the bus that the service loop reads (the contact reply lanes).
-  std::vector<lcm::LCM*> lanes() const { return clients_.reply_lanes(); }
+  /// The inboxes besides the bus that the service loop reads (the contact reply lanes).
+  std::vector<bus::LaneSocket*> lanes() const { return clients_.reply_lanes(); }
   /// serving() false: run commands and swaps are ignored (this process is a duplicate of an older
   /// instance of the same name, bus/service/duplicate_instance_guard.hpp), as a duplicate contact
   /// service answers no queries. Default: always serving.
@@ -92,6 +94,7 @@ class DynamicsService {
   std::int64_t selects_heard_ = 0;
 
   std::unique_ptr<WheelsetSimulation> simulation_;
+  StateBatches states_;
   protocol::RunRequest request_;
   std::int64_t request_id_ = 0;
   std::string geometry_key_;

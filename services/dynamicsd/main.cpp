@@ -32,7 +32,7 @@ int run(const wrc::bus::ServiceOptions& options, const wrc::bus::NoOwnOptions&) 
   heartbeat.set_activity_source([&service] { return service.activity(); });
   service.set_serving_check([&heartbeat] { return heartbeat.state() != wrc::heartbeat_t::DUPLICATE; });
   ServiceLoop loop(*lcm, heartbeat);
-  for (lcm::LCM* lane : service.lanes()) loop.add_lcm(*lane);
+  for (wrc::bus::LaneSocket* lane : service.lanes()) loop.add_inbox(*lane);
   // Whole integrator steps for at most a fifth of a heartbeat period per turn, so that heartbeats
   // and commands keep flowing during a run.
   const double budget = 0.2 * options.heartbeat_period;

@@ -15,6 +15,7 @@
 #include "core/dynamics/wheel_output.hpp"
 #include "core/numerics/number_text.hpp"
 #include "wrc/wheelset_state_t.hpp"
+#include "wrc/wheelset_states_t.hpp"
 
 namespace wrc::cli::plot {
 namespace {
@@ -37,8 +38,9 @@ bool is_lcm_log(const std::string& path) {
   return in && magic[0] == 0xED && magic[1] == 0xA1 && magic[2] == 0xDA && magic[3] == 0x01;
 }
 
-// The wheelset states of the first run in a log (channel WHEELSET_STATE with any prefix), sorted
-// by time; repeated states (the same time) once.
+// The wheelset states of the first run in a log (channel WHEELSET_STATE with any prefix: batches of
+// states, or single states as logs recorded before the batches hold them), sorted by time;
+// repeated states (the same time) once.
 RunHistory read_log_history(const std::string& path) {
   lcm::LogFile log(path, "r");
   if (!log.good()) throw std::runtime_error("cannot read the LCM log '" + path + "'");
@@ -49,10 +51,16 @@ RunHistory read_log_history(const std::string& path) {
     const std::string& name = e->channel;
     if (name.size() < channel.size() || name.compare(name.size() - channel.size(), channel.size(), channel) != 0)
       continue;
-    wheelset_state_t m;
-    if (m.decode(e->data, 0, e->datalen) < 0) continue;  // not a state (the trailer is ignored)
-    if (run_id.empty()) run_id = m.run_id;
-    if (m.run_id == run_id) states[m.t] = m;
+    // The trailer after the message is ignored; anything else is not a state.
+    wheelset_states_t batch;
+    if (batch.decode(e->data, 0, e->datalen) < 0) {
+      batch.states.resize(1);
+      if (batch.states[0].decode(e->data, 0, e->datalen) < 0) continue;
+    }
+    for (const wheelset_state_t& m : batch.states) {
+      if (run_id.empty()) run_id = m.run_id;
+      if (m.run_id == run_id) states[m.t] = m;
+    }
   }
   if (states.empty()) throw std::runtime_error("'" + path + "' holds no wheelset states (WHEELSET_STATE)");
   RunHistory history;

@@ -61,7 +61,7 @@ void ServiceLoop::check_identity(double now) {
 bool ServiceLoop::listen(double seconds) {
   const double end = monotonic_seconds() + seconds;
   for (double left = seconds; left > 0.0 && !ShutdownSignal::requested(); left = end - monotonic_seconds()) {
-    if (handle_any(lcms_, static_cast<int>(std::ceil(std::min(left, max_wait_) * 1e3))) < 0 && errno != EINTR) {
+    if (handle_any(inboxes_, static_cast<int>(std::ceil(std::min(left, max_wait_) * 1e3))) < 0 && errno != EINTR) {
       return false;
     }
     heartbeat_.tick();
@@ -108,11 +108,11 @@ int ServiceLoop::run() {
   int consecutive_errors = 0;
   while (!ShutdownSignal::requested()) {
     const double wait = std::min(max_wait_, heartbeat_.seconds_until_due());
-    int rc = handle_any(lcms_, static_cast<int>(std::ceil(wait * 1e3)));
+    int rc = handle_any(inboxes_, static_cast<int>(std::ceil(wait * 1e3)));
     if (rc > 0) {
       // drain what is already queued without waiting; the burst length measures the queue
       int burst = 0;
-      while (!ShutdownSignal::requested() && (rc = handle_any(lcms_, 0)) > 0) ++burst;
+      while (!ShutdownSignal::requested() && (rc = handle_any(inboxes_, 0)) > 0) ++burst;
       max_queue_ = std::max(max_queue_, burst);
     }
     if (rc < 0 && !ShutdownSignal::requested() && errno != EINTR) {

@@ -17,6 +17,7 @@
 #include "bus/service/duplicate_instance_guard.hpp"
 #include "bus/service/heartbeat_publisher.hpp"
 #include "bus/service/service_load.hpp"
+#include "bus/transport/inbox.hpp"
 
 namespace wrc::bus {
 
@@ -46,11 +47,11 @@ class ServiceLoop {
  public:
   /// Listens on the heartbeat's channel for duplicates of this process.
   ServiceLoop(lcm::LCM& lcm, HeartbeatPublisher& heartbeat)
-      : heartbeat_(heartbeat), duplicates_(lcm, heartbeat.channel(), heartbeat), lcms_{&lcm} {}
+      : heartbeat_(heartbeat), duplicates_(lcm, heartbeat.channel(), heartbeat), inboxes_{lcm} {}
 
-  /// Dispatches the messages of another LCM object too (a lane of the bus the service serves on;
-  /// bus/transport/lcm_url.hpp). It must outlive the loop.
-  void add_lcm(lcm::LCM& other) { lcms_.push_back(&other); }
+  /// Dispatches the messages of another inbox too (a lane of the bus the service serves on, as an
+  /// LCM object or a lane socket; bus/transport/lcm_url.hpp). It must outlive the loop.
+  void add_inbox(Inbox other) { inboxes_.push_back(other); }
 
   /// Adds a request server whose load goes into the heartbeat.
   void add_load_source(LoadSource* source) { sources_.push_back(source); }
@@ -84,7 +85,7 @@ class ServiceLoop {
   double next_idle_failure_log_ = 0.0;  // [s] monotonic time before which no failure is logged
   double max_wait_ = 0.1;
   int max_queue_ = 0;  // most messages handled back to back without waiting, this period, minus 1
-  std::vector<lcm::LCM*> lcms_;  // the bus first, then lanes
+  std::vector<Inbox> inboxes_;  // the bus first, then lanes
 };
 
 }  // namespace wrc::bus

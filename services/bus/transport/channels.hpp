@@ -25,7 +25,7 @@ inline constexpr const char* kModelPiece = "MODEL_PIECE";           ///< model_p
 inline constexpr const char* kProgress = "PROGRESS";                ///< progress_t
 inline constexpr const char* kRunCommand = "RUN_COMMAND";           ///< run_command_t
 inline constexpr const char* kRunStatus = "RUN_STATUS";             ///< run_status_t
-inline constexpr const char* kWheelsetState = "WHEELSET_STATE";     ///< wheelset_state_t
+inline constexpr const char* kWheelsetState = "WHEELSET_STATE";     ///< wheelset_states_t (batches of wheelset_state_t)
 inline constexpr const char* kIntegratorStats = "INTEGRATOR_STATS"; ///< integrator_stats_t
 inline constexpr const char* kRunSummary = "RUN_SUMMARY";           ///< run_summary_t
 }  // namespace channel

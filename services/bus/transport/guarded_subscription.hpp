@@ -26,6 +26,7 @@
 #include "bus/transport/clock.hpp"
 #include "bus/transport/decode.hpp"
 #include "bus/transport/drop_counters.hpp"
+#include "bus/transport/inbox.hpp"
 
 namespace wrc::bus {
 
@@ -42,7 +43,8 @@ struct ReceivedMessage {
 };
 
 /// A subscription to one channel (exact name, not a pattern) delivering decoded, authenticated
-/// messages of one type. Dispatch happens in the owner's LCM handle loop.
+/// messages of one type. Dispatch happens where the owner reads its inbox (an LCM object's handle
+/// loop, or a lane socket read in the owner's thread).
 template <class Message>
 class GuardedSubscription {
  public:
@@ -50,18 +52,29 @@ class GuardedSubscription {
   /// Told of each drop (e.g. a request server counting rejected requests).
   using DropObserver = std::function<void(DropKind)>;
 
-  /// who: component named in drop log lines. queue_capacity: LCM's per-subscription queue.
-  /// Throws std::runtime_error when the subscription fails, std::logic_error without a bus key.
-  GuardedSubscription(lcm::LCM& lcm, std::string channel, std::string who, Handler handler,
+  /// who: component named in drop log lines. queue_capacity: LCM's per-subscription queue (a lane
+  /// socket queues in the kernel's receive buffer). Throws std::runtime_error when the
+  /// subscription fails, std::logic_error without a bus key.
+  GuardedSubscription(Inbox on, std::string channel, std::string who, Handler handler,
                       int queue_capacity = 1000, std::size_t max_bytes = kDefaultMaxMessageBytes)
-      : lcm_(lcm), channel_(std::move(channel)), who_(std::move(who)), handler_(std::move(handler)),
+      : on_(on), channel_(std::move(channel)), who_(std::move(who)), handler_(std::move(handler)),
         max_bytes_(max_bytes), auth_(bus_auth()) {
     if (!handler_) throw std::runtime_error("subscription to '" + channel_ + "' has no handler");
-    subscription_ = lcm_.subscribe(regex_escape(channel_), &GuardedSubscription::on_datagram, this);
+    if (on_.lane() != nullptr) {
+      on_.lane()->subscribe(channel_, [this](const lcm::ReceiveBuffer& b, const std::string& c) { on_datagram(&b, c); });
+      return;
+    }
+    subscription_ = on_.lcm()->subscribe(regex_escape(channel_), &GuardedSubscription::on_datagram, this);
     if (subscription_ == nullptr) throw std::runtime_error("cannot subscribe to '" + channel_ + "'");
     subscription_->setQueueCapacity(queue_capacity);
   }
-  ~GuardedSubscription() { lcm_.unsubscribe(subscription_); }
+  ~GuardedSubscription() {
+    if (on_.lane() != nullptr) {
+      on_.lane()->unsubscribe(channel_);
+    } else {
+      on_.lcm()->unsubscribe(subscription_);
+    }
+  }
   GuardedSubscription(const GuardedSubscription&) = delete;
   GuardedSubscription& operator=(const GuardedSubscription&) = delete;
 
@@ -133,7 +146,7 @@ class GuardedSubscription {
     if (drop_observer_) drop_observer_(kind);
   }
 
-  lcm::LCM& lcm_;
+  Inbox on_;
   std::string channel_;
   std::string who_;
   Handler handler_;

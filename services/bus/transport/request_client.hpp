@@ -72,17 +72,17 @@ class RequestClient {
  public:
   /// request_channel and reply_channel are full bus names (prefix applied, see ChannelNames).
   /// sender: header sender name. Throws std::runtime_error if the subscription fails.
-  RequestClient(lcm::LCM& lcm, std::string request_channel, std::string reply_channel,
-                std::string sender)
-      : lcm_(lcm),
-        request_channel_(std::move(request_channel)),
+  /// On a lane socket (replies read in the caller's thread, woken by the kernel itself),
+  /// publish_on() must name where the requests go before the first call.
+  RequestClient(Inbox on, std::string request_channel, std::string reply_channel, std::string sender)
+      : request_channel_(std::move(request_channel)),
         reply_channel_(std::move(reply_channel)),
         stamper_(std::move(sender)),
         last_id_(first_request_id()),
-        dispatched_{&lcm},
-        publish_on_(&lcm) {
+        dispatched_{on},
+        publish_on_(on.lcm()) {
     subscription_ = std::make_unique<GuardedSubscription<Reply>>(
-        lcm_, reply_channel_, "request client on " + reply_channel_,
+        on, reply_channel_, "request client on " + reply_channel_,
         [this](const Reply& reply, const ReceivedMessage& info) { on_reply(reply, info); }, 100);
     subscription_->set_drop_observer([this](DropKind) { ++counters_.rejected_replies; });
   }
@@ -121,6 +121,7 @@ class RequestClient {
       const double send_start = monotonic_seconds();
       for (std::size_t k = 0; k < count; ++k) {
         stamper_.stamp(requests[k].header);
+        if (publish_on_ == nullptr) throw std::logic_error("a request client on a lane has nowhere to publish");
         if (publish_signed(*publish_on_, request_channel_, requests[k]) != 0) {
           throw std::runtime_error("publish on '" + request_channel_ + "' failed");
         }
@@ -149,7 +150,7 @@ class RequestClient {
   /// While waiting, dispatches other's subscriptions too (a client on a lane of the bus keeps
   /// the bus's heartbeat monitors and commands working; bus/transport/lcm_url.hpp). other must
   /// outlive the client.
-  void also_dispatch(lcm::LCM& other) { dispatched_.push_back(&other); }
+  void also_dispatch(Inbox other) { dispatched_.push_back(other); }
   /// Publishes the requests on other instead (an object that subscribes to nothing has no
   /// receive socket, so its own requests do not come back to it). other must outlive the client.
   void publish_on(lcm::LCM& other) { publish_on_ = &other; }
@@ -206,7 +207,6 @@ class RequestClient {
     }
   }
 
-  lcm::LCM& lcm_;
   std::string request_channel_;
   std::string reply_channel_;
   HeaderStamper stamper_;
@@ -218,7 +218,7 @@ class RequestClient {
   std::optional<Reply> answer_;
   std::int64_t answer_receipt_utime_ = 0;  // [us] of answer_
   std::int64_t answer_handled_utime_ = 0;  // [us] of answer_
-  std::vector<lcm::LCM*> dispatched_;  // read while waiting: the client's own object first
+  std::vector<Inbox> dispatched_;      // read while waiting: the client's own inbox first
   lcm::LCM* publish_on_;               // where requests go
 };
 

@@ -63,15 +63,16 @@ class RequestServer : public LoadSource {
 
   /// Subscribes to request_channel (full bus name). sender: header sender name.
   /// Throws std::runtime_error when the subscription fails or handler is empty.
-  RequestServer(lcm::LCM& lcm, std::string request_channel, std::string sender, Handler handler)
-      : lcm_(lcm),
+  /// On a lane socket, reply_on() must name where the replies go before the first request.
+  RequestServer(Inbox on, std::string request_channel, std::string sender, Handler handler)
+      : reply_on_(on.lcm()),
         channel_(std::move(request_channel)),
         stamper_(std::move(sender)),
         rejections_(stamper_.sender() + " on " + channel_),
         handler_(std::move(handler)) {
     if (!handler_) throw std::runtime_error("request server on '" + channel_ + "' has no handler");
     subscription_ = std::make_unique<GuardedSubscription<Request>>(
-        lcm_, channel_, stamper_.sender() + " on " + channel_,
+        on, channel_, stamper_.sender() + " on " + channel_,
         [this](const Request& request, const ReceivedMessage& info) { on_request(request, info); });
     subscription_->set_drop_observer([this](DropKind) {
       ++counters_.received;
@@ -194,7 +195,7 @@ class RequestServer : public LoadSource {
 
   void publish(const std::string& reply_channel, Reply& reply, double start) {
     stamper_.stamp(reply.header);
-    if (publish_signed(*reply_on_, reply_channel, reply) != 0) {
+    if (reply_on_ == nullptr || publish_signed(*reply_on_, reply_channel, reply) != 0) {
       rejections_.reject(reply_channel, "publishing the reply failed");
     }
     ++counters_.answered;
@@ -208,8 +209,7 @@ class RequestServer : public LoadSource {
     rejections_.reject(channel, why);
   }
 
-  lcm::LCM& lcm_;
-  lcm::LCM* reply_on_ = &lcm_;  // where replies go
+  lcm::LCM* reply_on_;  // where replies go
   std::string channel_;
   HeaderStamper stamper_;
   RejectionLog rejections_;

@@ -172,4 +172,14 @@ void visit_strings(wrc::wheelset_state_t& m, const StringVisitor& f) {
   f("model", m.model, kMaxNameBytes, kId);
 }
 
+void visit_strings(wrc::wheelset_states_t& m, const StringVisitor& f) {
+  visit_header(m.header, f);
+  f("run_id", m.run_id, kMaxIdBytes, kId);
+  for (wrc::wheelset_state_t& state : m.states) {
+    f("states[].header.sender", state.header.sender, kMaxIdBytes, kId);
+    f("states[].run_id", state.run_id, kMaxIdBytes, kId);
+    f("states[].model", state.model, kMaxNameBytes, kId);
+  }
+}
+
 }  // namespace wrc::bus

@@ -30,6 +30,7 @@
 #include "wrc/run_summary_t.hpp"
 #include "wrc/spline_model_t.hpp"
 #include "wrc/wheelset_state_t.hpp"
+#include "wrc/wheelset_states_t.hpp"
 
 namespace wrc::bus {
 
@@ -70,6 +71,7 @@ void visit_strings(wrc::run_status_t& m, const StringVisitor& f);
 void visit_strings(wrc::run_summary_t& m, const StringVisitor& f);
 void visit_strings(wrc::spline_model_t& m, const StringVisitor& f);
 void visit_strings(wrc::wheelset_state_t& m, const StringVisitor& f);
+void visit_strings(wrc::wheelset_states_t& m, const StringVisitor& f);
 
 /// "<field> is <size> bytes, longer than its limit of <limit>": the words of every string-limit
 /// violation, received or about to be sent (size and limit [B]).

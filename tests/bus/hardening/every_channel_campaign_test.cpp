@@ -69,6 +69,7 @@
 #include "wrc/run_summary_t.hpp"
 #include "wrc/spline_model_t.hpp"
 #include "wrc/wheelset_state_t.hpp"
+#include "wrc/wheelset_states_t.hpp"
 
 namespace wrc::bus::test {
 namespace {
@@ -122,7 +123,7 @@ class EveryChannelCampaign : public BusTest {
           last_status_id_ = s.request_id;
           if (s.state == wrc::run_status_t::RUNNING) running_.insert(s.run_id);
         });
-    states_ = subscribe<wrc::wheelset_state_t>(channel::kWheelsetState);
+    states_ = subscribe<wrc::wheelset_states_t>(channel::kWheelsetState);
     stats_ = subscribe<wrc::integrator_stats_t>(channel::kIntegratorStats);
     summaries_ = subscribe<wrc::run_summary_t>(channel::kRunSummary);
     tables_ = std::make_unique<GuardedSubscription<wrc::geometry_table_t>>(
@@ -313,7 +314,7 @@ class EveryChannelCampaign : public BusTest {
   std::map<std::string, std::unique_ptr<ContactClient>> contact_;  // by model
   std::unique_ptr<GeometryClient> geometry_;
   std::unique_ptr<GuardedSubscription<wrc::run_status_t>> run_status_;
-  std::unique_ptr<GuardedSubscription<wrc::wheelset_state_t>> states_;
+  std::unique_ptr<GuardedSubscription<wrc::wheelset_states_t>> states_;
   std::unique_ptr<GuardedSubscription<wrc::integrator_stats_t>> stats_;
   std::unique_ptr<GuardedSubscription<wrc::run_summary_t>> summaries_;
   std::unique_ptr<GuardedSubscription<wrc::geometry_table_t>> tables_;
@@ -599,13 +600,23 @@ std::vector<Target> EveryChannelCampaign::targets(const std::string& dynamics_re
   state.y = 0.001;
   state.speed = 30.0;
   state.model = "onepoint";
-  target(names_.name(channel::kWheelsetState), predict_decode<wrc::wheelset_state_t>, 3,
-         {TemplateBuilder<wrc::wheelset_state_t>("wheelset state", state)
-              .string(WRC_FIELD(wrc::wheelset_state_t, run_id))
-              .number(WRC_FIELD(wrc::wheelset_state_t, t))
-              .number(WRC_FIELD(wrc::wheelset_state_t, y))
-              .number(WRC_FIELD(wrc::wheelset_state_t, normal_force[1]))
-              .string(WRC_FIELD(wrc::wheelset_state_t, model))
+  wrc::wheelset_states_t states{};
+  states.run_id = "fuzz-run";
+  states.num_states = 2;
+  states.states = {state, state};
+  states.states[1].t = 0.126;
+  target(names_.name(channel::kWheelsetState), predict_decode<wrc::wheelset_states_t>, 3,
+         {TemplateBuilder<wrc::wheelset_states_t>("wheelset states", states)
+              .string(WRC_FIELD(wrc::wheelset_states_t, run_id))
+              .count([](wrc::wheelset_states_t& m) {
+                ++m.num_states;
+                m.states.push_back(m.states.back());
+              })
+              .string(WRC_FIELD(wrc::wheelset_states_t, states[0].run_id))
+              .number(WRC_FIELD(wrc::wheelset_states_t, states[0].t))
+              .number(WRC_FIELD(wrc::wheelset_states_t, states[1].y))
+              .number(WRC_FIELD(wrc::wheelset_states_t, states[1].normal_force[1]))
+              .string(WRC_FIELD(wrc::wheelset_states_t, states[1].model))
               .build()});
   wrc::integrator_stats_t stats{};
   stats.run_id = "fuzz-run";

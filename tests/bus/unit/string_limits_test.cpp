@@ -12,6 +12,7 @@
 #include "bus/auth/signed_publish.hpp"
 #include "bus/transport/decode.hpp"
 #include "bus/transport/string_limits.hpp"
+#include "wrc/wheelset_states_t.hpp"
 #include "bus/auth/message_auth.hpp"
 
 namespace wrc::bus {
@@ -104,6 +105,10 @@ TEST(StringLimits, EveryStringOfEveryMessageIsBoundedAtDecoding) {
   model.function_units = {"m"};
   expect_every_string_bounded(model, 12);
   expect_every_string_bounded(wrc::wheelset_state_t{}, 3);
+  wrc::wheelset_states_t states{};
+  states.num_states = 1;
+  states.states.resize(1);
+  expect_every_string_bounded(states, 5);
 }
 
 // Sending: a reason over its limit goes out cut to the limit, ending in "..."; a run id over its

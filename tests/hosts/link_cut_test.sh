@@ -47,12 +47,16 @@ until_status() {
 on h3 "$cli" run --model onepoint --t-end "$t_end" --summary "$work/cut.json" --build-dir "$build" \
   >"$work/cut.log" 2>&1 &
 run=$!
-# Mid-run: the dynamics past t = 0.1 s (its activity on h3's status).
+# Mid-run: the dynamics past t = 0.1 s (its activity on h3's status) and a's heartbeat counting the
+# queries it answered (a heartbeat reports the counts of its period: the first may come after t = 0.1 s).
 running() {
   awk -F, '$1 == "dynamicsd" && match($0, /, t = [0-9.e+-]+ of /) { if (substr($0, RSTART + 6) + 0 > 0.1) ok = 1 }
-           END { exit !ok }' "$work/status.csv"
+           END { exit !ok }' "$work/status.csv" || return 1
+  local answered
+  answered=$(status_of a 8)
+  [ "${answered:-0}" -gt 0 ]
 }
-until_status running 60 || { echo "link cut: the run did not get past t = 0.1 s"; cat "$work/status.csv"; exit 1; }
+until_status running 60 || { echo "link cut: the run did not get past t = 0.1 s with a answering"; cat "$work/status.csv"; exit 1; }
 a_before=$(status_of a 8)
 b_before=$(status_of b 8)
 [ "${a_before:-0}" -gt 0 ] || { echo "link cut: instance a answered nothing before the cut"; cat "$work/status.csv"; exit 1; }

@@ -36,7 +36,8 @@ constexpr double kSlurmPollPeriod = 1.0;  // [s] between looks at the rows and a
 std::vector<OptionSpec> sweep_option_specs() {
   return {
       {"--extract", true,
-       "what each row holds: groups final, maxima, counters, critical_speed and paths of the run summary "
+       "what each row holds: groups final, maxima, counters, critical_speed, instances (who answered the "
+       "queries over the bus, model/instance=queries) and paths of the run summary "
        "(run_quantities.y_over_q.left.t), comma-separated",
        "final,maxima,counters"},
       {"--critical-speeds", true, "speeds of the critical-speed scan FROM:TO:STEP [m/s]", "5:80:1"},
@@ -55,6 +56,11 @@ std::vector<OptionSpec> sweep_option_specs() {
       {"--sbatch-args", true, "further sbatch options, space-separated (e.g. '--account=A --qos=Q')", "none"},
       {"--no-wait", false, "with --slurm: submit and return; gather later with --gather", ""},
       {"--gather", false, "gather the rows the work directory holds into --out (after --slurm --no-wait)", ""},
+      {"--bus", false,
+       "run on the bus's services (start them first, e.g. wrc launch, on this or other machines): each run on a "
+       "wrc-dynamicsd of its own, its contact queries spread over the READY instances of its model; the bus "
+       "options (--lcm-url, --channel-prefix, --bus-key, --build-dir) go after --",
+       "in-process"},
       {"--run-point", true, "run one grid point of --work-dir's sweep into its row (what each run process runs)", ""},
   };
 }
@@ -89,7 +95,7 @@ sweep::SweepLayout checked_layout(const SweepDefinition& d, bool check_every_poi
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
-  check_run_options(d.run_options, d.axes);
+  check_run_options(d.run_options, d.axes, d.bus);
   std::vector<std::string> units;
   for (const sweep::GridAxis& a : d.axes) units.push_back(grid_key_unit(a.key));
   protocol::RunRequest example;
@@ -101,7 +107,7 @@ sweep::SweepLayout checked_layout(const SweepDefinition& d, bool check_every_poi
   for (std::size_t p = 0; p < checked; ++p) {
     try {
       std::ostringstream note;
-      const protocol::RunRequest request = sweep_run_request(run_arguments(d, grid.point(p)), "check", note);
+      const protocol::RunRequest request = sweep_run_request(run_arguments(d, grid.point(p)), "check", note, d.bus);
       if (!note.str().empty()) {
         auto same = std::find_if(notes.begin(), notes.end(), [&](const auto& n) { return n.first == note.str(); });
         if (same == notes.end())
@@ -137,7 +143,7 @@ sweep::SweepLayout checked_layout(const SweepDefinition& d, bool check_every_poi
 
 std::vector<ResultColumn> columns_of(const SweepDefinition& d, const sweep::Grid& grid) {
   std::ostringstream unused;  // checked_layout has said it
-  return result_columns(d.extract, sweep_run_request(run_arguments(d, grid.point(0)), "check", unused));
+  return result_columns(d.extract, sweep_run_request(run_arguments(d, grid.point(0)), "check", unused, d.bus));
 }
 
 // `wrc sweep --run-point I --work-dir DIR`: one run into its row file.
@@ -328,6 +334,7 @@ int run_sweep(const std::vector<std::string>& all_args) {
     d.run_options = arguments.run_options;
     d.extract = split(o.text("--extract", "final,maxima,counters"), ',');
     d.critical_speeds = o.text("--critical-speeds", "5:80:1");
+    d.bus = o.has("--bus");
   }
   const sweep::SweepLayout layout = checked_layout(d, !o.has("--gather"));
   check_output_path(out, "--out");

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "bus/auth/message_auth.hpp"
+#include "bus/service/service_options.hpp"
 #include "bus/transport/guarded_subscription.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/service_starter.hpp"
@@ -69,6 +70,10 @@ std::vector<OptionSpec> run_option_specs() {
        "wrc irregularities writes one from a published spectrum; docs/track.md)",
        "none"},
       {"--run-id", true, "name of the run", "run-<pid>"},
+      {"--dynamics-instance", true,
+       "the wrc-dynamicsd instance to run it (started under this name when none is READY); "
+       "several runs at once need one each",
+       "any that runs"},
   };
   for (auto& spec : parameter_option_specs(protocol::run_request_table(), protocol::RunRequest{})) specs.push_back(spec);
   for (auto& spec : service_start_option_specs()) specs.push_back(spec);
@@ -98,6 +103,14 @@ protocol::RunRequest run_request_from(const Options& o, std::ostream& notes) {
   if (o.has("--swap-at")) request.swaps = parse_swaps(o.text("--swap-at"), spec.integrator.t_end);
   request.in_process = o.has("--in-process");
   request.run_id = o.text("--run-id", "run-" + std::to_string(::getpid()));
+  if (o.has("--dynamics-instance")) {
+    request.dynamics_instance = o.text("--dynamics-instance");
+    try {
+      bus::check_instance_name("--dynamics-instance", request.dynamics_instance);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  }
   request.geometry = geometry_spec_from_options(o);
   // The run command carries the layout and the irregularities: it must fit what a service accepts.
   const std::size_t bytes =

@@ -169,6 +169,11 @@ nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& 
   for (std::size_t k = 0; k < s.swap_times.size(); ++k)
     swaps.push_back({{"t", s.swap_times[k]}, {"model", s.swap_models[k]}});
   j["swaps"] = swaps;
+  // Which contact service instances answered the queries over the bus, and how many each.
+  nlohmann::json instances = nlohmann::json::object();
+  for (std::size_t k = 0; k < s.query_instances.size() && k < s.instance_queries.size(); ++k)
+    instances[s.query_instances[k]] = s.instance_queries[k];
+  j["query_instances"] = instances;
   j["parameters"] = table_json(run_parameter_table(), request.spec);
   j["run_quantities"] = run_quantities_json(s, request.spec.wheelset.material.friction);
   j["track_layout"] = layout_json(request.spec.track, request.spec.wheelset.speed, request.spec.wheelset.gravity,

@@ -55,7 +55,8 @@ void RunSession::start_services() {
   auto keep = [&](std::unique_ptr<StartedService> s) {
     if (s) started_.push_back(std::move(s));
   };
-  keep(ensure_service(*session_.lcm, session_.monitor, context, "dynamicsd", "", "wrc-dynamicsd", {}));
+  keep(ensure_service(*session_.lcm, session_.monitor, context, "dynamicsd", "", "wrc-dynamicsd", {},
+                      request_.dynamics_instance));
   if (!started_.empty()) own_dynamics_ = started_.back().get();
   if (request_.in_process) return;
   std::vector<std::string> models{request_.model};
@@ -167,8 +168,8 @@ void RunSession::restart_own_dynamics() {
   if (!own_dynamics_ || own_dynamics_->alive()) return;
   std::cerr << "\nrun: the wrc-dynamicsd it started has ended (log: " << own_dynamics_->log() << "); starting another\n";
   const StartContext context = start_context_from(options_, "run", "r" + std::to_string(::getpid()));
-  std::unique_ptr<StartedService> again =
-      ensure_service(*session_.lcm, session_.monitor, context, "dynamicsd", "", "wrc-dynamicsd", {});
+  std::unique_ptr<StartedService> again = ensure_service(*session_.lcm, session_.monitor, context, "dynamicsd", "",
+                                                          "wrc-dynamicsd", {}, request_.dynamics_instance);
   own_dynamics_ = again.get();
   if (again) started_.push_back(std::move(again));
 }

@@ -143,30 +143,31 @@ CommandBus::CommandBus(const Options& o, const std::string& command)
 std::unique_ptr<StartedService> ensure_service(lcm::LCM& lcm, const bus::HeartbeatMonitor& monitor,
                                                const StartContext& context, const std::string& model,
                                                const std::string& geometry_key, const std::string& executable,
-                                               std::vector<std::string> args) {
-  if (pick_service(monitor, model, geometry_key, "", true)) return nullptr;
-  if (pick_service(monitor, model, geometry_key, "", false)) {
+                                               std::vector<std::string> args, const std::string& instance) {
+  if (pick_service(monitor, model, geometry_key, instance, true)) return nullptr;
+  if (pick_service(monitor, model, geometry_key, instance, false)) {
     std::cerr << context.command << ": a " << model << " service is starting; waiting for it\n";
     if (handle_until(lcm, bus::monotonic_seconds() + context.start_timeout,
-                     [&] { return pick_service(monitor, model, geometry_key, "", true).has_value(); }))
+                     [&] { return pick_service(monitor, model, geometry_key, instance, true).has_value(); }))
       return nullptr;
   }
+  const std::string name = instance.empty() ? context.instance : instance;
   const auto path = bus::find_service_executable(executable, context.build_dir);
   if (!path) throw std::runtime_error("no " + model + " service runs and " + executable + " is not built in " +
                                       context.build_dir);
-  args.insert(args.end(), {"--instance", context.instance, "--heartbeat-period", "0.2"});
+  args.insert(args.end(), {"--instance", name, "--heartbeat-period", "0.2"});
   args.insert(args.end(), context.bus_args.begin(), context.bus_args.end());
   const std::string log = (std::filesystem::temp_directory_path() /
-                           ("wrc-" + context.command + "-" + model + "-" + context.instance + ".log"))
+                           ("wrc-" + context.command + "-" + model + "-" + name + ".log"))
                               .string();
   std::cerr << context.command << ": no " << model << " service heard; starting " << *path << " (log " << log
             << ")\n";
   auto started = std::make_unique<StartedService>(*path, args, log);
   const double t0 = bus::monotonic_seconds();
   handle_until(lcm, t0 + context.start_timeout, [&] {
-    return pick_service(monitor, model, geometry_key, context.instance, true).has_value() || !started->alive();
+    return pick_service(monitor, model, geometry_key, name, true).has_value() || !started->alive();
   });
-  if (!pick_service(monitor, model, geometry_key, context.instance, true)) {
+  if (!pick_service(monitor, model, geometry_key, name, true)) {
     const bool died = !started->alive();
     throw std::runtime_error("the started " + model + " service " +
                              (died ? std::string("exited") : "was not READY in time") + "; its log:\n" +

@@ -100,13 +100,14 @@ struct CommandBus {
   bus::HeartbeatMonitor monitor;
 };
 
-/// A READY service of model (heartbeat model name) with geometry_key, waiting for a starting one;
-/// when none, starts executable with args (plus instance, heartbeat period and bus_args), waits
+/// A READY service of model (heartbeat model name) with geometry_key (and the named instance when
+/// instance is not empty), waiting for a starting one; when none, starts executable with args
+/// (plus its instance name: instance, else context.instance; heartbeat period and bus_args), waits
 /// for READY and returns the process (null when one was already there).
 /// @throws std::runtime_error when it cannot be started or is not READY in time (with its log).
 std::unique_ptr<StartedService> ensure_service(lcm::LCM& lcm, const bus::HeartbeatMonitor& monitor,
                                                const StartContext& context, const std::string& model,
                                                const std::string& geometry_key, const std::string& executable,
-                                               std::vector<std::string> args);
+                                               std::vector<std::string> args, const std::string& instance = "");
 
 }  // namespace wrc::cli

@@ -6,6 +6,7 @@
 #include "bus/transport/channels.hpp"
 #include "bus/transport/clock.hpp"
 #include "protocol/contact/contact_query_codec.hpp"
+#include "wrc/heartbeat_t.hpp"
 
 namespace wrc::dynamics {
 
@@ -50,6 +51,26 @@ void BusContact::add_times(const bus::CallResult<contact_reply_t>& result) {
   times_.client_wakeup += seconds(result.handled_utime - result.receipt_utime);
 }
 
+std::string BusContact::spread_target() {
+  const double now = bus::monotonic_seconds();
+  if (now >= spread_refresh_) {
+    spread_refresh_ = now + kSpreadRefresh;
+    spread_over_.clear();
+    for (const bus::ServiceStatus& s : monitor_.services(now)) {
+      const heartbeat_t& hb = s.last;
+      if (hb.model != settings_.model || !s.available()) continue;
+      if (!settings_.geometry_key.empty() && hb.geometry_key != settings_.geometry_key) continue;
+      if (!model_hash_.empty() && hb.model_hash != model_hash_) continue;
+      const auto paused = paused_until_.find(hb.instance);
+      if (paused != paused_until_.end() && now < paused->second) continue;
+      if (spread_over_.empty() || spread_over_.back() != hb.instance) spread_over_.push_back(hb.instance);
+    }
+  }
+  if (spread_over_.empty()) return addressed_;
+  spread_last_ = (spread_last_ + 1) % spread_over_.size();  // the first query goes to the first instance
+  return spread_over_[spread_last_];
+}
+
 std::vector<ContactResult> BusContact::evaluate_message(const std::vector<ContactQuery>& batch) {
   contact_query_t query{};
   protocol::to_query_message(batch, query);
@@ -59,10 +80,15 @@ std::vector<ContactResult> BusContact::evaluate_message(const std::vector<Contac
   client_.set_request_channel(request_channel_);
   const double give_up = bus::monotonic_seconds() + settings_.wait;
   for (;;) {
-    if (settings_.instance.empty()) query.instance = addressed_;
+    if (settings_.instance.empty()) query.instance = spread_target();
     bus::CallResult<contact_reply_t> result = client_.call(query, settings_.policy);
     retries_ += result.attempts - 1;
     if (!result && settings_.instance.empty()) {
+      if (!query.instance.empty()) {
+        // Silent for a whole round: left out of the spreading for a while.
+        paused_until_[query.instance] = bus::monotonic_seconds() + kSilencePause;
+        spread_refresh_ = 0.0;
+      }
       // Fail-over: the same query to every READY instance by name, the first answer taken.
       addressed_.clear();
       std::vector<contact_query_t> copies;
@@ -80,27 +106,8 @@ std::vector<ContactResult> BusContact::evaluate_message(const std::vector<Contac
       }
     }
     if (result) {
-      const contact_reply_t& reply = *result.reply;
       add_times(result);
-      const std::string who = "contact model " + settings_.model + " (" + reply.instance + ")";
-      if (!settings_.geometry_key.empty() && reply.geometry_key != settings_.geometry_key)
-        throw std::runtime_error(who + " computes with geometry key " + reply.geometry_key + ", not " +
-                                 settings_.geometry_key);
-      switch (reply.status) {
-        case contact_reply_t::OK: break;
-        case contact_reply_t::OUTSIDE_MODEL: throw OutsideModelError(who + ": " + reply.message);
-        case contact_reply_t::NO_CONTACT:
-        case contact_reply_t::IMPOSSIBLE_CONFIGURATION: throw ContactConfigurationError(who + ": " + reply.message);
-        default:
-          throw std::runtime_error(who + " answered status " + std::to_string(reply.status) + ": " + reply.message);
-      }
-      if (reply.results.size() != batch.size())
-        throw std::runtime_error(who + " answered " + std::to_string(reply.results.size()) + " results for " +
-                                 std::to_string(batch.size()) + " configurations");
-      std::vector<ContactResult> out;
-      out.reserve(batch.size());
-      for (const contact_result_t& r : reply.results) out.push_back(protocol::from_result_message(r));
-      return out;
+      return take_reply(*result.reply, batch.size());
     }
     ++timeouts_;
     if (settings_.keepalive) settings_.keepalive();
@@ -111,6 +118,33 @@ std::vector<ContactResult> BusContact::evaluate_message(const std::vector<Contac
                                                       settings_.geometry_key) +
                                ")");
   }
+}
+
+std::vector<ContactResult> BusContact::take_reply(const contact_reply_t& reply, std::size_t expected) {
+  const std::string who = "contact model " + settings_.model + " (" + reply.instance + ")";
+  if (!settings_.geometry_key.empty() && reply.geometry_key != settings_.geometry_key)
+    throw std::runtime_error(who + " computes with geometry key " + reply.geometry_key + ", not " +
+                             settings_.geometry_key);
+  switch (reply.status) {
+    case contact_reply_t::OK: break;
+    case contact_reply_t::OUTSIDE_MODEL: throw OutsideModelError(who + ": " + reply.message);
+    case contact_reply_t::NO_CONTACT:
+    case contact_reply_t::IMPOSSIBLE_CONFIGURATION: throw ContactConfigurationError(who + ": " + reply.message);
+    default:
+      throw std::runtime_error(who + " answered status " + std::to_string(reply.status) + ": " + reply.message);
+  }
+  if (reply.results.size() != expected)
+    throw std::runtime_error(who + " answered " + std::to_string(reply.results.size()) + " results for " +
+                             std::to_string(expected) + " configurations");
+  if (model_hash_.empty() && !reply.model_hash.empty()) {
+    model_hash_ = reply.model_hash;  // spread only over instances computing with this model
+    spread_refresh_ = 0.0;
+  }
+  ++answered_by_[reply.instance];
+  std::vector<ContactResult> out;
+  out.reserve(expected);
+  for (const contact_result_t& r : reply.results) out.push_back(protocol::from_result_message(r));
+  return out;
 }
 
 std::string missing_service_reason(const bus::HeartbeatMonitor& monitor, const std::string& model,

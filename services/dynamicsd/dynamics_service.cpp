@@ -37,9 +37,11 @@ std::int8_t status_code(RunState s) {
 }  // namespace
 
 DynamicsService::DynamicsService(lcm::LCM& lcm, const std::string& lcm_url, const bus::ChannelNames& names,
-                                 const std::string& sender, std::function<void()> keepalive)
+                                 const std::string& instance, const std::string& sender, std::function<void()> keepalive)
     : lcm_(lcm),
       names_(names),
+      instance_(instance),
+      created_(bus::monotonic_seconds()),
       keepalive_(std::move(keepalive)),
       stamper_(sender),
       monitor_(lcm, names.name(bus::channel::kHeartbeat)),
@@ -61,6 +63,7 @@ void DynamicsService::publish(const char* base, Message& message) {
 
 void DynamicsService::on_command(const run_command_t& command) {
   if (serving_ && !serving_()) return;  // a duplicate stays passive
+  if (!command.dynamics_instance.empty() && command.dynamics_instance != instance_) return;  // for another one
   if (command.request_id <= 0 || command.request_id == last_request_id_) return;  // repeats of one command
   last_request_id_ = command.request_id;
   pending_command_ = command;  // acted on at the next step boundary (poll)
@@ -101,13 +104,28 @@ std::shared_ptr<ContactEvaluator> DynamicsService::make_contact(const std::strin
   s.policy.retries = request_.contact_retries;
   s.wait = request_.contact_wait;
   s.keepalive = keepalive_;
-  return std::make_shared<BusContact>(clients_.client(model), monitor_, names_, s);
+  auto contact = std::make_shared<BusContact>(clients_.client(model), monitor_, names_, s);
+  bus_contacts_.push_back(contact);
+  return contact;
+}
+
+void DynamicsService::add_query_instances(run_summary_t& summary) const {
+  std::map<std::string, long> answered;  // "model/instance" -> queries
+  for (const auto& contact : bus_contacts_)
+    for (const auto& [instance, queries] : contact->instance_queries()) answered[contact->model() + "/" + instance] += queries;
+  for (const auto& [name, queries] : answered) {
+    if (summary.num_query_instances == kMaxQueryInstances) break;
+    summary.query_instances.push_back(name);
+    summary.instance_queries.push_back(queries);
+    ++summary.num_query_instances;
+  }
 }
 
 void DynamicsService::start(const run_command_t& command) {
   simulation_.reset();
   summary_.reset();
   status_message_.clear();
+  bus_contacts_.clear();
   request_id_ = command.request_id;
   try {
     request_ = protocol::from_message(command);
@@ -183,6 +201,7 @@ void DynamicsService::finish() {
   wall_time_ = bus::monotonic_seconds() - wall_start_;
   run_summary_t summary = protocol::to_summary_message(*simulation_, request_.run_id, request_id_, wall_time_);
   if (summary.message.empty()) summary.message = status_message_;
+  add_query_instances(summary);
   summary_ = summary;
   publish(bus::channel::kRunSummary, *summary_);
   std::cerr << run_end_log_line(request_.run_id, simulation_->time(), simulation_->message(), wall_time_,
@@ -254,8 +273,13 @@ std::string DynamicsService::activity() const {
   return out.str();
 }
 
+bool DynamicsService::discovering(const run_command_t& command) const {
+  return command.command == run_command_t::START && command.in_process == 0 &&
+         bus::monotonic_seconds() < created_ + kInstanceDiscovery;
+}
+
 void DynamicsService::poll(double budget) {
-  if (pending_command_) {
+  if (pending_command_ && !discovering(*pending_command_)) {
     const run_command_t command = *pending_command_;
     pending_command_.reset();
     if (command.command == run_command_t::START) {

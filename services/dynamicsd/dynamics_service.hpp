@@ -17,12 +17,14 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "bus/service/heartbeat_monitor.hpp"
 #include "bus/transport/channels.hpp"
 #include "bus/transport/guarded_subscription.hpp"
 #include "bus/transport/header_stamper.hpp"
 #include "core/dynamics/wheelset_simulation.hpp"
+#include "dynamicsd/bus_contact.hpp"
 #include "dynamicsd/contact_clients.hpp"
 #include "dynamicsd/state_batches.hpp"
 #include "protocol/run/run_command_codec.hpp"
@@ -37,8 +39,18 @@ class DynamicsService {
  public:
   /// keepalive: called while a contact query waits for a (restarted) service (the heartbeat).
   /// lcm: opened at lcm_url (empty: the default bus), whose lanes carry the contact queries.
-  DynamicsService(lcm::LCM& lcm, const std::string& lcm_url, const bus::ChannelNames& names, const std::string& sender,
-                  std::function<void()> keepalive = {});
+  /// instance: this process's instance name (a command naming another dynamics_instance is ignored).
+  DynamicsService(lcm::LCM& lcm, const std::string& lcm_url, const bus::ChannelNames& names,
+                  const std::string& instance, const std::string& sender, std::function<void()> keepalive = {});
+
+  /// [-] most instances a summary names (run_summary_t::query_instances).
+  static constexpr std::int32_t kMaxQueryInstances = 64;
+  /// [s] a run over the bus starts no earlier than this after the service was created, so that
+  /// its heartbeat monitor has heard every READY contact instance the run's queries are spread
+  /// over (services beat every 0.5 s by default: two periods and a margin). A dynamics started for
+  /// one run (wrc run, wrc sweep --bus) would otherwise send its first queries to the first
+  /// instance it heard.
+  static constexpr double kInstanceDiscovery = 1.2;
   /// Acts on pending commands and swaps, then advances a running simulation for up to
   /// budget seconds of wall time (whole steps) and publishes what is due.
   void poll(double budget);
@@ -54,12 +66,16 @@ class DynamicsService {
 
  private:
   void on_command(const run_command_t& command);
+  /// Whether command is a START over the bus that waits for the instances to be heard.
+  bool discovering(const run_command_t& command) const;
   void on_select(const contact_select_t& select, std::uint64_t sender);
   void start(const run_command_t& command);
   /// A FAILED run_status_t for command's request, with reason as its message.
   void publish_refusal(const run_command_t& command, const std::string& reason);
   void finish();
   std::shared_ptr<ContactEvaluator> make_contact(const std::string& model);
+  /// Which instances answered the run's queries, and how many each, into summary.
+  void add_query_instances(run_summary_t& summary) const;
   void apply_select();
   void publish_status(bool force);
   /// progress_t of the running run: fraction of simulated time done, wall time, time remaining.
@@ -69,6 +85,8 @@ class DynamicsService {
 
   lcm::LCM& lcm_;
   bus::ChannelNames names_;
+  std::string instance_;
+  double created_;  // [s] monotonic time the service was created
   std::function<void()> keepalive_;
   std::function<bool()> serving_;
   bus::HeaderStamper stamper_;
@@ -94,6 +112,7 @@ class DynamicsService {
   std::int64_t selects_heard_ = 0;
 
   std::unique_ptr<WheelsetSimulation> simulation_;
+  std::vector<std::shared_ptr<BusContact>> bus_contacts_;  // the run's contact over the bus (its start model and swaps)
   StateBatches states_;
   protocol::RunRequest request_;
   std::int64_t request_id_ = 0;

@@ -28,7 +28,8 @@ int run(const wrc::bus::ServiceOptions& options, const wrc::bus::NoOwnOptions&) 
                                {"wrc-dynamicsd", "dynamicsd", options.instance, names.name(channel::kRunCommand)},
                                options.heartbeat_period);
   heartbeat.publish_now();  // STARTING
-  wrc::dynamics::DynamicsService service(*lcm, options.lcm_url, names, sender, [&heartbeat] { heartbeat.tick(); });
+  wrc::dynamics::DynamicsService service(*lcm, options.lcm_url, names, options.instance, sender,
+                                        [&heartbeat] { heartbeat.tick(); });
   heartbeat.set_activity_source([&service] { return service.activity(); });
   service.set_serving_check([&heartbeat] { return heartbeat.state() != wrc::heartbeat_t::DUPLICATE; });
   ServiceLoop loop(*lcm, heartbeat);

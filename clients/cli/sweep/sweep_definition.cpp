@@ -20,10 +20,12 @@ const std::vector<std::string>& run_option_keys() {
   return keys;
 }
 
-// Options a sweep sets itself, or that only the bus knows: never in a sweep's run options.
-std::vector<std::string> options_of_the_sweep() {
-  std::vector<std::string> names{"--summary", "--history", "--run-id", "--in-process"};
-  for (const OptionSpec& s : service_start_option_specs()) names.push_back(s.name);
+// Options a sweep sets itself, or (unless its runs are on the bus) that only the bus knows: never in
+// a sweep's run options.
+std::vector<std::string> options_of_the_sweep(bool bus) {
+  std::vector<std::string> names{"--summary", "--history", "--run-id", "--in-process", "--dynamics-instance"};
+  if (!bus)
+    for (const OptionSpec& s : service_start_option_specs()) names.push_back(s.name);
   return names;
 }
 
@@ -76,7 +78,8 @@ nlohmann::json SweepDefinition::to_json() const {
           {"grid", grid},
           {"run_options", run_options},
           {"extract", extract},
-          {"critical_speeds", critical_speeds}};
+          {"critical_speeds", critical_speeds},
+          {"bus", bus}};
 }
 
 SweepDefinition SweepDefinition::from_json(const nlohmann::json& j, const std::string& source) {
@@ -89,6 +92,7 @@ SweepDefinition SweepDefinition::from_json(const nlohmann::json& j, const std::s
     d.run_options = j.at("run_options").get<std::vector<std::string>>();
     d.extract = j.at("extract").get<std::vector<std::string>>();
     d.critical_speeds = j.at("critical_speeds").get<std::string>();
+    d.bus = j.value("bus", false);  // work directories written before --bus have none
     return d;
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(source + ": not a sweep definition (" + e.what() + ")");
@@ -99,12 +103,14 @@ SweepDefinition SweepDefinition::from_json(const nlohmann::json& j, const std::s
 
 std::string grid_key_unit(const std::string& key) { return grid_key(key).unit; }
 
-void check_run_options(const std::vector<std::string>& run_options, const std::vector<sweep::GridAxis>& axes) {
+void check_run_options(const std::vector<std::string>& run_options, const std::vector<sweep::GridAxis>& axes,
+                       bool bus) {
   const Options o("run", "", run_option_specs(), run_options);
-  for (const std::string& name : options_of_the_sweep())
+  for (const std::string& name : options_of_the_sweep(bus))
     if (o.has(name))
-      throw UsageError("run option " + name + ": a sweep sets it itself (every run is in-process, its results go "
-                       "into the sweep's CSV) or it is the bus's; leave it out");
+      throw UsageError("run option " + name + ": a sweep sets it itself (every run is in-process or, with --bus, on "
+                       "a dynamics of its own; its results go into the sweep's CSV) or it is the bus's (give it with "
+                       "--bus); leave it out");
   for (const sweep::GridAxis& a : axes)
     if (o.has(grid_key(a.key).option))
       throw UsageError("run option " + grid_key(a.key).option + " is also the grid key " + a.key + ": give it once");
@@ -120,9 +126,10 @@ std::vector<std::string> run_arguments(const SweepDefinition& definition, const 
 }
 
 protocol::RunRequest sweep_run_request(const std::vector<std::string>& arguments, const std::string& run_id,
-                                       std::ostream& notes) {
+                                       std::ostream& notes, bool bus) {
   std::vector<std::string> args = arguments;
-  args.insert(args.end(), {"--in-process", "--run-id", run_id});
+  if (!bus) args.push_back("--in-process");
+  args.insert(args.end(), {"--run-id", run_id});
   const Options o("run", "", run_option_specs(), args);
   return run_request_from(o, notes);
 }

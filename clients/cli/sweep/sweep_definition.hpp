@@ -27,6 +27,9 @@ struct SweepDefinition {
   std::vector<std::string> run_options;  ///< `wrc run` options every run gets (after `--`)
   std::vector<std::string> extract;      ///< groups and summary paths, as given to --extract
   std::string critical_speeds;           ///< FROM:TO:STEP [m/s] of the critical-speed scan
+  /// The runs on the bus's services (each on a wrc-dynamicsd of its own, the contact queries spread
+  /// over the READY instances of its model) instead of in-process.
+  bool bus = false;
 
   nlohmann::json to_json() const;
   /// @throws std::invalid_argument naming what is missing or wrong; source names the file.
@@ -39,18 +42,20 @@ struct SweepDefinition {
 std::string grid_key_unit(const std::string& key);
 
 /// Checks options meant for every run: `wrc run` options, none of those a sweep sets itself
-/// (--summary, --history, --run-id, --in-process: every run is in-process) or that only the bus
-/// knows (--lcm-url, --channel-prefix, ...), none that is also a grid key.
-/// @throws UsageError naming the option.
-void check_run_options(const std::vector<std::string>& run_options, const std::vector<sweep::GridAxis>& axes);
+/// (--summary, --history, --run-id, --in-process, --dynamics-instance), none that only the bus
+/// knows (--lcm-url, --channel-prefix, ...) unless the runs are on the bus, none that is also a
+/// grid key. @throws UsageError naming the option.
+void check_run_options(const std::vector<std::string>& run_options, const std::vector<sweep::GridAxis>& axes,
+                       bool bus);
 
 /// The `wrc run` arguments of the run at values (one per axis): the fixed options, then --KEY VALUE.
 std::vector<std::string> run_arguments(const SweepDefinition& definition, const std::vector<std::string>& values);
 
-/// The run request of those arguments, parsed by `wrc run`'s option table, in-process, named run_id;
-/// what `wrc run` would print about it (a lateral load set to 0 on a track) goes to notes.
-/// @throws UsageError naming the option for a bad value, std::invalid_argument for an invalid run.
+/// The run request of those arguments, parsed by `wrc run`'s option table, in-process (or on the
+/// bus), named run_id; what `wrc run` would print about it (a lateral load set to 0 on a track)
+/// goes to notes. @throws UsageError naming the option for a bad value, std::invalid_argument for
+/// an invalid run.
 protocol::RunRequest sweep_run_request(const std::vector<std::string>& arguments, const std::string& run_id,
-                                       std::ostream& notes);
+                                       std::ostream& notes, bool bus = false);
 
 }  // namespace wrc::cli

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cli/sweep/sweep_results.hpp"
 
+#include <unistd.h>
+
 #include <charconv>
 #include <chrono>
 #include <iostream>
 #include <sstream>
 
 #include "cli/options.hpp"
+#include "cli/run_options.hpp"
 #include "cli/run_outputs.hpp"
+#include "cli/run_session.hpp"
 #include "cli/speed_scan_option.hpp"
 #include "cli/sweep/in_process_run.hpp"
 #include "core/dynamics/linear_stability.hpp"
@@ -19,8 +23,29 @@
 namespace wrc::cli {
 namespace {
 
+// A point's run on the bus: on a wrc-dynamicsd of its own (named after this process, started for
+// the run and stopped after it), its contact from the services on the bus (their queries spread
+// over the READY instances of the model).
+run_summary_t run_on_bus(const std::vector<std::string>& arguments, protocol::RunRequest request) {
+  const Options o("run", "", run_option_specs(), arguments);
+  request.dynamics_instance = "sweep-" + std::to_string(::getpid());
+  RunSession session(o, request);
+  session.start_services();
+  return session.run();
+}
+
 constexpr const char* kCriticalSpeed = "critical_speed";
 constexpr const char* kCriticalFrequency = "critical_frequency";
+// The group and column of the instances that answered a run's queries over the bus:
+// "spline/a=462 spline/b=462" (model/instance=queries, space-separated; empty in-process).
+constexpr const char* kInstances = "instances";
+constexpr const char* kQueryInstances = "query_instances";
+
+std::string instances_text(const nlohmann::json& instances) {
+  std::string text;
+  for (const auto& [name, queries] : instances.items()) text += (text.empty() ? "" : " ") + name + "=" + queries.dump();
+  return text;
+}
 
 // The keys of the summary's final_state in the order cli/run_outputs.cpp writes them, with their
 // units (those of the same values in the history CSV). result_columns() checks each against a summary.
@@ -130,7 +155,7 @@ std::pair<std::string, std::string> critical_speed_of(const protocol::RunRequest
 std::vector<double> critical_speed_scan(const std::string& text) { return parse_speed_scan(text, "--critical-speeds"); }
 
 const std::vector<std::string>& extract_groups() {
-  static const std::vector<std::string> groups{"final", "maxima", "counters", "critical_speed"};
+  static const std::vector<std::string> groups{"final", "maxima", "counters", "critical_speed", kInstances};
   return groups;
 }
 
@@ -153,6 +178,8 @@ std::vector<ResultColumn> result_columns(const std::vector<std::string>& extract
     } else if (item == kCriticalSpeed) {
       paths.push_back(kCriticalSpeed);
       paths.push_back(kCriticalFrequency);
+    } else if (item == kInstances) {
+      paths.push_back(kQueryInstances);
     } else {
       const std::string top = split_path(item).empty() ? "" : split_path(item).front();
       const nlohmann::json* leaf = at_path(summary, item);
@@ -171,7 +198,7 @@ std::vector<ResultColumn> result_columns(const std::vector<std::string>& extract
   }
   std::vector<ResultColumn> columns;
   for (const std::string& p : paths) {
-    ResultColumn c{p, p == kCriticalSpeed ? "m/s" : p == kCriticalFrequency ? "Hz" : unit_of(p, summary)};
+    ResultColumn c{p, p == kCriticalSpeed ? "m/s" : p == kCriticalFrequency ? "Hz" : p == kQueryInstances ? "-" : unit_of(p, summary)};
     const bool repeated = std::any_of(columns.begin(), columns.end(), [&](const ResultColumn& o) { return o.path == p; });
     if (repeated) throw UsageError("--extract: " + p + " comes twice");
     columns.push_back(c);
@@ -194,12 +221,13 @@ sweep::SweepRow run_sweep_point(const SweepDefinition& definition, const std::ve
   }
   std::vector<std::string> errors;
   try {
+    const std::vector<std::string> arguments = run_arguments(definition, values);
     const protocol::RunRequest request =
-        sweep_run_request(run_arguments(definition, values), "sweep-point-" + std::to_string(point), std::cerr);
+        sweep_run_request(arguments, "sweep-point-" + std::to_string(point), std::cerr, definition.bus);
     nlohmann::json summary;
     row.status = "finished";
     if (wants_run) {
-      const run_summary_t s = run_in_process(request);
+      const run_summary_t s = definition.bus ? run_on_bus(arguments, request) : run_in_process(request);
       summary = summary_json(s, request, geometry_key(request.geometry));
       row.status = protocol::run_state_name(s.state);
       if (s.state != run_status_t::FINISHED) errors.push_back(s.message.empty() ? "the run did not finish" : s.message);
@@ -218,6 +246,8 @@ sweep::SweepRow run_sweep_point(const SweepDefinition& definition, const std::ve
         row.results[i] = critical.first;
       } else if (columns[i].path == kCriticalFrequency) {
         row.results[i] = critical.second;
+      } else if (columns[i].path == kQueryInstances) {
+        row.results[i] = instances_text(summary.value(kQueryInstances, nlohmann::json::object()));
       } else if (const nlohmann::json* v = at_path(summary, columns[i].path)) {
         row.results[i] = leaf_text(*v);
       }

@@ -11,6 +11,12 @@
 
 namespace wrc::bus {
 
+void check_instance_name(const std::string& option, const std::string& name) {
+  bool ok = !name.empty() && name.size() <= 24;
+  for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-');
+  if (!ok) throw std::invalid_argument(option + ": '" + name + "' must be 1-24 letters, digits, '_' or '-'");
+}
+
 namespace {
 double parse_period(const std::string& text) {
   const std::optional<double> value = finite_number(text);
@@ -20,14 +26,6 @@ double parse_period(const std::string& text) {
   return *value;
 }
 
-void check_instance(const std::string& name) {
-  bool ok = !name.empty() && name.size() <= 24;
-  for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-');
-  if (!ok) {
-    throw std::invalid_argument("--instance: '" + name +
-                                "' must be 1-24 letters, digits, '_' or '-'");
-  }
-}
 
 /// The options every service shares, in the order --help lists them.
 std::vector<OptionSpec> service_option_specs() {
@@ -64,7 +62,7 @@ ServiceOptions ServiceOptions::parse(int argc, const char* const* argv) {
   options.bus_key = parsed.text("--bus-key");
   if (parsed.has("--instance")) {
     options.instance = parsed.text("--instance");
-    check_instance(options.instance);
+    check_instance_name("--instance", options.instance);
   }
   if (parsed.has("--heartbeat-period")) options.heartbeat_period = parse_period(parsed.text("--heartbeat-period"));
   options.rest = parsed.passed_on();

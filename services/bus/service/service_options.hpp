@@ -13,6 +13,10 @@
 
 namespace wrc::bus {
 
+/// Checks an instance name given to option: 1-24 letters, digits, '_' or '-'; throws
+/// std::invalid_argument naming option and the name otherwise.
+void check_instance_name(const std::string& option, const std::string& name);
+
 /// Parsed common service options.
 struct ServiceOptions {
   std::string lcm_url;           ///< LCM URL; empty = LCM's default (or $LCM_DEFAULT_URL)

@@ -130,6 +130,7 @@ void visit_strings(wrc::run_command_t& m, const StringVisitor& f) {
   f("run_id", m.run_id, kMaxIdBytes, kId);
   f("model", m.model, kMaxNameBytes, kId);
   f("instance", m.instance, kMaxNameBytes, kId);
+  f("dynamics_instance", m.dynamics_instance, kMaxNameBytes, kId);
   f("geometry_key", m.geometry_key, kMaxHashBytes, kId);
   visit_track(m.track, f);
   visit_all("scheduled_swap_models[]", m.scheduled_swap_models, kMaxNameBytes, f);
@@ -152,6 +153,7 @@ void visit_strings(wrc::run_summary_t& m, const StringVisitor& f) {
   f("stats.header.sender", m.stats.header.sender, kMaxIdBytes, kId);
   f("stats.run_id", m.stats.run_id, kMaxIdBytes, kId);
   visit_all("swap_models[]", m.swap_models, kMaxNameBytes, f);
+  visit_all("query_instances[]", m.query_instances, kMaxIdBytes, f);
 }
 
 void visit_strings(wrc::spline_model_t& m, const StringVisitor& f) {

@@ -57,6 +57,7 @@ run_command_t to_message(const RunRequest& r) {
   m.command = run_command_t::START;
   m.model = r.model;
   m.instance = r.instance;
+  m.dynamics_instance = r.dynamics_instance;
   m.track = to_message(r.geometry);
   m.in_process = r.in_process ? 1 : 0;
   to_message_fields(run_request_table(), r, run_command_fields(), m);
@@ -78,6 +79,7 @@ RunRequest from_message(const run_command_t& m) {
   r.model = m.model;
   contact_model_entry(r.model);  // throws for an unknown model, listing the known ones
   r.instance = m.instance;
+  r.dynamics_instance = m.dynamics_instance;
   r.geometry = from_message(m.track);
   r.in_process = m.in_process == 1;
   from_message_fields(run_request_table(), m, run_command_fields(), r);

@@ -29,7 +29,8 @@ struct ScheduledSwap {
 struct RunRequest {
   std::string run_id;
   std::string model;
-  std::string instance;
+  std::string instance;           ///< contact model instance (empty: spread over every READY one)
+  std::string dynamics_instance;  ///< wrc-dynamicsd instance to run it (empty: any that hears it)
   GeometrySpec geometry;
   bool in_process = false;
   RunSpec spec;

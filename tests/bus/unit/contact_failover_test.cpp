@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -35,9 +36,10 @@ constexpr const char* kKey = "geometry-key-of-the-run";
 
 // A heartbeat of model/instance in state, signed by a process of its own (nonce).
 void publish_heartbeat(lcm::LCM& lcm, const std::string& model, const std::string& instance, std::int8_t state,
-                       std::uint64_t nonce, const std::string& geometry_key = kKey) {
+                       std::uint64_t nonce, const std::string& geometry_key = kKey, const std::string& model_hash = "") {
   heartbeat_t hb{};
   hb.model = model;
+  hb.model_hash = model_hash;
   hb.instance = instance;
   hb.state = state;
   hb.period = 10.0;  // alive for the whole test
@@ -49,14 +51,16 @@ void publish_heartbeat(lcm::LCM& lcm, const std::string& model, const std::strin
   lcm.publish("HEARTBEAT", bytes.data(), static_cast<unsigned>(bytes.size()));
 }
 
-// Instance "b" of onepoint: answers what the leader rule gives it, with one result per
-// configuration whose normal force is the configuration's lateral shift (so an answer shows
-// which query it belongs to).
+// Instance name (default "b") of onepoint: answers what the leader rule gives it, with one result
+// per configuration whose normal force is the configuration's lateral shift (so an answer shows
+// which query it belongs to), and its model hash.
 class Responder {
  public:
-  explicit Responder(lcm::LCM& lcm)
+  explicit Responder(lcm::LCM& lcm, std::string name = "b", std::string model_hash = "")
       : lcm_(lcm),
-        filter_(lcm, "HEARTBEAT", "onepoint", "b"),
+        name_(std::move(name)),
+        model_hash_(std::move(model_hash)),
+        filter_(lcm, "HEARTBEAT", "onepoint", name_),
         queries_(lcm, "CONTACT_QUERY.onepoint", "test responder",
                  [this](const contact_query_t& q, const bus::ReceivedMessage&) { on_query(q); }) {}
   int unaddressed_seen = 0;
@@ -70,7 +74,8 @@ class Responder {
     r.request_id = q.request_id;
     r.status = contact_reply_t::OK;
     r.model = "onepoint";
-    r.instance = "b";
+    r.instance = name_;
+    r.model_hash = model_hash_;
     r.geometry_key = q.geometry_key;
     r.num_configurations = q.num_configurations;
     r.results.resize(static_cast<std::size_t>(q.num_configurations));
@@ -83,6 +88,8 @@ class Responder {
     bus::publish_signed(lcm_, q.reply_channel, r);
   }
   lcm::LCM& lcm_;
+  std::string name_;
+  std::string model_hash_;
   contactd::InstanceFilter filter_;
   bus::GuardedSubscription<contact_query_t> queries_;
 };
@@ -109,9 +116,10 @@ std::vector<ContactQuery> one_query(double y) {
   return batch;
 }
 
-// A READY "a" that never answers (the leader by name), and "b" that does: the first query costs
-// one round, goes to every READY instance by name and is answered by b; later queries are
-// addressed to b and answered at once. Without the fail-over no unaddressed query is answered.
+// A READY "a" that never answers (the leader by name), and "b" that does: the first query, spread
+// to a, costs one round, goes to every READY instance by name and is answered by b; a is left out
+// of the spreading since, so later queries go to b and are answered at once. Without the
+// fail-over no unaddressed query is answered.
 TEST(ContactFailover, ASilentLeaderCostsOneRoundNotTheRun) {
   FailoverBus bus;
   Responder b(bus.lcm);
@@ -136,7 +144,7 @@ TEST(ContactFailover, ASilentLeaderCostsOneRoundNotTheRun) {
   ASSERT_EQ(first[0].patches.size(), 1u);
   EXPECT_EQ(first[0].patches[0].normal_force, 0.002);
   EXPECT_EQ(contact.failovers(), 1);
-  EXPECT_EQ(contact.timeouts(), 1);  // the unaddressed round
+  EXPECT_EQ(contact.timeouts(), 1);  // the round addressed to a
   EXPECT_EQ(contact.addressed_instance(), "b");
 
   for (int k = 1; k <= 20; ++k) {
@@ -147,8 +155,38 @@ TEST(ContactFailover, ASilentLeaderCostsOneRoundNotTheRun) {
   }
   EXPECT_EQ(contact.failovers(), 1);
   EXPECT_EQ(contact.timeouts(), 1);
-  EXPECT_EQ(contact.retries(), 1);  // the unaddressed round's re-send only
+  EXPECT_EQ(contact.retries(), 1);  // the silent round's re-send only
   EXPECT_EQ(b.answered, 21);
+  EXPECT_EQ(contact.instance_queries(), (std::map<std::string, long>{{"b", 21}}));
+}
+
+// Two READY instances that answer: the queries go to them in turn, every answer the one to its own
+// query, and each counted; a third READY instance computing with another model hash than the first
+// answer's (a spline model of another fit) is never asked.
+TEST(ContactFailover, QueriesAreSpreadOverTheReadyInstancesOfOneModelHash) {
+  FailoverBus bus;
+  Responder b(bus.lcm, "b", "hash-1");
+  Responder c(bus.lcm, "c", "hash-1");
+  Responder d(bus.lcm, "d", "hash-2");
+  publish_heartbeat(bus.lcm, "onepoint", "b", heartbeat_t::READY, 301, kKey, "hash-1");
+  publish_heartbeat(bus.lcm, "onepoint", "c", heartbeat_t::READY, 302, kKey, "hash-1");
+  publish_heartbeat(bus.lcm, "onepoint", "d", heartbeat_t::READY, 303, kKey, "hash-2");
+  bus::test::drain(bus.lcm);
+  BusContact contact(bus.client, bus.monitor, bus.names, bus.settings());
+  for (int k = 0; k < 30; ++k) {
+    const double y = 1e-4 * (k + 1);
+    const std::vector<ContactResult> r = contact.evaluate(one_query(y));
+    ASSERT_EQ(r.size(), 1u);
+    EXPECT_EQ(r[0].patches[0].normal_force, y);
+  }
+  EXPECT_EQ(contact.timeouts(), 0);
+  EXPECT_EQ(contact.failovers(), 0);
+  // The first query goes to b (the first by name), so hash-1 it is.
+  EXPECT_EQ(d.answered, 0) << "d computes with another model hash";
+  EXPECT_EQ(b.answered, 15);
+  EXPECT_EQ(c.answered, 15);
+  EXPECT_EQ(contact.instance_queries(), (std::map<std::string, long>{{"b", 15}, {"c", 15}}));
+  EXPECT_EQ(b.answered + c.answered + d.answered, 30);
 }
 
 // Nobody answers: every round fails over to the READY instances and the wait ends in an error

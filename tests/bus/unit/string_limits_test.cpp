@@ -92,13 +92,16 @@ TEST(StringLimits, EveryStringOfEveryMessageIsBoundedAtDecoding) {
   command.num_scheduled_swaps = 1;
   command.scheduled_swap_times = {1.0};
   command.scheduled_swap_models = {"spline"};
-  expect_every_string_bounded(command, 10);
+  expect_every_string_bounded(command, 11);
   expect_every_string_bounded(wrc::run_status_t{}, 5);
   wrc::run_summary_t summary{};
   summary.num_swaps = 1;
   summary.swap_times = {1.0};
   summary.swap_models = {"spline"};
-  expect_every_string_bounded(summary, 8);
+  summary.num_query_instances = 1;
+  summary.query_instances = {"spline/a"};
+  summary.instance_queries = {924};
+  expect_every_string_bounded(summary, 9);
   wrc::spline_model_t model{};
   model.num_functions = 1;
   model.function_names = {"z"};

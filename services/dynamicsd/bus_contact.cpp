@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "dynamicsd/bus_contact.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "bus/transport/channels.hpp"
@@ -51,24 +52,45 @@ void BusContact::add_times(const bus::CallResult<contact_reply_t>& result) {
   times_.client_wakeup += seconds(result.handled_utime - result.receipt_utime);
 }
 
-std::string BusContact::spread_target() {
-  const double now = bus::monotonic_seconds();
-  if (now >= spread_refresh_) {
-    spread_refresh_ = now + kSpreadRefresh;
-    spread_over_.clear();
-    for (const bus::ServiceStatus& s : monitor_.services(now)) {
-      const heartbeat_t& hb = s.last;
-      if (hb.model != settings_.model || !s.available()) continue;
-      if (!settings_.geometry_key.empty() && hb.geometry_key != settings_.geometry_key) continue;
-      if (!model_hash_.empty() && hb.model_hash != model_hash_) continue;
-      const auto paused = paused_until_.find(hb.instance);
-      if (paused != paused_until_.end() && now < paused->second) continue;
-      if (spread_over_.empty() || spread_over_.back() != hb.instance) spread_over_.push_back(hb.instance);
+void BusContact::refresh_instances(double now) {
+  if (now < refresh_at_) return;
+  refresh_at_ = now + kSpreadRefresh;
+  std::vector<std::string> ready, turn;
+  candidates_.clear();
+  for (const bus::ServiceStatus& s : monitor_.services(now)) {
+    const heartbeat_t& hb = s.last;
+    if (hb.model != settings_.model || !s.available()) continue;
+    if (!settings_.geometry_key.empty() && hb.geometry_key != settings_.geometry_key) continue;
+    if (!model_hash_.empty() && hb.model_hash != model_hash_) continue;
+    const auto paused = paused_until_.find(hb.instance);
+    if (paused != paused_until_.end() && now < paused->second) continue;
+    if (!ready.empty() && ready.back() == hb.instance) continue;  // two processes of one name
+    ready.push_back(hb.instance);
+    if (std::find(turn_.begin(), turn_.end(), hb.instance) != turn_.end()) {
+      turn.push_back(hb.instance);
+    } else {
+      candidates_.push_back(hb.instance);
     }
   }
-  if (spread_over_.empty()) return addressed_;
-  spread_last_ = (spread_last_ + 1) % spread_over_.size();  // the first query goes to the first instance
-  return spread_over_[spread_last_];
+  turn_ = std::move(turn);
+}
+
+void BusContact::pause(const std::string& instance) {
+  paused_until_[instance] = bus::monotonic_seconds() + kProbePause;
+  refresh_at_ = 0.0;
+  turn_.erase(std::remove(turn_.begin(), turn_.end(), instance), turn_.end());
+}
+
+BusContact::Target BusContact::spread_target() {
+  const double now = bus::monotonic_seconds();
+  refresh_instances(now);
+  if (turn_.empty()) return {candidates_.empty() ? addressed_ : candidates_.front(), false};
+  if (!candidates_.empty() && now >= next_probe_) {
+    next_probe_ = now + kProbeInterval;
+    return {candidates_.front(), true};
+  }
+  turn_last_ = (turn_last_ + 1) % turn_.size();
+  return {turn_[turn_last_], false};
 }
 
 std::vector<ContactResult> BusContact::evaluate_message(const std::vector<ContactQuery>& batch) {
@@ -80,15 +102,25 @@ std::vector<ContactResult> BusContact::evaluate_message(const std::vector<Contac
   client_.set_request_channel(request_channel_);
   const double give_up = bus::monotonic_seconds() + settings_.wait;
   for (;;) {
-    if (settings_.instance.empty()) query.instance = spread_target();
+    if (settings_.instance.empty()) {
+      const Target target = spread_target();
+      query.instance = target.instance;
+      if (target.probe) {
+        bus::CallResult<contact_reply_t> probed = client_.call(query, {kProbeTimeout, 0});
+        if (probed) {
+          add_times(probed);
+          return take_reply(*probed.reply, batch.size());
+        }
+        ++failed_probes_;
+        ++timeouts_;  // a short round
+        pause(target.instance);
+        query.instance = spread_target().instance;  // the turn, at once
+      }
+    }
     bus::CallResult<contact_reply_t> result = client_.call(query, settings_.policy);
     retries_ += result.attempts - 1;
     if (!result && settings_.instance.empty()) {
-      if (!query.instance.empty()) {
-        // Silent for a whole round: left out of the spreading for a while.
-        paused_until_[query.instance] = bus::monotonic_seconds() + kSilencePause;
-        spread_refresh_ = 0.0;
-      }
+      if (!query.instance.empty()) pause(query.instance);  // silent for a whole round
       // Fail-over: the same query to every READY instance by name, the first answer taken.
       addressed_.clear();
       std::vector<contact_query_t> copies;
@@ -137,8 +169,12 @@ std::vector<ContactResult> BusContact::take_reply(const contact_reply_t& reply, 
     throw std::runtime_error(who + " answered " + std::to_string(reply.results.size()) + " results for " +
                              std::to_string(expected) + " configurations");
   if (model_hash_.empty() && !reply.model_hash.empty()) {
-    model_hash_ = reply.model_hash;  // spread only over instances computing with this model
-    spread_refresh_ = 0.0;
+    model_hash_ = reply.model_hash;  // only instances computing with this model are asked
+    refresh_at_ = 0.0;
+  }
+  if (!reply.instance.empty() && std::find(turn_.begin(), turn_.end(), reply.instance) == turn_.end()) {
+    turn_.insert(std::upper_bound(turn_.begin(), turn_.end(), reply.instance), reply.instance);
+    candidates_.erase(std::remove(candidates_.begin(), candidates_.end(), reply.instance), candidates_.end());
   }
   ++answered_by_[reply.instance];
   std::vector<ContactResult> out;

@@ -7,20 +7,22 @@
 /// and the launcher restarts it), asked again until the wait limit: a deterministic service gives
 /// the same answer, so a run with a restarted service ends as an undisturbed one.
 ///
-/// Spreading: unless the run names an instance, the queries go in turn to every READY instance of
-/// the model with the run's geometry key and the model hash of the first answer (so a spline
-/// model of another fit is never mixed in), each addressed by name, so that runs on several hosts'
-/// instances share them (a sweep's runs as well as one run's queries). The list is read from the
-/// heartbeats at most every kSpreadRefresh; with none READY a query goes unaddressed (the service
-/// side's leader rule picks who answers).
+/// Spreading: unless the run names an instance, the queries go in turn to every instance of the
+/// model that has answered this client (each addressed by name), so that the instances on several
+/// hosts share a run's and a sweep's load. An instance that beats READY with the run's geometry
+/// key and the model hash of the first answer (a spline model of another fit is never mixed in)
+/// but has not answered yet is probed: at most one query every kProbeInterval goes to it with a
+/// short timeout (kProbeTimeout, no re-send); an answer adds it to the turn, silence leaves it out
+/// for kProbePause and the query goes to the turn at once. So a flood of forged READY heartbeats
+/// (a key holder's) costs at most kProbeTimeout every kProbeInterval, never a round. With nobody
+/// in the turn yet a query goes to the first READY instance (or, with none READY, unaddressed: the
+/// service side's leader rule picks who answers).
 ///
 /// Fail-over: a query that gets no reply in a whole round is sent at once to every READY instance
 /// of the model with the run's geometry key, each addressed by name, and the first answer is
-/// taken; an instance that failed a round is left out of the spreading for kSilencePause, and
-/// the one that answered the fail-over is asked when none else is left. So an instance that
-/// claims to be READY and never answers (hung, or a key holder's forged heartbeat) costs one round
-/// every kSilencePause, not the run. Every instance with the same geometry key and model hash
-/// computes the same answer, so the run is the same wherever its queries went.
+/// taken; the silent instance leaves the turn for kProbePause. So an instance that stops answering
+/// (hung, its host cut off) costs one round, not the run. Every instance with the same geometry
+/// key and model hash computes the same answer, so the run is the same wherever its queries went.
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -65,23 +67,38 @@ class BusContact final : public ContactEvaluator {
   long timeouts() const override { return timeouts_; }
   long failovers() const override { return failovers_; }
   QueryTimes query_times() const override { return times_; }
-  /// The instance that answered the last fail-over (asked when no other is left to spread over).
+  /// The instance that answered the last fail-over.
   const std::string& addressed_instance() const { return addressed_; }
   /// [-] queries answered, per answering instance's name.
   const std::map<std::string, long>& instance_queries() const { return answered_by_; }
+  /// [-] probes of READY instances that did not answer.
+  long failed_probes() const { return failed_probes_; }
 
-  /// [s] how often the list of instances to spread over is read from the heartbeats.
+  /// [s] how often the READY instances are read from the heartbeats.
   static constexpr double kSpreadRefresh = 0.25;
-  /// [s] how long an instance that failed a round is left out of the spreading.
-  static constexpr double kSilencePause = 5.0;
+  /// [s] at most one probe of an instance that has not answered yet per this time.
+  static constexpr double kProbeInterval = 0.25;
+  /// [s] how long a probe waits for its answer (a contact round trip takes 0.05-0.2 ms on one host).
+  static constexpr double kProbeTimeout = 0.02;
+  /// [s] how long an instance that failed a probe or a round is left out.
+  static constexpr double kProbePause = 10.0;
 
  private:
   /// Adds where an answered call's time went to times_.
   void add_times(const bus::CallResult<contact_reply_t>& result);
   /// One message for queries that share formulation, material, grid and speed.
   std::vector<ContactResult> evaluate_message(const std::vector<ContactQuery>& batch);
-  /// The instance the next query goes to (empty: unaddressed).
-  std::string spread_target();
+  /// Where the next query goes.
+  struct Target {
+    std::string instance;  ///< empty: unaddressed
+    bool probe = false;    ///< an instance that has not answered yet
+  };
+  Target spread_target();
+  /// Reads the READY instances again when kSpreadRefresh has passed: the turn keeps those still
+  /// READY, the candidates are the others with the run's key and model hash, not paused.
+  void refresh_instances(double now);
+  /// Leaves instance out (of the turn and the candidates) for kProbePause.
+  void pause(const std::string& instance);
   /// The result of an answered call, checked (geometry key, status, size), the instance counted.
   std::vector<ContactResult> take_reply(const contact_reply_t& reply, std::size_t expected);
 
@@ -94,12 +111,15 @@ class BusContact final : public ContactEvaluator {
   long failovers_ = 0;
   QueryTimes times_;
   std::string addressed_;  ///< instance that answered the last fail-over
-  std::string model_hash_;  ///< of the first answer: only instances with this hash are spread over
-  std::vector<std::string> spread_over_;  ///< READY instances with the run's key and model hash
-  std::size_t spread_last_ = static_cast<std::size_t>(-1);  ///< index into spread_over_ of the last query's instance
-  double spread_refresh_ = 0.0;           ///< [s] monotonic time spread_over_ is read again
-  std::map<std::string, double> paused_until_;  ///< [s] instances left out after a silent round
+  std::string model_hash_;  ///< of the first answer: only instances with this hash are asked
+  std::vector<std::string> turn_;        ///< READY instances that have answered, by name
+  std::vector<std::string> candidates_;  ///< READY instances with the key and hash that have not
+  std::size_t turn_last_ = static_cast<std::size_t>(-1);  ///< index into turn_ of the last query's instance
+  double refresh_at_ = 0.0;   ///< [s] monotonic time the instances are read again
+  double next_probe_ = 0.0;   ///< [s] monotonic time before which no probe is sent
+  std::map<std::string, double> paused_until_;  ///< [s] instances left out after a silent probe or round
   std::map<std::string, long> answered_by_;     ///< [-] answered queries per instance
+  long failed_probes_ = 0;
 };
 
 

@@ -4,7 +4,7 @@
 # service `a`, h2 a spline service `b` (its model in pieces from h1: no shared folder), h3 a sweep of
 # 8 runs on the bus (`wrc sweep --bus --jobs 4`, each run on a wrc-dynamicsd of its own). Then:
 # - every run finished, and its queries went to both instances (the sweep's `instances` column,
-#   from the run summaries), in counts that differ by at most one and add up to its queries;
+#   from the run summaries), in counts that differ by at most two and add up to its queries;
 # - h3's `wrc status` counts queries handled by both a and b;
 # - every run ends where the same sweep in-process ends, every digit of the final state.
 #   usage: clients/lib/netns.sh tests/hosts/load_shared_test.sh BUILD_DIR [T_END]
@@ -42,7 +42,7 @@ paste -d' ' <(column query_instances "$work/bus.csv") <(column counters.contact_
   awk '{ a = b = 0
          for (i = 1; i < NF; i++) { split($i, p, "="); if (p[1] == "spline/a") a = p[2]; else if (p[1] == "spline/b") b = p[2]; else bad = 1 }
          d = a - b; if (d < 0) d = -d
-         if (bad || a == 0 || b == 0 || d > 1 || a + b != $NF) { print "load shared: run " NR ": " $0 " (spline/a=A spline/b=B queries)"; fail = 1 } }
+         if (bad || a == 0 || b == 0 || d > 2 || a + b != $NF) { print "load shared: run " NR ": " $0 " (spline/a=A spline/b=B queries)"; fail = 1 } }
        END { exit fail }' || exit 1
 for key in y z roll yaw y_dot yaw_dot; do
   if ! diff <(column "final_state.$key" "$work/bus.csv") <(column "final_state.$key" "$work/local.csv") >/dev/null; then

@@ -152,8 +152,20 @@ class InProcessComparisonTest : public BusTest {
                                       << other->second.dump();
       ++compared;
     }
-    for (const auto& [key, value] : b)
+    // Who answered the queries: over the bus every answered query is counted for its instance; in
+    // process nobody was asked.
+    const std::string instances = "query_instances.";
+    long counted = 0;
+    for (const auto& [key, value] : b) {
+      if (key.rfind(instances, 0) == 0) {
+        EXPECT_EQ(key.substr(instances.size(), model.size() + 1), model + "/") << key;
+        counted += value.get<long>();
+        continue;
+      }
       if (!a.count(key) && !not_compared.count(key)) ADD_FAILURE() << model << ": " << key << " only in the bus summary";
+    }
+    EXPECT_EQ(counted, bus["counters"]["contact_queries"].get<long>()) << model << ": queries counted per instance";
+    for (const auto& [key, value] : a) EXPECT_NE(key.rfind(instances, 0), 0u) << model << ": " << key << " in process";
     EXPECT_GT(compared, 50) << model;  // final state, counters, parameters
     EXPECT_GT(local["counters"]["contact_queries"].get<long>(), 10) << model;
     expect_query_times(model, local, bus);

@@ -622,10 +622,13 @@ class KilledDynamicsTest : public DynamicsServiceTest {
   // (`wrc run` says why, and what it did in its log line `recovery`), ending where the first
   // does in every state and counter.
   void expect_same_run_after_the_kill(const std::string& recovery) {
-    const nlohmann::json clean = run(run_args("multipoint", 10.0, temp_path("clean.json")), "clean");
+    // 30 s of simulated time: about 3 s of wall time over the bus, so that the run is still going
+    // when the statuses (twice a second) say it is past t = 1 s and the dynamics is killed.
+    constexpr double kSimulated = 30.0;
+    const nlohmann::json clean = run(run_args("multipoint", kSimulated, temp_path("clean.json")), "clean");
     ASSERT_EQ(clean["state"], "finished") << clean.dump();
     EXPECT_EQ(clean["run_resends"], 0);
-    const std::vector<std::string> args = run_args("multipoint", 10.0, temp_path("killed.json"));
+    const std::vector<std::string> args = run_args("multipoint", kSimulated, temp_path("killed.json"));
     const std::string log = temp_path("killed.log");
     ChildProcess cli(WRC_CLI_PATH, args, log);
     ASSERT_TRUE(wait_running_past(run_id(temp_path("killed.json")), 1.0, kRunDeadline)) << read_text(log);

@@ -130,6 +130,7 @@ const run_summary_t& RunSession::run() {
       run_command_t stop{};
       stop.request_id = command.request_id + 1;
       stop.run_id = run_id;
+      stop.dynamics_instance = request_.dynamics_instance;
       stop.command = run_command_t::STOP;
       send(stop);
       stop_sent = true;

@@ -55,24 +55,47 @@ void BusContact::add_times(const bus::CallResult<contact_reply_t>& result) {
 void BusContact::refresh_instances(double now) {
   if (now < refresh_at_) return;
   refresh_at_ = now + kSpreadRefresh;
-  std::vector<std::string> ready, turn;
+  std::vector<std::string> turn;
   candidates_.clear();
+  for (const std::string& name : ready_instances(now)) {
+    const auto paused = paused_until_.find(name);
+    if (paused != paused_until_.end() && now < paused->second) continue;
+    if (std::find(turn_.begin(), turn_.end(), name) != turn_.end()) {
+      turn.push_back(name);
+    } else {
+      candidates_.push_back(name);
+    }
+  }
+  turn_ = std::move(turn);
+}
+
+std::vector<std::string> BusContact::ready_instances(double now) const {
+  std::vector<std::string> names;
   for (const bus::ServiceStatus& s : monitor_.services(now)) {
     const heartbeat_t& hb = s.last;
     if (hb.model != settings_.model || !s.available()) continue;
     if (!settings_.geometry_key.empty() && hb.geometry_key != settings_.geometry_key) continue;
     if (!model_hash_.empty() && hb.model_hash != model_hash_) continue;
-    const auto paused = paused_until_.find(hb.instance);
-    if (paused != paused_until_.end() && now < paused->second) continue;
-    if (!ready.empty() && ready.back() == hb.instance) continue;  // two processes of one name
-    ready.push_back(hb.instance);
-    if (std::find(turn_.begin(), turn_.end(), hb.instance) != turn_.end()) {
-      turn.push_back(hb.instance);
-    } else {
-      candidates_.push_back(hb.instance);
-    }
+    if (names.empty() || names.back() != hb.instance) names.push_back(hb.instance);
   }
-  turn_ = std::move(turn);
+  return names;
+}
+
+bus::CallResult<contact_reply_t> BusContact::ask_all(const contact_query_t& query,
+                                                     const std::vector<std::string>& instances) {
+  std::vector<contact_query_t> copies(instances.size(), query);
+  for (std::size_t k = 0; k < instances.size(); ++k) copies[k].instance = instances[k];
+  bus::CallResult<contact_reply_t> result = client_.call_any(copies.data(), copies.size(), settings_.policy);
+  retries_ += result.attempts - 1;
+  return result;
+}
+
+bool BusContact::of_another_model(const bus::CallResult<contact_reply_t>& result) {
+  if (model_hash_.empty() || result.reply->model_hash == model_hash_) return false;
+  // Computed with another model (another spline fit): not an answer of this run's model.
+  ++other_model_answers_;
+  pause(result.reply->instance);
+  return true;
 }
 
 void BusContact::pause(const std::string& instance) {
@@ -84,7 +107,7 @@ void BusContact::pause(const std::string& instance) {
 BusContact::Target BusContact::spread_target() {
   const double now = bus::monotonic_seconds();
   refresh_instances(now);
-  if (turn_.empty()) return {candidates_.empty() ? addressed_ : candidates_.front(), false};
+  if (turn_.empty()) return {addressed_, false};  // nobody has answered yet: see evaluate_message
   if (!candidates_.empty() && now >= next_probe_) {
     next_probe_ = now + kProbeInterval;
     return {candidates_.front(), true};
@@ -107,36 +130,38 @@ std::vector<ContactResult> BusContact::evaluate_message(const std::vector<Contac
       query.instance = target.instance;
       if (target.probe) {
         bus::CallResult<contact_reply_t> probed = client_.call(query, {kProbeTimeout, 0});
-        if (probed) {
+        if (probed && !of_another_model(probed)) {
           add_times(probed);
           return take_reply(*probed.reply, batch.size());
         }
-        ++failed_probes_;
-        ++timeouts_;  // a short round
+        if (!probed) ++failed_probes_;
         pause(target.instance);
         query.instance = spread_target().instance;  // the turn, at once
       }
     }
-    bus::CallResult<contact_reply_t> result = client_.call(query, settings_.policy);
-    retries_ += result.attempts - 1;
+    bus::CallResult<contact_reply_t> result;
+    if (settings_.instance.empty() && turn_.empty() && query.instance.empty() && !candidates_.empty()) {
+      // Nobody has answered this client yet: the query goes to every candidate at once, the first
+      // answer taken, so that a silent one (hung, or a forged heartbeat) costs nothing.
+      result = ask_all(query, candidates_);
+    } else {
+      result = client_.call(query, settings_.policy);
+      retries_ += result.attempts - 1;
+    }
     if (!result && settings_.instance.empty()) {
       if (!query.instance.empty()) pause(query.instance);  // silent for a whole round
-      // Fail-over: the same query to every READY instance by name, the first answer taken.
+      // Fail-over: the same query to every READY instance with the run's model hash by name, the
+      // first answer taken.
       addressed_.clear();
-      std::vector<contact_query_t> copies;
-      for (const std::string& name :
-           monitor_.ready_instances(settings_.model, settings_.geometry_key, bus::monotonic_seconds())) {
-        copies.push_back(query);
-        copies.back().instance = name;
-      }
-      if (!copies.empty()) {
+      const std::vector<std::string> ready = ready_instances(bus::monotonic_seconds());
+      if (!ready.empty()) {
         ++timeouts_;  // the round without a reply before it (a fail-over round that fails counts below)
         ++failovers_;
-        result = client_.call_any(copies.data(), copies.size(), settings_.policy);
-        retries_ += result.attempts - 1;
+        result = ask_all(query, ready);
         if (result) addressed_ = result.reply->instance;
       }
     }
+    if (result && of_another_model(result)) result = {};
     if (result) {
       add_times(result);
       return take_reply(*result.reply, batch.size());

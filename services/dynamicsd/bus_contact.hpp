@@ -15,8 +15,10 @@
 /// short timeout (kProbeTimeout, no re-send); an answer adds it to the turn, silence leaves it out
 /// for kProbePause and the query goes to the turn at once. So a flood of forged READY heartbeats
 /// (a key holder's) costs at most kProbeTimeout every kProbeInterval, never a round. With nobody
-/// in the turn yet a query goes to the first READY instance (or, with none READY, unaddressed: the
-/// service side's leader rule picks who answers).
+/// in the turn yet a query goes to every READY instance at once, the first answer taken (with none
+/// READY, to the instance that answered the last fail-over, else unaddressed: the service side's
+/// leader rule picks who answers). An answer computed with another model hash is refused and its
+/// instance left out, as a silent one.
 ///
 /// Fail-over: a query that gets no reply in a whole round is sent at once to every READY instance
 /// of the model with the run's geometry key, each addressed by name, and the first answer is
@@ -73,6 +75,8 @@ class BusContact final : public ContactEvaluator {
   const std::map<std::string, long>& instance_queries() const { return answered_by_; }
   /// [-] probes of READY instances that did not answer.
   long failed_probes() const { return failed_probes_; }
+  /// [-] answers computed with another model hash than the run's, refused.
+  long other_model_answers() const { return other_model_answers_; }
 
   /// [s] how often the READY instances are read from the heartbeats.
   static constexpr double kSpreadRefresh = 0.25;
@@ -99,6 +103,13 @@ class BusContact final : public ContactEvaluator {
   void refresh_instances(double now);
   /// Leaves instance out (of the turn and the candidates) for kProbePause.
   void pause(const std::string& instance);
+  /// Whether an answer was computed with another model hash than the run's (then counted, and its
+  /// instance left out).
+  bool of_another_model(const bus::CallResult<contact_reply_t>& result);
+  /// The READY instances of the model with the run's geometry key and model hash, by name.
+  std::vector<std::string> ready_instances(double now) const;
+  /// The query to each of instances by name at once, the first answer taken.
+  bus::CallResult<contact_reply_t> ask_all(const contact_query_t& query, const std::vector<std::string>& instances);
   /// The result of an answered call, checked (geometry key, status, size), the instance counted.
   std::vector<ContactResult> take_reply(const contact_reply_t& reply, std::size_t expected);
 
@@ -120,6 +131,7 @@ class BusContact final : public ContactEvaluator {
   std::map<std::string, double> paused_until_;  ///< [s] instances left out after a silent probe or round
   std::map<std::string, long> answered_by_;     ///< [-] answered queries per instance
   long failed_probes_ = 0;
+  long other_model_answers_ = 0;
 };
 
 

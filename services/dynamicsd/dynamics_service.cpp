@@ -64,6 +64,9 @@ void DynamicsService::publish(const char* base, Message& message) {
 void DynamicsService::on_command(const run_command_t& command) {
   if (serving_ && !serving_()) return;  // a duplicate stays passive
   if (!command.dynamics_instance.empty() && command.dynamics_instance != instance_) return;  // for another one
+  // A run that named this dynamics (one of a sweep's, say) is not replaced or stopped by a command
+  // that names none: that one is for the dynamics that run whatever they hear.
+  if (command.dynamics_instance.empty() && running() && !request_.dynamics_instance.empty()) return;
   if (command.request_id <= 0 || command.request_id == last_request_id_) return;  // repeats of one command
   last_request_id_ = command.request_id;
   pending_command_ = command;  // acted on at the next step boundary (poll)
@@ -147,6 +150,7 @@ void DynamicsService::start(const run_command_t& command) {
     simulation_->start();
   } catch (const std::exception& e) {
     simulation_.reset();
+    states_.discard();
     std::cerr << "wrc-dynamicsd: run " << bus::log_text(command.run_id) << " failed to start: " << bus::log_text(e.what())
               << "\n";
     publish_refusal(command, e.what());

@@ -9,6 +9,7 @@ void StateBatches::start(const std::string& run_id) {
 }
 
 void StateBatches::add(const wheelset_state_t& state, double now) {
+  tick(now);
   if (batch_.states.empty()) first_added_ = now;
   batch_.states.push_back(state);
   batch_.num_states = static_cast<std::int32_t>(batch_.states.size());
@@ -17,6 +18,11 @@ void StateBatches::add(const wheelset_state_t& state, double now) {
 
 void StateBatches::tick(double now) {
   if (!batch_.states.empty() && now - first_added_ >= 1e-3 * wheelset_states_t::MAX_AGE_MS) flush();
+}
+
+void StateBatches::discard() {
+  batch_.states.clear();
+  batch_.num_states = 0;
 }
 
 void StateBatches::flush() {

@@ -21,12 +21,15 @@ class StateBatches {
 
   /// Starts the batches of run_id; a batch still held is published first.
   void start(const std::string& run_id);
-  /// Adds one sample; now [s] is the monotonic wall time. Publishes the batch when it is full.
+  /// Adds one sample; now [s] is the monotonic wall time. Publishes the batch first when its first
+  /// sample is MAX_AGE_MS old, and after adding when it is full.
   void add(const wheelset_state_t& state, double now);
   /// Publishes the batch when its first sample is MAX_AGE_MS old at now [s] (monotonic).
   void tick(double now);
   /// Publishes what is held (nothing when empty).
   void flush();
+  /// Forgets what is held (a run that failed to start).
+  void discard();
   /// [-] batches published since construction.
   long published() const { return published_; }
 

@@ -98,7 +98,11 @@ TEST(VehicleFile, BadFilesAreRefusedNamingFileBodyOrElementAndKey) {
                 .rfind("v.json: body 'frame': inertia: the inertia tensor", 0),
             0u)
       << error_of(vehicle_text(R"(, "products_of_inertia": [1200, 0, 0])"));
-  EXPECT_EQ(error_of(vehicle_text(R"(, "products_of_inertia": [900, 0, 0])")), "(accepted)");
+  // Positive definite, but principal moments 100, 1500, 1900 kg m^2: 1900 > 100 + 1500.
+  EXPECT_NE(error_of(vehicle_text(R"(, "products_of_inertia": [900, 0, 0])")).find("break the triangle inequality"),
+            std::string::npos)
+      << error_of(vehicle_text(R"(, "products_of_inertia": [900, 0, 0])"));
+  EXPECT_EQ(error_of(vehicle_text(R"(, "products_of_inertia": [200, 0, 0])")), "(accepted)");
 }
 
 TEST(VehicleFile, TheShippedParameterSetsReadAndHoldTheirSources) {

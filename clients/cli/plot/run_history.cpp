@@ -51,10 +51,18 @@ RunHistory read_log_history(const std::string& path) {
     const std::string& name = e->channel;
     if (name.size() < channel.size() || name.compare(name.size() - channel.size(), channel.size(), channel) != 0)
       continue;
-    // The trailer after the message is ignored; anything else is not a state.
+    // The trailer after the message is ignored; anything else is not a state. A count beyond the
+    // log's own bytes (a corrupt log) fails the decoding, or the allocation, and is skipped.
     wheelset_states_t batch;
-    if (batch.decode(e->data, 0, e->datalen) < 0) {
-      batch.states.resize(1);
+    bool decoded = false;
+    try {
+      decoded = batch.decode(e->data, 0, e->datalen) >= 0 && batch.num_states >= 0 &&
+                batch.num_states <= wheelset_states_t::MAX_STATES;
+    } catch (const std::exception&) {
+      decoded = false;
+    }
+    if (!decoded) {
+      batch.states.assign(1, wheelset_state_t{});
       if (batch.states[0].decode(e->data, 0, e->datalen) < 0) continue;
     }
     for (const wheelset_state_t& m : batch.states) {

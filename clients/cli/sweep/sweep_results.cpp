@@ -34,6 +34,12 @@ run_summary_t run_on_bus(const std::vector<std::string>& arguments, protocol::Ru
   return session.run();
 }
 
+// A point's run id: on the bus, where several sweeps may run at once, with this process's id too.
+std::string sweep_run_id(std::size_t point, bool bus) {
+  return (bus ? "sweep-" + std::to_string(::getpid()) + "-point-" : std::string("sweep-point-")) +
+         std::to_string(point);
+}
+
 constexpr const char* kCriticalSpeed = "critical_speed";
 constexpr const char* kCriticalFrequency = "critical_frequency";
 // The group and column of the instances that answered a run's queries over the bus:
@@ -223,7 +229,7 @@ sweep::SweepRow run_sweep_point(const SweepDefinition& definition, const std::ve
   try {
     const std::vector<std::string> arguments = run_arguments(definition, values);
     const protocol::RunRequest request =
-        sweep_run_request(arguments, "sweep-point-" + std::to_string(point), std::cerr, definition.bus);
+        sweep_run_request(arguments, sweep_run_id(point, definition.bus), std::cerr, definition.bus);
     nlohmann::json summary;
     row.status = "finished";
     if (wants_run) {

@@ -6,8 +6,7 @@
 /// caller's thread through a pipe: two thread hand-overs before a handler runs, each a sleeping
 /// thread woken on a possibly halted core. A contact query or reply waits on both ends of every
 /// round trip (docs/performance.md, "The cost of a query"), so the lanes that carry them are read
-/// here from a socket of wrc's own: the kernel wakes the waiting thread itself, and a caller
-/// expecting a reply may poll the socket without sleeping at all.
+/// here from a socket of wrc's own: the kernel wakes the waiting thread itself.
 ///
 /// The socket is what LCM's udpm provider opens (the lane's multicast group and port, address
 /// reuse, the URL's recv_buf_size, kernel receive stamps) and the datagrams are LCM's (its UDP

@@ -107,6 +107,7 @@ class RequestClient {
     if (policy.retries < 0) {
       throw std::invalid_argument("call retries " + std::to_string(policy.retries) + " is negative");
     }
+    if (publish_on_ == nullptr) throw std::logic_error("a request client on a lane has nowhere to publish");
     ++counters_.calls;
     pending_id_ = ++last_id_;
     for (std::size_t k = 0; k < count; ++k) {
@@ -121,7 +122,6 @@ class RequestClient {
       const double send_start = monotonic_seconds();
       for (std::size_t k = 0; k < count; ++k) {
         stamper_.stamp(requests[k].header);
-        if (publish_on_ == nullptr) throw std::logic_error("a request client on a lane has nowhere to publish");
         if (publish_signed(*publish_on_, request_channel_, requests[k]) != 0) {
           throw std::runtime_error("publish on '" + request_channel_ + "' failed");
         }

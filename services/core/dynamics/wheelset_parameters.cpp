@@ -36,7 +36,7 @@ void InitialState::validate() const { validate_parameters(initial_state_table(),
 
 void IntegratorSettings::validate() const {
   validate_parameters(integrator_settings_table(), *this);
-  // Every output sample is a message (WHEELSET_STATE) and a history line: a period far below the
+  // Every output sample goes out on WHEELSET_STATE (in batches) and is a history line: a period far below the
   // steps (1e-300 s) would have one step emit samples for ever.
   if (!(t_end / output_period <= static_cast<double>(kMaxOutputSamples))) {
     std::ostringstream msg;

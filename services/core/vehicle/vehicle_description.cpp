@@ -2,6 +2,7 @@
 #include "core/vehicle/vehicle_description.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Core>
 
 #include <cmath>
@@ -45,9 +46,17 @@ void validate_body(const VehicleBody& b) {
   const auto& p = b.products_of_inertia;  // I_xy, I_xz, I_yz; the tensor's off-diagonal is -I_ij
   tensor << i[0], -p[0], -p[1], -p[0], i[1], -p[2], -p[1], -p[2], i[2];
   const Eigen::LLT<Eigen::Matrix3d> llt(tensor);
+  const std::string given = "(I_xx, I_yy, I_zz = " + number(i[0]) + ", " + number(i[1]) + ", " + number(i[2]) +
+                            " kg m^2, products " + number(p[0]) + ", " + number(p[1]) + ", " + number(p[2]) + ")";
   if (llt.info() != Eigen::Success)
-    refuse("body", b.name, "inertia", "the inertia tensor (I_xx, I_yy, I_zz = " + number(i[0]) + ", " + number(i[1]) +
-                                          ", " + number(i[2]) + " kg m^2 with its products) is not positive definite");
+    refuse("body", b.name, "inertia", "the inertia tensor " + given + " is not positive definite");
+  // A rigid body's principal moments obey the triangle inequality (each at most the sum of the
+  // other two: I_1 + I_2 - I_3 = 2 sum m z^2 >= 0).
+  const Eigen::Vector3d m = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(tensor).eigenvalues();  // ascending
+  if (m[2] > (m[0] + m[1]) * (1 + 1e-12))
+    refuse("body", b.name, "inertia",
+           "the principal moments " + number(m[0]) + ", " + number(m[1]) + ", " + number(m[2]) + " kg m^2 of " + given +
+               " break the triangle inequality (the largest exceeds the sum of the others): no rigid body has them");
 }
 
 void validate_curve(const VehicleElement& e) {

@@ -35,7 +35,7 @@ class Entry {
   }
   std::string text(const std::string& key) {
     const json& v = at(key);
-    if (!v.is_string()) fail(key, "must be a string");
+    if (!v.is_string()) fail(key, "must be a string, not " + v.dump().substr(0, 40));
     return v.get<std::string>();
   }
   double number(const std::string& key) { return as_number(at(key), key); }
@@ -45,7 +45,7 @@ class Entry {
     return has(key) ? vector3(key) : std::array<double, 3>{0, 0, 0};
   }
   double as_number(const json& v, const std::string& key) const {
-    if (!v.is_number()) fail(key, "must be a number");
+    if (!v.is_number()) fail(key, "must be a number, not " + v.dump().substr(0, 40));
     return v.get<double>();
   }
   std::array<double, 3> as_vector3(const json& v, const std::string& key) const {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
-/// The vehicle file (`wrc run --vehicle FILE`; docs/vehicle.md): one JSON object, comments allowed,
+/// The vehicle file (docs/vehicle.md; the vehicle equations that run it are still to come): one JSON
+/// object, comments allowed,
 /// `name`, `bodies` and `elements`. Each body and element is an object of the keys its kind has
 /// (VehicleBody, VehicleElement in core/vehicle/vehicle_description.hpp): an unknown key, a
 /// missing one, a key given twice, a wrong type or an invalid value is refused as

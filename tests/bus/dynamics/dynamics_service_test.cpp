@@ -556,6 +556,26 @@ TEST_F(DynamicsServiceTest, RecordedRunGivesTheHistoryAndReplays) {
   EXPECT_GE(replayed, batches);
 }
 
+// A run that names its dynamics (what `wrc sweep --bus` gives each of its runs) is neither replaced
+// nor stopped by a plain `wrc run` on the same bus (whose START names no dynamics): that dynamics
+// ignores it, the plain run runs on a dynamics of its own, and both end as they would alone.
+TEST_F(DynamicsServiceTest, ANamedRunIsNotReplacedByARunThatNamesNoDynamics) {
+  std::vector<std::string> named = run_args("multipoint", 30.0, temp_path("named.json"));
+  named.insert(named.end(), {"--dynamics-instance", "mine"});
+  const std::string named_log = temp_path("named.log");
+  ChildProcess first(WRC_CLI_PATH, named, named_log);
+  ASSERT_TRUE(wait_running_past(run_id(temp_path("named.json")), 0.5, kRunDeadline)) << read_text(named_log);
+  const nlohmann::json plain = run(run_args("multipoint", 0.1, temp_path("plain.json")), "plain");
+  EXPECT_EQ(plain.value("state", ""), "finished") << plain.dump();
+  int status = -1;
+  ASSERT_TRUE(first.wait(kRunDeadline, &status)) << read_text(named_log);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read_text(named_log);
+  const nlohmann::json named_summary = summary(named);
+  EXPECT_EQ(named_summary.value("state", ""), "finished") << read_text(named_log);
+  EXPECT_EQ(named_summary.value("run_resends", -1), 0) << read_text(named_log);
+  EXPECT_DOUBLE_EQ(named_summary.value("t_end", 0.0), 30.0);
+}
+
 // The contact service killed with SIGKILL in the middle of a run: the launcher restarts it, the
 // dynamics waits for it and repeats the lost query, and the run ends bit for bit where an
 // undisturbed one does.

@@ -276,8 +276,10 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
       lane_url.empty() ? nullptr : open_lcm(lane_lcm_url(bus_url, wrc::protocol::contact_reply_lane(served.name)));
   std::vector<std::unique_ptr<ContactServer>> servers;
   servers.push_back(std::make_unique<ContactServer>(*lcm, request_channel, sender, answer));
-  if (lane) servers.push_back(std::make_unique<ContactServer>(*lane, request_channel, sender, answer));
-  if (lane) servers.back()->reply_on(*reply_lane);
+  if (lane) {
+    servers.push_back(std::make_unique<ContactServer>(*lane, request_channel, sender, answer));
+    servers.back()->reply_on(*reply_lane);
+  }
   for (const auto& server : servers) {
     server->set_address_filter([&filter](const contact_query_t& query) { return filter.answers(query); });
     set_query_checks(*server, served, instance, key);

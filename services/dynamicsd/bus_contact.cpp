@@ -7,7 +7,6 @@
 #include "bus/transport/channels.hpp"
 #include "bus/transport/clock.hpp"
 #include "protocol/contact/contact_query_codec.hpp"
-#include "wrc/heartbeat_t.hpp"
 
 namespace wrc::dynamics {
 
@@ -57,7 +56,7 @@ void BusContact::refresh_instances(double now) {
   refresh_at_ = now + kSpreadRefresh;
   std::vector<std::string> turn;
   candidates_.clear();
-  for (const std::string& name : ready_instances(now)) {
+  for (const std::string& name : monitor_.ready_instances(settings_.model, settings_.geometry_key, now, model_hash_)) {
     const auto paused = paused_until_.find(name);
     if (paused != paused_until_.end() && now < paused->second) continue;
     if (std::find(turn_.begin(), turn_.end(), name) != turn_.end()) {
@@ -67,18 +66,6 @@ void BusContact::refresh_instances(double now) {
     }
   }
   turn_ = std::move(turn);
-}
-
-std::vector<std::string> BusContact::ready_instances(double now) const {
-  std::vector<std::string> names;
-  for (const bus::ServiceStatus& s : monitor_.services(now)) {
-    const heartbeat_t& hb = s.last;
-    if (hb.model != settings_.model || !s.available()) continue;
-    if (!settings_.geometry_key.empty() && hb.geometry_key != settings_.geometry_key) continue;
-    if (!model_hash_.empty() && hb.model_hash != model_hash_) continue;
-    if (names.empty() || names.back() != hb.instance) names.push_back(hb.instance);
-  }
-  return names;
 }
 
 bus::CallResult<contact_reply_t> BusContact::ask_all(const contact_query_t& query,
@@ -153,7 +140,8 @@ std::vector<ContactResult> BusContact::evaluate_message(const std::vector<Contac
       // Fail-over: the same query to every READY instance with the run's model hash by name, the
       // first answer taken.
       addressed_.clear();
-      const std::vector<std::string> ready = ready_instances(bus::monotonic_seconds());
+      const std::vector<std::string> ready =
+          monitor_.ready_instances(settings_.model, settings_.geometry_key, bus::monotonic_seconds(), model_hash_);
       if (!ready.empty()) {
         ++timeouts_;  // the round without a reply before it (a fail-over round that fails counts below)
         ++failovers_;

@@ -106,8 +106,6 @@ class BusContact final : public ContactEvaluator {
   /// Whether an answer was computed with another model hash than the run's (then counted, and its
   /// instance left out).
   bool of_another_model(const bus::CallResult<contact_reply_t>& result);
-  /// The READY instances of the model with the run's geometry key and model hash, by name.
-  std::vector<std::string> ready_instances(double now) const;
   /// The query to each of instances by name at once, the first answer taken.
   bus::CallResult<contact_reply_t> ask_all(const contact_query_t& query, const std::vector<std::string>& instances);
   /// The result of an answered call, checked (geometry key, status, size), the instance counted.

@@ -100,13 +100,14 @@ std::optional<ServiceStatus> HeartbeatMonitor::find(const std::string& model, co
 }
 
 std::vector<std::string> HeartbeatMonitor::ready_instances(const std::string& model, const std::string& geometry_key,
-                                                           double now) const {
+                                                           double now, const std::string& model_hash) const {
   std::vector<std::string> names;
   for (auto it = table_.lower_bound(Key{model, std::string(), 0}); it != table_.end() && std::get<0>(it->first) == model;
        ++it) {
     const ServiceStatus& s = it->second;
     if (ServiceStatus::says_available(s.last) && alive(s, now) &&
-        (geometry_key.empty() || s.last.geometry_key == geometry_key))
+        (geometry_key.empty() || s.last.geometry_key == geometry_key) &&
+        (model_hash.empty() || s.last.model_hash == model_hash))
       names.push_back(s.last.instance);
   }
   names.erase(std::unique(names.begin(), names.end()), names.end());  // the table is sorted by instance

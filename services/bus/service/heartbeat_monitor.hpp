@@ -63,9 +63,10 @@ class HeartbeatMonitor {
   /// the one heard from last.
   std::optional<ServiceStatus> find(const std::string& model, const std::string& instance, double now) const;
   /// The names of the available (alive, READY, this interface version) instances of model that
-  /// compute with geometry_key (any key when empty) at monotonic time now [s]: sorted, each once.
+  /// compute with geometry_key and model_hash (any when empty) at monotonic time now [s]: sorted,
+  /// each once.
   std::vector<std::string> ready_instances(const std::string& model, const std::string& geometry_key,
-                                           double now) const;
+                                           double now, const std::string& model_hash = "") const;
   /// Whether an available instance of model with a name that sorts before instance is heard at
   /// monotonic time now [s]. Walks only those entries and copies nothing: a contact service asks
   /// it for every unaddressed query, with up to kMaxEntries entries in the table.

@@ -2,32 +2,13 @@
 #include "core/dynamics/ida_integrator.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "core/dynamics/sundials_support.hpp"
 
 namespace wrc {
 namespace {
-
-DaeSystem* system_of(void* user) { return static_cast<DaeSystem*>(user); }
-
-int ida_residual(sunrealtype t, N_Vector y, N_Vector yp, N_Vector r, void* user) {
-  return system_of(user)->residual(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r));
-}
-
-int ida_jacobian(sunrealtype t, sunrealtype cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix jac, void* user,
-                 N_Vector, N_Vector, N_Vector) {
-  const DenseMatrixView view{SM_DATA_D(jac), static_cast<long>(SM_ROWS_D(jac))};
-  return system_of(user)->jacobian(t, cj, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r),
-                                   view);
-}
-
-void ida_message(int, const char*, const char* function, char* text, void* user) {
-  system_of(user)->message(function, text);
-}
-
-int ida_roots(sunrealtype t, N_Vector y, N_Vector, sunrealtype* g, void* user) {
-  return system_of(user)->roots(t, N_VGetArrayPointer(y), g);
-}
 
 }  // namespace
 
@@ -41,7 +22,37 @@ struct IdaIntegrator::Impl {
   std::unique_ptr<SerialVector> output_state;  // the state interpolated at an output time
   IdaSolver ida;
   double t = 0;  // time of y [s]
+  double newton_matrix_cj_change = 0;  // IdaSegment::newton_matrix_cj_change [-]
+  // cj of the last Newton matrix of this segment (IDA's cjold) [1/s]; NaN before the first.
+  double newton_matrix_cj = std::numeric_limits<double>::quiet_NaN();
 };
+
+namespace {
+
+IdaIntegrator::Impl& impl_of(void* user) { return *static_cast<IdaIntegrator::Impl*>(user); }
+DaeSystem* system_of(void* user) { return &impl_of(user).system; }
+
+int ida_residual(sunrealtype t, N_Vector y, N_Vector yp, N_Vector r, void* user) {
+  return system_of(user)->residual(t, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r));
+}
+
+int ida_jacobian(sunrealtype t, sunrealtype cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix jac, void* user,
+                 N_Vector, N_Vector, N_Vector) {
+  const DenseMatrixView view{SM_DATA_D(jac), static_cast<long>(SM_ROWS_D(jac))};
+  impl_of(user).newton_matrix_cj = cj;
+  return system_of(user)->jacobian(t, cj, N_VGetArrayPointer(y), N_VGetArrayPointer(yp), N_VGetArrayPointer(r),
+                                   view);
+}
+
+void ida_message(int, const char*, const char* function, char* text, void* user) {
+  system_of(user)->message(function, text);
+}
+
+int ida_roots(sunrealtype t, N_Vector y, N_Vector, sunrealtype* g, void* user) {
+  return system_of(user)->roots(t, N_VGetArrayPointer(y), g);
+}
+
+}  // namespace
 
 IdaIntegrator::IdaIntegrator(DaeSystem& system) : impl_(std::make_unique<Impl>(system)) {}
 
@@ -66,6 +77,7 @@ void IdaIntegrator::begin(double t, const std::vector<double>& y, const std::vec
   std::copy(settings.differential.begin(), settings.differential.end(), m.id->data());
   std::copy(settings.absolute_tolerance.begin(), settings.absolute_tolerance.end(), m.atol->data());
   m.t = t;
+  m.newton_matrix_cj = std::numeric_limits<double>::quiet_NaN();  // a new segment starts with a new matrix
   if (same_size && m.ida) {
     check_sundials(IDAReInit(m.ida.mem(), t, m.y->get(), m.yp->get()), "IDAReInit");
   } else {
@@ -76,8 +88,9 @@ void IdaIntegrator::begin(double t, const std::vector<double>& y, const std::vec
 
 void IdaIntegrator::Impl::set_up(const IdaSegment& s) {
   void* mem = ida.mem();
-  check_sundials(IDASetUserData(mem, &system), "IDASetUserData");
-  check_sundials(IDASetErrHandlerFn(mem, ida_message, &system), "IDASetErrHandlerFn");
+  newton_matrix_cj_change = s.newton_matrix_cj_change;
+  check_sundials(IDASetUserData(mem, this), "IDASetUserData");
+  check_sundials(IDASetErrHandlerFn(mem, ida_message, this), "IDASetErrHandlerFn");
   check_sundials(IDASVtolerances(mem, s.relative_tolerance, atol->get()), "IDASVtolerances");
   check_sundials(IDASetId(mem, id->get()), "IDASetId");
   check_sundials(IDASetJacFn(mem, ida_jacobian), "IDASetJacFn");
@@ -103,6 +116,18 @@ IdaStep IdaIntegrator::step(double t_stop) {
   s.convergence_failure = s.flag == IDA_CONV_FAIL;
   if (s.flag >= 0) m.t = s.t;
   return s;
+}
+
+bool IdaIntegrator::newton_matrix_expected() const {
+  const Impl& m = *impl_;
+  if (!m.ida || std::isnan(m.newton_matrix_cj)) return true;
+  double cj = 0;
+  check_sundials(IDAGetCurrentCj(m.ida.mem(), &cj), "IDAGetCurrentCj");
+  // IDA's rule (its nonlinear solver's set-up decision): a new matrix when cj / cjold leaves
+  // [(1 - dcj) / (1 + dcj), (1 + dcj) / (1 - dcj)].
+  const double ratio = cj / m.newton_matrix_cj;
+  const double low = (1.0 - m.newton_matrix_cj_change) / (1.0 + m.newton_matrix_cj_change);
+  return ratio < low || ratio > 1.0 / low;
 }
 
 std::vector<int> IdaIntegrator::root_info(int root_count) const {

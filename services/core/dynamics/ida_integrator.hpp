@@ -65,6 +65,8 @@ struct IdaStep {
 
 class IdaIntegrator {
  public:
+  struct Impl;  // IDA's memory and vectors (the C callbacks reach the system through it)
+
   /// @param system is called for every residual, Jacobian and event function; it must outlive
   ///        the integrator.
   explicit IdaIntegrator(DaeSystem& system);
@@ -80,6 +82,13 @@ class IdaIntegrator {
   void begin(double t, const std::vector<double>& y, const std::vector<double>& yp, const IdaSegment& settings);
   /// One step towards t_stop [s], which it does not pass.
   IdaStep step(double t_stop);
+  /// Called from DaeSystem::residual: whether IDA will build a new Newton matrix (call
+  /// DaeSystem::jacobian) at the state of this residual right after it, judged as IDA judges it:
+  /// the first matrix of a segment, or cj moved by more than IdaSegment::newton_matrix_cj_change
+  /// since the last matrix. A forecast only (a corrector that fails to converge asks for a matrix
+  /// nobody forecast), so the system may fetch ahead what the Jacobian will need, never decide
+  /// anything by it.
+  bool newton_matrix_expected() const;
   /// Which event functions found a root at the last step (one flag per event function).
   std::vector<int> root_info(int root_count) const;
   /// IDA's counters of this segment (steps, evaluations, failures, last order and step).
@@ -94,7 +103,6 @@ class IdaIntegrator {
   std::vector<double> state_at(double t);
 
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 

@@ -2,6 +2,7 @@
 #include "core/dynamics/wheelset_contact.hpp"
 
 #include <cstring>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -11,8 +12,10 @@
 namespace wrc {
 namespace {
 
-// [-] contact results kept for the states last asked.
-constexpr size_t kCacheSize = 8;
+// [-] contact results kept for the states last asked: the step's residual states, its event and
+// output state, and a Jacobian's perturbed states fetched with its residual (at most
+// kTwoPointRigidUnknowns).
+constexpr size_t kCacheSize = 32;
 
 }  // namespace
 
@@ -35,7 +38,9 @@ std::vector<ContactResult> WheelsetContact::evaluate(const std::vector<ContactQu
   return results;
 }
 
-const ContactResult& WheelsetContact::at(const double* y) {
+size_t WheelsetContact::contact_cache_size() { return kCacheSize; }
+
+std::vector<double> WheelsetContact::key_of(const double* y) const {
   const bool two_point = branches_.any_two_point();
   std::vector<double> key;
   key.reserve(kTwoPointRigidUnknowns + 4);
@@ -50,13 +55,64 @@ const ContactResult& WheelsetContact::at(const double* y) {
     for (const RailOffset& r : equations_.rails())
       key.insert(key.end(), {r.lateral, r.vertical, r.roll, r.lateral_rate, r.vertical_rate, r.roll_rate});
   }
+  return key;
+}
+
+const ContactResult* WheelsetContact::cached(const std::vector<double>& key) const {
   for (const CachedContact& c : cache_)
     if (c.key.size() == key.size() && std::memcmp(c.key.data(), key.data(), key.size() * sizeof(double)) == 0)
-      return c.result;
-  std::vector<ContactResult> r = evaluate({equations_.query(formulation_, y, branches_)});
-  if (cache_.size() >= kCacheSize) cache_.pop_front();
-  cache_.push_back({std::move(key), std::move(r.front())});
-  return cache_.back().result;
+      return &c.result;
+  return nullptr;
+}
+
+bool WheelsetContact::keep_last(const std::vector<double>& key) {
+  for (auto c = cache_.begin(); c != cache_.end(); ++c) {
+    if (c->key.size() != key.size() || std::memcmp(c->key.data(), key.data(), key.size() * sizeof(double)) != 0)
+      continue;
+    if (std::next(c) != cache_.end()) {
+      CachedContact kept = std::move(*c);
+      cache_.erase(c);
+      cache_.push_back(std::move(kept));
+    }
+    return true;
+  }
+  return false;
+}
+
+void WheelsetContact::fetch(const std::vector<const double*>& states) {
+  if (states.size() > kCacheSize)
+    throw std::logic_error("WheelsetContact: " + std::to_string(states.size()) + " states at once, the cache keeps " +
+                           std::to_string(kCacheSize));
+  std::vector<std::vector<double>> keys;
+  std::vector<ContactQuery> batch;
+  for (const double* y : states) {
+    std::vector<double> key = key_of(y);
+    // A state asked for now and cached goes to the back, so that the new results cannot push it out.
+    if (keep_last(key)) continue;
+    keys.push_back(std::move(key));
+    batch.push_back(equations_.query(formulation_, y, branches_));
+  }
+  if (batch.empty()) return;
+  std::vector<ContactResult> results = evaluate(batch);
+  for (size_t i = 0; i < results.size(); ++i) {
+    if (cache_.size() >= kCacheSize) cache_.pop_front();
+    cache_.push_back({std::move(keys[i]), std::move(results[i])});
+  }
+}
+
+const ContactResult& WheelsetContact::at(const double* y, const std::vector<const double*>& also) {
+  std::vector<const double*> states{y};
+  states.insert(states.end(), also.begin(), also.end());
+  fetch(states);
+  return *cached(key_of(y));  // y's result is cached: at most kCacheSize states were fetched
+}
+
+std::vector<ContactResult> WheelsetContact::at_each(const std::vector<const double*>& states) {
+  fetch(states);
+  std::vector<ContactResult> results;
+  results.reserve(states.size());
+  for (const double* y : states) results.push_back(*cached(key_of(y)));
+  return results;
 }
 
 void WheelsetContact::set_branches(const FollowedBranches& branches, std::vector<double>& y) {

@@ -34,7 +34,16 @@ class WheelsetContact {
   int unknowns() const { return unknown_count(formulation_, branches_.any_two_point()); }
 
   /// The contact at the state y, usually from the cache; valid until the next call.
-  const ContactResult& at(const double* y);
+  const ContactResult& at(const double* y) { return at(y, {}); }
+  /// The contact at the state y as at(y), and at each state of also that is not cached yet, all
+  /// in one evaluation (one round trip), every result cached: e.g. with the states a Jacobian at
+  /// y will perturb. At most contact_cache_size() states in all.
+  const ContactResult& at(const double* y, const std::vector<const double*>& also);
+  /// The contact at each state, from the cache where it is there, the rest in one evaluation
+  /// (cached too). At most contact_cache_size() states.
+  std::vector<ContactResult> at_each(const std::vector<const double*>& states);
+  /// How many states' contact the cache keeps [-].
+  static size_t contact_cache_size();
   /// One evaluation of a batch, one result per query in order (not cached).
   /// @throws std::runtime_error when the evaluator answers another number of results.
   std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch);
@@ -59,6 +68,15 @@ class WheelsetContact {
     std::vector<double> key;
     ContactResult result;
   };
+  /// What the contact at y depends on besides the evaluator: the unknowns that enter the query,
+  /// the followed branches, the track's curvature and (irregularities) the rails' offsets.
+  std::vector<double> key_of(const double* y) const;
+  const ContactResult* cached(const std::vector<double>& key) const;
+  /// Moves the cached result of key to the back of the cache (the last to be pushed out);
+  /// false when key is not cached.
+  bool keep_last(const std::vector<double>& key);
+  /// Evaluates the states whose contact is not cached, in one batch, and caches the results.
+  void fetch(const std::vector<const double*>& states);
   std::shared_ptr<ContactEvaluator> evaluator_;
   const WheelsetEquations& equations_;
   bool rails_move_;

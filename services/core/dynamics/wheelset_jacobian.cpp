@@ -26,35 +26,54 @@ double jacobian_increment(int k, double v) {
   return kRelativeIncrement * std::max(std::abs(v), typical);
 }
 
+JacobianPerturbations jacobian_perturbations(const WheelsetContact& contact, const double* y) {
+  const ContactFormulation f = contact.formulation();
+  const bool two_point = contact.branches().any_two_point();
+  const int n = contact.unknowns();
+  JacobianPerturbations p;
+  p.states.assign(static_cast<size_t>(n), std::vector<double>(y, y + n));
+  p.steps.resize(static_cast<size_t>(n));
+  p.enters_contact.resize(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const size_t u = static_cast<size_t>(k);
+    p.states[u][u] += jacobian_increment(k, y[k]);
+    p.steps[u] = p.states[u][u] - y[k];  // the increment actually represented
+    p.enters_contact[u] = enters_contact_query(f, two_point, k);
+  }
+  return p;
+}
+
+std::vector<const double*> JacobianPerturbations::queried() const {
+  std::vector<const double*> q;
+  for (size_t k = 0; k < states.size(); ++k)
+    if (enters_contact[k]) q.push_back(states[k].data());
+  return q;
+}
+
+const ContactResult& residual_contact(WheelsetContact& contact, const double* y, bool newton_matrix_expected) {
+  if (!newton_matrix_expected) return contact.at(y);
+  return contact.at(y, jacobian_perturbations(contact, y).queried());
+}
+
 void wheelset_jacobian(const WheelsetEquations& equations, WheelsetContact& contact, double cj, const double* y,
                        const double* yp, const double* r, DenseMatrixView jac, RunCounters& counters) {
   const ContactFormulation f = contact.formulation();
   const FollowedBranches& branches = contact.branches();
   const int n = contact.unknowns();
-  const bool two_point = branches.any_two_point();
-  // Every perturbation that changes the contact query in one batch: one round trip.
-  std::vector<ContactQuery> batch;
-  std::vector<int> batch_index(static_cast<size_t>(n), -1);
-  std::vector<std::vector<double>> perturbed(static_cast<size_t>(n), std::vector<double>(y, y + n));
-  std::vector<double> step(static_cast<size_t>(n));
-  for (int k = 0; k < n; ++k) {
-    step[k] = jacobian_increment(k, y[k]);
-    perturbed[k][k] += step[k];
-    step[k] = perturbed[k][k] - y[k];  // the increment actually represented
-    if (!enters_contact_query(f, two_point, k)) continue;
-    batch_index[static_cast<size_t>(k)] = static_cast<int>(batch.size());
-    batch.push_back(equations.query(f, perturbed[k].data(), branches));
-  }
+  JacobianPerturbations p = jacobian_perturbations(contact, y);
+  // Every perturbation that changes the contact query in one batch (one round trip), or none
+  // when the residual at y fetched them (residual_contact).
   const ContactResult base = contact.at(y);
-  std::vector<ContactResult> results = contact.evaluate(batch);
+  const std::vector<ContactResult> results = contact.at_each(p.queried());
   ++counters.jacobian_evals;
   counters.jacobian_residual_evals += n;
   std::vector<double> column(static_cast<size_t>(n));
+  size_t next = 0;
   for (int k = 0; k < n; ++k) {
-    const int b = batch_index[static_cast<size_t>(k)];
-    const ContactResult& c = b >= 0 ? results[static_cast<size_t>(b)] : base;
-    equations.residual(f, perturbed[k].data(), yp, c, branches, column.data());
-    for (int i = 0; i < n; ++i) jac(i, k) = (column[i] - r[i]) / step[k];
+    const size_t u = static_cast<size_t>(k);
+    const ContactResult& c = p.enters_contact[u] ? results[next++] : base;
+    equations.residual(f, p.states[u].data(), yp, c, branches, column.data());
+    for (int i = 0; i < n; ++i) jac(i, k) = (column[i] - r[i]) / p.steps[u];
     jac(k, k) += cj * equations.derivative_coefficient(k);
   }
 }

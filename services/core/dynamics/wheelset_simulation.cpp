@@ -99,7 +99,8 @@ void WheelsetSimulation::place_on_track(double t) {
 int WheelsetSimulation::residual(double t, const double* y, const double* yp, double* r) {
   place_on_track(t);
   try {
-    equations_.residual(contact_.formulation(), y, yp, contact_.at(y), contact_.branches(), r);
+    const ContactResult& c = residual_contact(contact_, y, integrator_.newton_matrix_expected());
+    equations_.residual(contact_.formulation(), y, yp, c, contact_.branches(), r);
     return 0;
   } catch (const ContactConfigurationError& e) {
     last_contact_error_ = e.what();

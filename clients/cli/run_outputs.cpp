@@ -69,19 +69,23 @@ nlohmann::json run_quantities_json(const run_summary_t& s, double friction) {
   j["units"] = {{"t", "s"},
                 {"distance", "m"},
                 {"y_over_q", "-"},
+                {"y_over_q_2m", "-"},
                 {"nadal_limit", "-"},
                 {"flange_angle", "rad"},
                 {"friction", "-"},
                 {"track_shift_force", "N"},
+                {"track_shift_force_2m", "N"},
                 {"prudhomme_limit", "N"},
                 {"axle_load", "N"},
                 {"wear_number", "N"},
                 {"max_pressure", "Pa"}};
   j["y_over_q"] = per_wheel_json(s.max_y_over_q);
+  j["y_over_q_2m"] = per_wheel_json(s.max_y_over_q_2m);
   j["nadal_limit"] = s.nadal_limit;
   j["flange_angle"] = s.flange_angle;
   j["friction"] = friction;
   j["track_shift_force"] = maximum_json(s.max_track_shift_force);
+  j["track_shift_force_2m"] = maximum_json(s.max_track_shift_force_2m);
   j["prudhomme_limit"] = s.prudhomme_limit;
   j["axle_load"] = s.axle_load;
   j["wear_number"] = per_wheel_json(s.max_wear_number);

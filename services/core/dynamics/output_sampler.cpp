@@ -33,7 +33,7 @@ void OutputSampler::restart() {
 void OutputSampler::record_step(const StepContact& now, bool restart) {
   previous_step_ = restart ? now : current_step_;
   current_step_ = now;
-  extremes_.observe(now.t, speed_ * now.t, now.wheels);
+  extremes_.observe_step(now.t, speed_ * now.t, now.wheels);
 }
 
 std::array<WheelOutput, 2> OutputSampler::wheels_at(double t, const std::vector<double>& y,

@@ -45,8 +45,10 @@ void copy_extremes(const WheelsetSimulation& sim, run_summary_t& m) {
     m.max_y_over_q[i] = to_message(e.y_over_q[i]);
     m.max_wear_number[i] = to_message(e.wear_number[i]);
     m.max_pressure[i] = to_message(e.max_pressure[i]);
+    m.max_y_over_q_2m[i] = to_message(e.y_over_q_2m[i]);
   }
   m.max_track_shift_force = to_message(e.track_shift_force);
+  m.max_track_shift_force_2m = to_message(e.track_shift_force_2m);
   m.flange_angle = p.flange_angle;
   m.nadal_limit = nadal_limit(p.flange_angle, p.material.friction);
   m.axle_load = p.total_vertical_load();

@@ -227,7 +227,8 @@ TEST_F(DynamicsServiceTest, RunQuantitiesInSummaryAndHistory) {
   const std::map<std::string, std::string> units{
       {"t", "s"},           {"distance", "m"},          {"y_over_q", "-"},          {"nadal_limit", "-"},
       {"flange_angle", "rad"}, {"friction", "-"},        {"track_shift_force", "N"}, {"prudhomme_limit", "N"},
-      {"axle_load", "N"},   {"wear_number", "N"},       {"max_pressure", "Pa"}};
+      {"axle_load", "N"},   {"wear_number", "N"},       {"max_pressure", "Pa"},     {"y_over_q_2m", "-"},
+      {"track_shift_force_2m", "N"}};
   for (const auto& [key, unit] : units) EXPECT_EQ(q["units"][key], unit) << key;
   for (const auto& item : q.items())
     EXPECT_TRUE(item.key() == "units" || q["units"].contains(item.key())) << item.key() << " has no unit";
@@ -248,6 +249,19 @@ TEST_F(DynamicsServiceTest, RunQuantitiesInSummaryAndHistory) {
   for (const char* key : {"y_over_q", "wear_number", "max_pressure"})
     for (const char* side : {"left", "right"}) expect_where(q[key][side], std::string(key) + " " + side);
   expect_where(q["track_shift_force"], "track_shift_force");
+  // EN 14363's 2 m sliding means: at a window's end (a multiple of 0.5 m, from 2 m on), below the
+  // instantaneous maxima.
+  const auto expect_sliding = [&](const nlohmann::json& m, const nlohmann::json& instantaneous, const std::string& what) {
+    ASSERT_TRUE(m.contains("max") && m.contains("t") && m.contains("distance")) << what << ": " << m.dump();
+    EXPECT_GT(m["max"].get<double>(), 0.0) << what;
+    EXPECT_LE(m["max"].get<double>(), instantaneous["max"].get<double>()) << what;
+    EXPECT_GE(m["distance"].get<double>(), 2.0) << what;
+    EXPECT_DOUBLE_EQ(std::fmod(m["distance"].get<double>(), 0.5), 0.0) << what;
+    EXPECT_NEAR(m["t"].get<double>(), m["distance"].get<double>() / 30.0, 1e-12) << what;
+  };
+  for (const char* side : {"left", "right"})
+    expect_sliding(q["y_over_q_2m"][side], q["y_over_q"][side], std::string("y_over_q_2m ") + side);
+  expect_sliding(q["track_shift_force_2m"], q["track_shift_force"], "track_shift_force_2m");
   // The history: every header "name [unit]", the new columns among them.
   std::ifstream in(csv);
   std::string line;

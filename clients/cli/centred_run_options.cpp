@@ -5,17 +5,13 @@
 
 #include "cli/run_options.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
-#include "core/dynamics/run_parameters_file.hpp"
 #include "options/parameter_options.hpp"
 
 namespace wrc::cli {
 
 RunSpec centred_run_spec(const Options& o, const std::string& why) {
   RunSpec spec;
-  if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
-  if (o.has("--suspension"))
-    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none" ? PrimarySuspension::none()
-                                                                                         : PrimarySuspension::benchmark();
+  apply_wheelset_sources(o, spec, std::cout);
   apply_parameter_options(wheelset_parameter_table(), o, spec.wheelset);
   zero_lateral_load_unless_given(o, spec.wheelset, why, std::cout);
   return spec;

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "cli/centred_run_options.hpp"
+#include "cli/run_options.hpp"
 #include "cli/command.hpp"
 #include "cli/fit_options.hpp"
 #include "cli/in_process_contact.hpp"
@@ -62,8 +63,6 @@ std::vector<OptionSpec> bifurcation_option_specs() {
   std::vector<OptionSpec> specs{
       {"--model", true, "contact model: onepoint, interp, multipoint or spline", ""},
       {"--speeds", true, "speeds FROM:TO:STEP [m/s]; the ramp-down starts at the highest", "30:90:5"},
-      {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
-      {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
       {"--disturbance", true, "y0 of the centred branch's runs [m]", number_text(defaults.small_disturbance.y),
           kLateralShiftRange},
       {"--start-amplitude", true, "y0 of the ramp-down's first run, at the highest speed [m]",
@@ -86,6 +85,8 @@ std::vector<OptionSpec> bifurcation_option_specs() {
       {"--out", true, "every run (CSV, units in the header)", "bifurcation.csv"},
       {"--plot", true, "the bifurcation diagram (.png or .svg)", "bifurcation.png"},
   };
+  const std::vector<OptionSpec> sources = wheelset_source_option_specs();
+  specs.insert(specs.begin() + 2, sources.begin(), sources.end());
   for (auto& spec : parameter_option_specs(wheelset_parameter_table(), WheelsetParameters{})) specs.push_back(spec);
   for (const auto& p : integrator_settings_table())
     if (is_integrator_option(p.key)) specs.push_back(parameter_option_spec(p, p.get(IntegratorSettings{})));

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "cli/centred_run_options.hpp"
+#include "cli/run_options.hpp"
 #include "cli/command.hpp"
 #include "cli/in_process_contact.hpp"
 #include "cli/options.hpp"
@@ -84,11 +85,11 @@ int run_stability(const std::vector<std::string>& args) {
   std::vector<OptionSpec> specs{
       {"--model", true, "contact model: onepoint, interp, multipoint or spline", ""},
       {"--speeds", true, "speeds FROM:TO:STEP [m/s]", "5:80:1"},
-      {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
-      {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
       {"--out", true, "every eigenvalue at every speed (CSV, units in the header)", "stability.csv"},
       {"--plot", true, "the eigenvalue plot (.png or .svg)", "stability.png"},
   };
+  const std::vector<OptionSpec> sources = wheelset_source_option_specs();
+  specs.insert(specs.begin() + 2, sources.begin(), sources.end());
   for (auto& spec : parameter_option_specs(wheelset_parameter_table(), WheelsetParameters{})) specs.push_back(spec);
   for (auto& spec : profile_option_specs()) specs.push_back(spec);
   const Options o("stability", "--model M [--speeds 5:80:1] [--out FILE.csv] [--plot FILE.png] [options]", specs, args);

@@ -12,9 +12,11 @@
 #include "cli/profile_options.hpp"
 #include "cli/service_starter.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
+#include "core/dynamics/single_wheelset_vehicle.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/track/track_irregularity_file.hpp"
 #include "core/track/track_layout_file.hpp"
+#include "core/vehicle/vehicle_file.hpp"
 #include "options/parameter_options.hpp"
 #include "protocol/run/run_command_codec.hpp"
 #include "protocol/run/run_request_table.hpp"
@@ -51,12 +53,42 @@ void zero_lateral_load_unless_given(const Options& o, WheelsetParameters& wheels
   wheelset.lateral_force = 0.0;
 }
 
+std::vector<OptionSpec> wheelset_source_option_specs() {
+  return {
+      {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
+      {"--vehicle", true,
+       "vehicle file (JSON, docs/vehicle.md) of one wheelset on the track: its masses, inertias, loads and "
+       "axle boxes replace the parameters'; options override it",
+       "the benchmark's wheelset"},
+      {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
+  };
+}
+
+void apply_wheelset_sources(const Options& o, RunSpec& spec, std::ostream& notes) {
+  if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
+  if (o.has("--vehicle")) {
+    if (o.has("--suspension")) throw UsageError("--suspension and --vehicle both give the suspension: leave one out");
+    const std::string path = o.text("--vehicle");
+    VehicleDescription vehicle;
+    try {
+      vehicle = read_vehicle_file(path);
+      apply_single_wheelset(vehicle, spec.wheelset);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError("--vehicle: " + path + ": " + e.what());
+    }
+    notes << "vehicle: '" << vehicle.name << "' (" << path << "), one wheelset on the track\n";
+  }
+  if (o.has("--suspension")) {
+    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none"
+                                   ? PrimarySuspension::none()
+                                   : PrimarySuspension::benchmark();
+  }
+}
+
 std::vector<OptionSpec> run_option_specs() {
   std::vector<OptionSpec> specs{
       {"--model", true, "contact model to start with: onepoint, interp, multipoint or spline", ""},
       {"--summary", true, "write the run summary here (JSON)", ""},
-      {"--params", true, "run parameter file (JSON, docs/dynamics.md); options override it", "the benchmark"},
-      {"--suspension", true, "benchmark or none (free but for the constant speed)", "benchmark"},
       {"--swap-at", true,
        "swap the model at the first step at or after simulated times: T:M[,T2:M2...], at most " +
            std::to_string(protocol::kMaxScheduledSwaps),
@@ -75,6 +107,8 @@ std::vector<OptionSpec> run_option_specs() {
        "several runs at once need one each",
        "any that runs"},
   };
+  const std::vector<OptionSpec> sources = wheelset_source_option_specs();
+  specs.insert(specs.begin() + 2, sources.begin(), sources.end());
   for (auto& spec : parameter_option_specs(protocol::run_request_table(), protocol::RunRequest{})) specs.push_back(spec);
   for (auto& spec : service_start_option_specs()) specs.push_back(spec);
   for (auto& spec : profile_option_specs()) specs.push_back(spec);
@@ -86,12 +120,7 @@ protocol::RunRequest run_request_from(const Options& o, std::ostream& notes) {
   request.model = o.choice("--model", contact_model_names());
   if (request.model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
   RunSpec& spec = request.spec;
-  if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
-  if (o.has("--suspension")) {
-    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none"
-                                   ? PrimarySuspension::none()
-                                   : PrimarySuspension::benchmark();
-  }
+  apply_wheelset_sources(o, spec, notes);
   apply_parameter_options(protocol::run_request_table(), o, request);
   spec.validate();  // the rules between parameters (the total vertical load)
   if (o.has("--track")) {

@@ -2,7 +2,7 @@
 #pragma once
 /// @file
 /// `wrc run`'s options and the run request they describe: the run's own (--model, --summary,
-/// --params, --suspension, --swap-at, --history, --in-process, --run-id), one per entry of the
+/// --params, --vehicle, --suspension, --swap-at, --history, --in-process, --run-id), one per entry of the
 /// run request table (protocol/run/run_request_table.hpp: every run parameter and the contact
 /// client's settings, defaults and rules the table's), the service start and profile options.
 
@@ -15,6 +15,16 @@
 #include "protocol/run/run_command_codec.hpp"
 
 namespace wrc::cli {
+
+/// --params, --vehicle and --suspension: where a wheelset's parameters come from before the
+/// parameter options (`wrc run`, `wrc sweep`, `wrc stability`, `wrc bifurcation`).
+std::vector<OptionSpec> wheelset_source_option_specs();
+/// spec's parameters from --params (the run parameter file), then its wheelset's from --vehicle (a
+/// vehicle file of one wheelset on the track, apply_single_wheelset(); a line to notes says which),
+/// then --suspension. The parameter options come after, in each caller.
+/// @throws UsageError for --vehicle with --suspension or a vehicle file that is bad or more than one
+///         wheelset on the track, naming the file; std::invalid_argument for a bad parameter file.
+void apply_wheelset_sources(const Options& options, RunSpec& spec, std::ostream& notes);
 
 /// Every option of `wrc run`, in --help order.
 std::vector<OptionSpec> run_option_specs();
@@ -31,7 +41,8 @@ void zero_lateral_load_unless_given(const Options& options, WheelsetParameters& 
 inline constexpr const char* kTrackLateralLoadReason =
     "a track layout's curves load the wheelset with their centrifugal force; --lateral-force F keeps a load";
 
-/// The request of parsed options: the benchmark (RunSpec{}), then --params, then the options; with
+/// The request of parsed options: the benchmark (RunSpec{}), then --params, --vehicle and
+/// --suspension (apply_wheelset_sources), then the options; with
 /// --track and without --lateral-force the parameters' lateral load is set to 0
 /// (zero_lateral_load_unless_given, its line to notes).
 /// @throws UsageError naming the option, std::invalid_argument for an invalid parameter file or run.

@@ -63,13 +63,19 @@ TEST(RunQuantities, SteadyStateForcesBalanceTheLoads) {
   }
 }
 
+// The benchmark's first 0.6 s (the approach to the flange and the settling), an output every 1 ms.
+RunSpec benchmark_start() {
+  RunSpec spec;
+  spec.integrator.t_end = 0.6;
+  spec.integrator.output_period = 1e-3;
+  return spec;
+}
+
 // The maxima cover every output sample (they also see every accepted step, so they may be larger),
 // occur inside the run, at the distance speed * t, and the largest |Y/Q| of the benchmark is the
 // right wheel's (the one pushed into its flange root).
 TEST(RunQuantities, MaximaCoverTheOutputsAndSayWhere) {
-  RunSpec spec;
-  spec.integrator.t_end = 0.6;
-  spec.integrator.output_period = 1e-3;
+  const RunSpec spec = benchmark_start();
   WheelsetSimulation sim(spec, contact("spline"), kR0);
   const std::vector<WheelsetSnapshot> out = test::run_to_end(sim);
   const RunExtremes& e = sim.extremes();
@@ -105,9 +111,7 @@ TEST(RunQuantities, MaximaCoverTheOutputsAndSayWhere) {
 // 0.5 %): the largest |mean| agrees, lies below the instantaneous maximum, and is reported at a
 // window's end, a multiple of 0.5 m, at t = distance / speed.
 TEST(RunQuantities, SlidingMeansOverTwoMetresAgreeWithTheOutputs) {
-  RunSpec spec;
-  spec.integrator.t_end = 0.6;
-  spec.integrator.output_period = 1e-3;
+  const RunSpec spec = benchmark_start();
   WheelsetSimulation sim(spec, contact("spline"), kR0);
   const std::vector<WheelsetSnapshot> out = test::run_to_end(sim);
   const RunExtremes& e = sim.extremes();

@@ -29,6 +29,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bus_fixture.hpp"
+#include "json_leaves.hpp"
 
 namespace wrc::bus::test {
 namespace {
@@ -80,18 +81,6 @@ class InProcessComparisonTest : public BusTest {
     return nlohmann::json::parse(in);
   }
 
-  // Every leaf of a JSON document by its path ("counters.steps", "swaps[0].t").
-  static void leaves(const nlohmann::json& j, const std::string& path, std::map<std::string, nlohmann::json>& out) {
-    if (j.is_object()) {
-      for (auto it = j.begin(); it != j.end(); ++it) leaves(it.value(), path.empty() ? it.key() : path + "." + it.key(), out);
-    } else if (j.is_array()) {
-      for (size_t k = 0; k < j.size(); ++k) leaves(j[k], path + "[" + std::to_string(k) + "]", out);
-      if (j.empty()) out[path] = j;
-    } else {
-      out[path] = j;
-    }
-  }
-
   // Where the bus run's query time went: nothing in-process; over the bus the parts add up to
   // the round trips (they telescope from the first send to the reply handled; what they leave out
   // is the service's few instructions between its evaluation and the reply's stamp and the
@@ -135,8 +124,8 @@ class InProcessComparisonTest : public BusTest {
     EXPECT_EQ(bus["in_process"], false);
 
     std::map<std::string, nlohmann::json> a, b;
-    leaves(local, "", a);
-    leaves(bus, "", b);
+    json_leaves(local, "", a);
+    json_leaves(bus, "", b);
     std::set<std::string> not_compared{"run_id", "in_process", "wall_time", "counters.contact_retries",
                                        "counters.contact_timeouts"};
     for (const char* part : kBusTimes) not_compared.insert(std::string("counters.") + part);

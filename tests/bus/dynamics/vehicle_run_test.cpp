@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bus_fixture.hpp"
+#include "json_leaves.hpp"
 
 namespace wrc::bus::test {
 namespace {
@@ -38,17 +39,6 @@ class VehicleRunTest : public BusTest {
     std::ifstream in(summary);
     return in ? nlohmann::json::parse(in) : nlohmann::json{};
   }
-
-  static void leaves(const nlohmann::json& j, const std::string& path, std::map<std::string, nlohmann::json>& out) {
-    if (j.is_object()) {
-      for (auto it = j.begin(); it != j.end(); ++it) leaves(it.value(), path.empty() ? it.key() : path + "." + it.key(), out);
-    } else if (j.is_array()) {
-      for (size_t k = 0; k < j.size(); ++k) leaves(j[k], path + "[" + std::to_string(k) + "]", out);
-      if (j.empty()) out[path] = j;
-    } else {
-      out[path] = j;
-    }
-  }
 };
 
 TEST_F(VehicleRunTest, TheSingleWheelsetFileIsTheBenchmarkBitForBit) {
@@ -63,8 +53,8 @@ TEST_F(VehicleRunTest, TheSingleWheelsetFileIsTheBenchmarkBitForBit) {
   EXPECT_NE(log.find("vehicle: 'benchmark single wheelset'"), std::string::npos) << log;
   ASSERT_EQ(benchmark.value("state", ""), "finished") << benchmark.dump();
   std::map<std::string, nlohmann::json> a, b;
-  leaves(benchmark, "", a);
-  leaves(from_file, "", b);
+  json_leaves(benchmark, "", a);
+  json_leaves(from_file, "", b);
   ASSERT_GT(a.size(), 100u);
   EXPECT_EQ(a.size(), b.size());
   for (const auto& [path, value] : a) {

@@ -8,9 +8,6 @@
 #include "core/dynamics/sundials_support.hpp"
 
 namespace wrc {
-namespace {
-
-}  // namespace
 
 struct IdaIntegrator::Impl {
   explicit Impl(DaeSystem& s) : system(s) {}

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/wheelset_contact.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <iterator>
 #include <stdexcept>
@@ -58,25 +59,21 @@ std::vector<double> WheelsetContact::key_of(const double* y) const {
   return key;
 }
 
-const ContactResult* WheelsetContact::cached(const std::vector<double>& key) const {
-  for (const CachedContact& c : cache_)
-    if (c.key.size() == key.size() && std::memcmp(c.key.data(), key.data(), key.size() * sizeof(double)) == 0)
-      return &c.result;
-  return nullptr;
+std::deque<WheelsetContact::CachedContact>::iterator WheelsetContact::find(const std::vector<double>& key) {
+  return std::find_if(cache_.begin(), cache_.end(), [&key](const CachedContact& c) {
+    return c.key.size() == key.size() && std::memcmp(c.key.data(), key.data(), key.size() * sizeof(double)) == 0;
+  });
 }
 
 bool WheelsetContact::keep_last(const std::vector<double>& key) {
-  for (auto c = cache_.begin(); c != cache_.end(); ++c) {
-    if (c->key.size() != key.size() || std::memcmp(c->key.data(), key.data(), key.size() * sizeof(double)) != 0)
-      continue;
-    if (std::next(c) != cache_.end()) {
-      CachedContact kept = std::move(*c);
-      cache_.erase(c);
-      cache_.push_back(std::move(kept));
-    }
-    return true;
+  const auto found = find(key);
+  if (found == cache_.end()) return false;
+  if (std::next(found) != cache_.end()) {
+    CachedContact kept = std::move(*found);
+    cache_.erase(found);
+    cache_.push_back(std::move(kept));
   }
-  return false;
+  return true;
 }
 
 void WheelsetContact::fetch(const std::vector<const double*>& states) {
@@ -104,14 +101,14 @@ const ContactResult& WheelsetContact::at(const double* y, const std::vector<cons
   std::vector<const double*> states{y};
   states.insert(states.end(), also.begin(), also.end());
   fetch(states);
-  return *cached(key_of(y));  // y's result is cached: at most kCacheSize states were fetched
+  return find(key_of(y))->result;  // y's result is cached: at most kCacheSize states were fetched
 }
 
 std::vector<ContactResult> WheelsetContact::at_each(const std::vector<const double*>& states) {
   fetch(states);
   std::vector<ContactResult> results;
   results.reserve(states.size());
-  for (const double* y : states) results.push_back(*cached(key_of(y)));
+  for (const double* y : states) results.push_back(find(key_of(y))->result);
   return results;
 }
 

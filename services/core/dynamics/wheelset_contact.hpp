@@ -71,7 +71,8 @@ class WheelsetContact {
   /// What the contact at y depends on besides the evaluator: the unknowns that enter the query,
   /// the followed branches, the track's curvature and (irregularities) the rails' offsets.
   std::vector<double> key_of(const double* y) const;
-  const ContactResult* cached(const std::vector<double>& key) const;
+  /// The cached entry of key, or cache_.end().
+  std::deque<CachedContact>::iterator find(const std::vector<double>& key);
   /// Moves the cached result of key to the back of the cache (the last to be pushed out);
   /// false when key is not cached.
   bool keep_last(const std::vector<double>& key);

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/single_wheelset_vehicle.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace wrc {
 namespace {
+
+// [m] how far two places the file gives may differ and still be one: rounding of typed decimals.
+constexpr double kSamePlace = 1e-9;
 
 std::string text(const std::array<double, 3>& v) {
   std::ostringstream out;
@@ -31,7 +35,8 @@ double axle_box(const VehicleDescription& v, const VehicleBody& wheelset, const 
   if (at[0] != 0.0 || at[2] != 0.0 || at[1] == 0.0)
     refuse(v, where + "attachments: " + text(at) + " [m] on the wheelset is no axle box (0, +-b, 0) with b > 0");
   for (int k = 0; k < 3; ++k) {
-    if (on_track[static_cast<size_t>(k)] != wheelset.position[static_cast<size_t>(k)] + at[static_cast<size_t>(k)])
+    const size_t u = static_cast<size_t>(k);
+    if (std::abs(on_track[u] - (wheelset.position[u] + at[u])) > kSamePlace)
       refuse(v, where + "attachments: " + text(on_track) +
                     " [m] on the track: the spring is not unstretched in the nominal position (the body's position "
                     "plus " + text(at) + ")");
@@ -65,7 +70,7 @@ void apply_single_wheelset(const VehicleDescription& vehicle, WheelsetParameters
     const VehicleElement& a = vehicle.elements[0];
     const VehicleElement& b = vehicle.elements[1];
     const double ya = axle_box(vehicle, w, a), yb = axle_box(vehicle, w, b);
-    if (ya != -yb) refuse(vehicle, "element '" + b.name + "': attachments: not the mirror image of '" + a.name + "'");
+    if (std::abs(ya + yb) > kSamePlace) refuse(vehicle, "element '" + b.name + "': attachments: not the mirror image of '" + a.name + "'");
     if (a.stiffness != b.stiffness || a.damping != b.damping)
       refuse(vehicle, "element '" + b.name + "': stiffness, damping: not those of '" + a.name + "'");
     s.longitudinal_stiffness = a.stiffness[0];

@@ -19,7 +19,7 @@ namespace wrc {
 /// external force; no element, or two spring_dampers to the track at the axle boxes (0, +-b, 0)
 /// of the wheelset (b > 0), mirror images of each other with equal stiffness and damping, each
 /// unstretched in the nominal position (its track point is the body's position plus its wheelset
-/// point). The nominal height is the centred wheelset's in contact, as for the run parameters.
+/// point; places within 1e-9 m count as one). The nominal height is the centred wheelset's in contact, as for the run parameters.
 /// @throws std::invalid_argument "vehicle 'NAME': body or element 'X': key: reason" for anything else.
 void apply_single_wheelset(const VehicleDescription& vehicle, WheelsetParameters& p);
 

@@ -511,7 +511,7 @@ bool WheelsetSimulation::advance() {
     last_solver_message_.clear();
     return after_step(integrator_.step(spec_.integrator.t_end));
   } catch (const std::exception& e) {
-    fail(e.what());
+    fail("at t = " + format_time(t_) + " s: " + e.what());
     return false;
   }
 }

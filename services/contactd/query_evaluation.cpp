@@ -4,7 +4,9 @@
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "core/model_interface/followed_points.hpp"
 #include "core/model_interface/no_contact_error.hpp"
 #include "core/numerics/number_text.hpp"
 #include "protocol/contact/contact_query_codec.hpp"
@@ -25,12 +27,19 @@ void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query
   reply.message.clear();
   reply.num_configurations = query.num_configurations;
   reply.results.assign(static_cast<std::size_t>(query.num_configurations), wrc::contact_result_t{});
+  // Each configuration's answer, for the ones that follow it (ContactQuery::follows).
+  std::vector<ContactResult> results(static_cast<std::size_t>(query.num_configurations));
+  std::vector<const ContactResult*> answered;
   for (int i = 0; i < query.num_configurations; ++i) {
     wrc::contact_result_t& out = reply.results[static_cast<std::size_t>(i)];
     std::int8_t status = wrc::contact_reply_t::OK;
     std::string why;
     try {
-      protocol::to_result_message(model.evaluate(protocol::to_contact_query(query, i)), out);
+      ContactQuery q = protocol::to_contact_query(query, i);
+      apply_follows(answered, i, q);
+      results[static_cast<std::size_t>(i)] = model.evaluate(q);
+      answered.push_back(&results[static_cast<std::size_t>(i)]);
+      protocol::to_result_message(results[static_cast<std::size_t>(i)], out);
     } catch (const NoContactError& e) {
       status = wrc::contact_reply_t::NO_CONTACT;
       why = e.what();
@@ -51,6 +60,7 @@ void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query
       why = "unknown exception";
     }
     if (status == wrc::contact_reply_t::OK) continue;
+    if (answered.size() == static_cast<std::size_t>(i)) answered.push_back(nullptr);  // no answer to follow
     out = wrc::contact_result_t{};
     out.status = status;
     if (protocol::contact_status_severity(status) > protocol::contact_status_severity(reply.status)) {

@@ -6,6 +6,7 @@
 
 #include "bus/transport/channels.hpp"
 #include "bus/transport/clock.hpp"
+#include "core/model_interface/followed_points.hpp"
 #include "protocol/contact/contact_query_codec.hpp"
 
 namespace wrc::dynamics {
@@ -28,9 +29,19 @@ std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>&
     std::size_t end = begin + 1;
     while (end < batch.size() && protocol::shares_query_fields(batch[begin], batch[end])) ++end;
     if (begin == 0 && end == batch.size()) return evaluate_message(batch);
-    std::vector<ContactResult> part =
-        evaluate_message(std::vector<ContactQuery>(batch.begin() + static_cast<std::ptrdiff_t>(begin),
-                                                   batch.begin() + static_cast<std::ptrdiff_t>(end)));
+    std::vector<ContactQuery> queries(batch.begin() + static_cast<std::ptrdiff_t>(begin),
+                                      batch.begin() + static_cast<std::ptrdiff_t>(end));
+    for (ContactQuery& q : queries) {
+      if (q.follows == 0) continue;
+      const std::size_t followed = static_cast<std::size_t>(q.follows - 1);
+      if (followed < begin) {  // one of an earlier message, answered: followed here
+        follow_answered_points(out[followed], q.tracked_s_wheel, q.second_tracked_s_wheel);
+        q.follows = 0;
+      } else {
+        q.follows -= static_cast<int>(begin);  // one of this message
+      }
+    }
+    std::vector<ContactResult> part = evaluate_message(queries);
     for (ContactResult& r : part) out.push_back(std::move(r));
     begin = end;
   }

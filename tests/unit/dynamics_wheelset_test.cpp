@@ -277,9 +277,9 @@ TEST(RunParameterFile, ShippedLowFrictionFileDiffersOnlyInFriction) {
 // model does outside its range, refuses every configuration (ContactConfigurationError).
 class FailingAfter final : public ContactEvaluator {
  public:
-  explicit FailingAfter(long answers)
-      : model_(make_contact_model("multipoint", test::s1002_uic60_geometry())), left_(answers) {}
-  std::string model() const override { return "multipoint"; }
+  FailingAfter(const std::string& model, long answers)
+      : model_(make_contact_model(model, test::s1002_uic60_geometry())), left_(answers) {}
+  std::string model() const override { return model_->name(); }
   std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch) override {
     if (--left_ < 0) throw ContactConfigurationError("test: configuration refused");
     std::vector<ContactResult> out;
@@ -295,18 +295,35 @@ class FailingAfter final : public ContactEvaluator {
 // When the integrator gives up, the run's message has the contact's error and IDA's own text, and
 // IDA prints nothing itself (its messages go to the run: a failure the run recovers from, a
 // convergence restart of rigid contact, would otherwise print "[IDA ERROR]" to a user's terminal).
+// Rigid contact (onepoint): the evaluation that fails first is one IDA asks for, the event
+// functions' at an accepted step.
 TEST(WheelsetSimulation, SolverFailureMessageHasIdasTextAndNothingIsPrinted) {
   RunSpec spec;
   spec.integrator.t_end = 1.0;
-  WheelsetSimulation sim(spec, std::make_shared<FailingAfter>(200), kR0);
+  WheelsetSimulation sim(spec, std::make_shared<FailingAfter>("onepoint", 200), kR0);
   testing::internal::CaptureStderr();
   sim.run();
   const std::string printed = testing::internal::GetCapturedStderr();
   ASSERT_EQ(sim.state(), RunState::kFailed);
   EXPECT_NE(sim.message().find("IDASolve failed"), std::string::npos) << sim.message();
   EXPECT_NE(sim.message().find("test: configuration refused"), std::string::npos) << sim.message();
-  EXPECT_NE(sim.message().find("(IDASolve: "), std::string::npos) << sim.message();
+  EXPECT_NE(sim.message().find("(IDARcheck3: "), std::string::npos) << sim.message();  // IDA's function and text
   EXPECT_EQ(printed.find("IDA ERROR"), std::string::npos) << printed;
+  std::cout << "[ measured ] " << sim.message() << "\n";
+}
+
+// Elastic contact (multipoint) has no event functions: the accepted step's contact is asked for
+// after IDA returns (with the next step's states, WheelsetSimulation::after_step), and a failure
+// there ends the run with the contact's error and the time of the step.
+TEST(WheelsetSimulation, AFailureAfterTheStepNamesItsTime) {
+  RunSpec spec;
+  spec.integrator.t_end = 1.0;
+  WheelsetSimulation sim(spec, std::make_shared<FailingAfter>("multipoint", 200), kR0);
+  sim.run();
+  ASSERT_EQ(sim.state(), RunState::kFailed);
+  EXPECT_EQ(sim.message().rfind("at t = ", 0), 0u) << sim.message();
+  EXPECT_NE(sim.message().find(" s: test: configuration refused"), std::string::npos) << sim.message();
+  EXPECT_GT(sim.counters().steps, 50);
   std::cout << "[ measured ] " << sim.message() << "\n";
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <ida/ida_impl.h>
+
 #include "core/dynamics/sundials_support.hpp"
 
 namespace wrc {
@@ -120,11 +122,74 @@ bool IdaIntegrator::newton_matrix_expected() const {
   if (!m.ida || std::isnan(m.newton_matrix_cj)) return true;
   double cj = 0;
   check_sundials(IDAGetCurrentCj(m.ida.mem(), &cj), "IDAGetCurrentCj");
+  return newton_matrix_expected(cj);
+}
+
+bool IdaIntegrator::newton_matrix_expected(double cj) const {
+  const Impl& m = *impl_;
+  if (std::isnan(m.newton_matrix_cj)) return true;
   // IDA's rule (its nonlinear solver's set-up decision): a new matrix when cj / cjold leaves
   // [(1 - dcj) / (1 + dcj), (1 + dcj) / (1 - dcj)].
   const double ratio = cj / m.newton_matrix_cj;
   const double low = (1.0 - m.newton_matrix_cj_change) / (1.0 + m.newton_matrix_cj_change);
   return ratio < low || ratio > 1.0 / low;
+}
+
+double IdaIntegrator::current_time() const {
+  double t = 0;
+  check_sundials(IDAGetCurrentTime(impl_->ida.mem(), &t), "IDAGetCurrentTime");
+  return t;
+}
+
+std::optional<IdaIntegrator::NextStep> IdaIntegrator::next_step() const {
+  const Impl& m = *impl_;
+  if (!m.ida) return std::nullopt;
+  // IDA's own data (ida_impl.h) and its order of operations (IDASetCoeffs, IDAPredict, the
+  // nonlinear solver's first residual at the predictor plus a zero correction), so that the
+  // forecast is the residual's state to the last bit.
+  const IDAMem ida = static_cast<IDAMem>(m.ida.mem());
+  if (ida->ida_nst == 0) return std::nullopt;
+  double hh = ida->ida_hh;
+  const double tn = ida->ida_tn;
+  if (ida->ida_tstopset) {
+    const double troundoff = 100.0 * ida->ida_uround * (std::abs(tn) + std::abs(hh));
+    if (std::abs(tn - ida->ida_tstop) <= troundoff) return std::nullopt;
+    if ((tn + hh - ida->ida_tstop) * hh > 0.0) hh = (ida->ida_tstop - tn) * (1.0 - 4.0 * ida->ida_uround);
+  }
+  const int kk = ida->ida_kk;
+  int ns = (hh != ida->ida_hused || kk != ida->ida_kused) ? 0 : ida->ida_ns;
+  ns = std::min(ns + 1, ida->ida_kused + 2);
+  double beta[MXORDP1];
+  double psi[MXORDP1];
+  std::copy(ida->ida_beta, ida->ida_beta + MXORDP1, beta);
+  std::copy(ida->ida_psi, ida->ida_psi + MXORDP1, psi);
+  if (kk + 1 >= ns) {
+    beta[0] = 1.0;
+    double temp1 = hh;
+    for (int i = 1; i <= kk; ++i) {
+      const double temp2 = psi[i - 1];
+      psi[i - 1] = temp1;
+      beta[i] = beta[i - 1] * psi[i - 1] / temp2;
+      temp1 = temp2 + hh;
+    }
+  }
+  NextStep next;
+  double alphas = 0.0;
+  for (int i = 0; i < kk; ++i) alphas = alphas - 1.0 / (i + 1);
+  next.cj = -alphas / hh;
+  next.t = tn + hh;
+  if (ida->ida_tstopset && (next.t - ida->ida_tstop) * hh > 0.0) next.t = ida->ida_tstop;
+  const long n = m.y->size();
+  next.y.assign(static_cast<size_t>(n), 0.0);
+  for (long i = 0; i < n; ++i) {
+    double z = N_VGetArrayPointer(ida->ida_phi[0])[i];
+    for (int j = 1; j <= kk; ++j) {
+      const double phi = N_VGetArrayPointer(ida->ida_phi[j])[i];
+      z = (j >= ns ? beta[j] * phi : phi) + z;
+    }
+    next.y[static_cast<size_t>(i)] = z + 0.0;
+  }
+  return next;
 }
 
 std::vector<int> IdaIntegrator::root_info(int root_count) const {

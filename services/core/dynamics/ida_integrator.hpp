@@ -7,6 +7,7 @@
 /// arrays and a column-major view of the iteration matrix.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/dynamics/run_counters.hpp"
@@ -89,6 +90,22 @@ class IdaIntegrator {
   /// nobody forecast), so the system may fetch ahead what the Jacobian will need, never decide
   /// anything by it.
   bool newton_matrix_expected() const;
+  /// Whether a step with coefficient cj [1/s] would build a new Newton matrix (the same rule).
+  bool newton_matrix_expected(double cj) const;
+  /// IDA's current time: the time of the last step's state while IDA evaluates the event functions
+  /// there [s].
+  double current_time() const;
+  /// Where IDA's next step will ask its first residual, as IDA will compute it (after a step,
+  /// from IDA's divided differences and its next step size and order): t [s] and the predicted
+  /// state. Empty before the first step and where the stop time ends the run. A forecast: a
+  /// failed error test or corrector changes the step, so it may only be fetched ahead, never used
+  /// as the residual's state.
+  struct NextStep {
+    double t = 0;           ///< [s]
+    std::vector<double> y;  ///< the predicted state
+    double cj = 0;          ///< the step's coefficient cj [1/s]
+  };
+  std::optional<NextStep> next_step() const;
   /// Which event functions found a root at the last step (one flag per event function).
   std::vector<int> root_info(int root_count) const;
   /// IDA's counters of this segment (steps, evaluations, failures, last order and step).

@@ -54,6 +54,11 @@ const std::vector<RunCounter>& run_counter_table() {
       counter("floored_time", "s", "simulated time of the steps ending with such a patch", &C::floored_time),
       counter("contact_queries", "-", "contact evaluations asked for (a batch counts once)", &C::contact_queries),
       counter("contact_configurations", "-", "configurations in them", &C::contact_configurations),
+      counter("contact_sent_ahead", "-",
+              "of those, sent before they were asked for: the next step's first state and Newton matrix with the "
+              "accepted step's, a Newton matrix with its residual",
+              &C::contact_sent_ahead),
+      counter("contact_ahead_used", "-", "of those, asked for later (answered from the cache)", &C::contact_ahead_used),
       counter("contact_retries", "-", "contact queries re-sent after a timeout (over the bus)", &C::contact_retries),
       counter("contact_timeouts", "-", "attempt rounds without a reply (the run waited for a service)",
               &C::contact_timeouts),

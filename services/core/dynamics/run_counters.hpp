@@ -30,6 +30,8 @@ struct RunCounters {
   double floored_time = 0;     ///< simulated time of the steps ending with such a patch [s]
   long contact_queries = 0;    ///< contact evaluations asked for (a batch counts once) [-]
   long contact_configurations = 0;  ///< configurations in them [-]
+  long contact_sent_ahead = 0;  ///< of those, sent before they were asked for: the next step's first state and Newton matrix with the accepted step's, a Newton matrix with its residual [-]
+  long contact_ahead_used = 0;  ///< of those, asked for later (answered from the cache) [-]
   long contact_retries = 0;    ///< contact queries re-sent after a timeout (over the bus) [-]
   long contact_timeouts = 0;   ///< attempt rounds without a reply (the run waited for a service) [-]
   long contact_failovers = 0;  ///< queries sent to every other READY instance after a round without a reply [-]

@@ -33,12 +33,27 @@ class WheelsetContact {
   /// Unknowns of the current formulation and branches (unknown_count()).
   int unknowns() const { return unknown_count(formulation_, branches_.any_two_point()); }
 
+  /// A state whose contact travels with another's (at(y, ahead)): its query, prepared under the
+  /// track placement of its own time (ahead()), the placement part of its cache key, and whether
+  /// it follows the points answered for the state it travels with (a state the caller will ask
+  /// after follow()ing that answer, e.g. the next step's predictor after an accepted step).
+  struct Ahead {
+    std::vector<double> state;
+    ContactQuery query;
+    std::vector<double> placement;
+    bool follows = false;
+  };
+  /// The Ahead of the state y under the equations' current placement.
+  Ahead ahead(const double* y, bool follows) const;
+
   /// The contact at the state y, usually from the cache; valid until the next call.
   const ContactResult& at(const double* y) { return at(y, {}); }
-  /// The contact at the state y as at(y), and at each state of also that is not cached yet, all
-  /// in one evaluation (one round trip), every result cached: e.g. with the states a Jacobian at
-  /// y will perturb. At most contact_cache_size() states in all.
-  const ContactResult& at(const double* y, const std::vector<const double*>& also);
+  /// The contact at the state y as at(y), and at each state of ahead whose contact is not cached
+  /// yet, all in one evaluation (one round trip), every result cached under the key the state will
+  /// have when it is asked (for one that follows: with the branches follow() will give). Should
+  /// that evaluation be refused (ContactConfigurationError), y is evaluated alone, as without
+  /// ahead. At most contact_cache_size() states in all.
+  const ContactResult& at(const double* y, const std::vector<Ahead>& ahead);
   /// The contact at each state, from the cache where it is there, the rest in one evaluation
   /// (cached too). At most contact_cache_size() states.
   std::vector<ContactResult> at_each(const std::vector<const double*>& states);
@@ -60,24 +75,38 @@ class WheelsetContact {
   /// cleared.
   void replace(std::shared_ptr<ContactEvaluator> evaluator, ContactFormulation f, const FollowedBranches& branches);
 
-  /// contact_queries and contact_configurations so far; every other counter 0.
+  /// contact_queries, contact_configurations, contact_sent_ahead and contact_ahead_used so far;
+  /// every other counter 0.
   const RunCounters& counters() const { return counters_; }
 
  private:
   struct CachedContact {
     std::vector<double> key;
     ContactResult result;
+    bool ahead = false;  ///< sent before it was asked for, not asked for since
   };
   /// What the contact at y depends on besides the evaluator: the unknowns that enter the query,
-  /// the followed branches, the track's curvature and (irregularities) the rails' offsets.
-  std::vector<double> key_of(const double* y) const;
+  /// the followed branches, and the placement (placement_key()).
+  std::vector<double> key_of(const double* y, const FollowedBranches& branches,
+                             const std::vector<double>& placement) const;
+  std::vector<double> key_of(const double* y) const { return key_of(y, branches_, placement_key()); }
+  /// The placement part of a key: the track's curvature (it enters the query's yaw rate and
+  /// speed) and (irregularities) the rails' offsets and rates.
+  std::vector<double> placement_key() const;
+  /// Caches result under key, pushing out the oldest entry when full; ahead: sent before it was
+  /// asked for (counted in contact_sent_ahead).
+  void store(std::vector<double> key, ContactResult result, bool ahead);
   /// The cached entry of key, or cache_.end().
   std::deque<CachedContact>::iterator find(const std::vector<double>& key);
   /// Moves the cached result of key to the back of the cache (the last to be pushed out);
   /// false when key is not cached.
   bool keep_last(const std::vector<double>& key);
+  /// keep_last() for a state asked for now: one sent ahead counts in contact_ahead_used.
+  bool asked_and_cached(const std::vector<double>& key);
   /// Evaluates the states whose contact is not cached, in one batch, and caches the results.
   void fetch(const std::vector<const double*>& states);
+  /// at(y, ahead)'s evaluation; throws what the evaluator throws.
+  void fetch_with(const double* y, const std::vector<Ahead>& ahead);
   std::shared_ptr<ContactEvaluator> evaluator_;
   const WheelsetEquations& equations_;
   bool rails_move_;

@@ -50,9 +50,16 @@ std::vector<const double*> JacobianPerturbations::queried() const {
   return q;
 }
 
+std::vector<WheelsetContact::Ahead> jacobian_ahead(const WheelsetContact& contact, const double* y, bool follows) {
+  const JacobianPerturbations perturbations = jacobian_perturbations(contact, y);  // the states queried() points into
+  std::vector<WheelsetContact::Ahead> ahead;
+  for (const double* state : perturbations.queried()) ahead.push_back(contact.ahead(state, follows));
+  return ahead;
+}
+
 const ContactResult& residual_contact(WheelsetContact& contact, const double* y, bool newton_matrix_expected) {
   if (!newton_matrix_expected) return contact.at(y);
-  return contact.at(y, jacobian_perturbations(contact, y).queried());
+  return contact.at(y, jacobian_ahead(contact, y, false));
 }
 
 void wheelset_jacobian(const WheelsetEquations& equations, WheelsetContact& contact, double cj, const double* y,

@@ -29,6 +29,11 @@ struct JacobianPerturbations {
 };
 JacobianPerturbations jacobian_perturbations(const WheelsetContact& contact, const double* y);
 
+/// The states the Jacobian at y perturbs that change the contact query, as WheelsetContact::Ahead
+/// under the current placement (follows: whether they follow the points answered for the state
+/// they travel with).
+std::vector<WheelsetContact::Ahead> jacobian_ahead(const WheelsetContact& contact, const double* y, bool follows);
+
 /// The contact at y for a residual. Where IDA will build a new Newton matrix right after this
 /// residual (IdaIntegrator::newton_matrix_expected()), the contact of every state the Jacobian at y
 /// perturbs comes in the same evaluation, so that the Jacobian finds it cached: one round trip

@@ -130,10 +130,28 @@ void WheelsetSimulation::message(const char* function, const char* text) {
   last_solver_message_ = std::string(function ? function : "IDA") + ": " + (text ? text : "");
 }
 
+std::vector<WheelsetContact::Ahead> WheelsetSimulation::next_step_ahead(double t) {
+  const std::optional<IdaIntegrator::NextStep> next = integrator_.next_step();
+  if (!next) return {};
+  // After an accepted step a rigid run follows its points (check_branches()), so the next step's
+  // queries follow the answer for the accepted state; an elastic run follows none.
+  const bool follows = contact_.formulation() == ContactFormulation::kRigid;
+  place_on_track(next->t);
+  std::vector<WheelsetContact::Ahead> ahead{contact_.ahead(next->y.data(), follows)};
+  if (integrator_.newton_matrix_expected(next->cj)) {
+    std::vector<WheelsetContact::Ahead> jacobian = jacobian_ahead(contact_, next->y.data(), follows);
+    ahead.insert(ahead.end(), jacobian.begin(), jacobian.end());
+  }
+  place_on_track(t);
+  return ahead;
+}
+
 int WheelsetSimulation::roots(double t, const double* y, double* g) {
   place_on_track(t);
   try {
-    const ContactResult& c = contact_.at(y);
+    // At the accepted step's state (IDA's current time) the next step's first residual, and its
+    // Jacobian's states where a new Newton matrix is due, travel with this query.
+    const ContactResult& c = t == integrator_.current_time() ? contact_.at(y, next_step_ahead(t)) : contact_.at(y);
     event_functions(c, y, contact_.branches(), g);
     return 0;
   } catch (const std::exception& e) {
@@ -442,6 +460,8 @@ bool WheelsetSimulation::after_step(const IdaStep& step) {
   if (step_size > 0) convergence_restarts_in_a_row_ = 0;
   t_ = step.t;
   place_on_track(t_);
+  // Elastic contact has no event functions: the accepted state is first asked here.
+  if (!rigid) contact_.at(integrator_.state_data(), next_step_ahead(t_));
   record_step_contact(false);
   // Conformal patches (Hertz's floor on the lateral curvature) at the accepted step.
   long floored = 0;
@@ -491,7 +511,7 @@ bool WheelsetSimulation::advance() {
     last_solver_message_.clear();
     return after_step(integrator_.step(spec_.integrator.t_end));
   } catch (const std::exception& e) {
-    fail(e.what());
+    fail("at t = " + format_time(t_) + " s: " + e.what());
     return false;
   }
 }

@@ -111,6 +111,10 @@ class WheelsetSimulation : private DaeSystem {
   int residual(double t, const double* y, const double* yp, double* r) override;
   int jacobian(double t, double cj, const double* y, const double* yp, const double* r, DenseMatrixView jac) override;
   int roots(double t, const double* y, double* g) override;
+  /// The states IDA's next step will ask first (its predictor and, where a new Newton matrix is
+  /// due, the Jacobian's perturbations of it), to travel with the query of the accepted state at
+  /// time t [s]; empty where IDA has no next step to forecast.
+  std::vector<WheelsetContact::Ahead> next_step_ahead(double t);
   /// IDA's error and warning text: kept for the run's failure message instead of printed (a
   /// failure the run recovers from, a convergence restart, is no error for the user).
   void message(const char* function, const char* text) override;

@@ -71,6 +71,11 @@ struct ContactQuery {
   /// the track's irregularities (rail_offset.hpp; all 0: the nominal track). Each wheel is
   /// evaluated against its own rail (RailFrame); the result stays in the track frame.
   std::array<RailOffset, 2> rail_offsets{};
+  /// In a batch: 0, or k >= 1: this configuration follows the points answered for configuration
+  /// k - 1 of the same batch (an earlier one): before it is evaluated, its tracked_s_wheel (and
+  /// second_tracked_s_wheel where set) become that answer's points (apply_follows(),
+  /// core/model_interface/followed_points.hpp) [-].
+  int follows = 0;
 };
 
 /// switch_function of a model whose contact point never jumps [m].

@@ -144,6 +144,7 @@ ContactQuery to_contact_query(const wrc::contact_query_t& q, int index) {
   out.tracked_s_wheel = {c.tracked_s_wheel_left, c.tracked_s_wheel_right};
   out.second_tracked_s_wheel = {c.second_tracked_s_wheel_left, c.second_tracked_s_wheel_right};
   out.second_normal_load = {c.second_normal_load_left, c.second_normal_load_right};
+  out.follows = c.follows;
   for (std::size_t i = 0; i < 2; ++i) {
     RailOffset& rail = out.rail_offsets[i];
     rail.lateral = c.rail_lateral[i];
@@ -175,6 +176,7 @@ void to_configuration_message(const ContactQuery& query, wrc::wheelset_configura
   c.second_tracked_s_wheel_right = query.second_tracked_s_wheel[1];
   c.second_normal_load_left = query.second_normal_load[0];
   c.second_normal_load_right = query.second_normal_load[1];
+  c.follows = static_cast<std::int16_t>(query.follows);
   for (std::size_t i = 0; i < 2; ++i) {
     const RailOffset& rail = query.rail_offsets[i];
     c.rail_lateral[i] = rail.lateral;

@@ -80,6 +80,8 @@ const std::vector<MessageField<integrator_stats_t>>& stats_fields() {
       WRC_MESSAGE_FIELD(M, floored_time),
       WRC_MESSAGE_FIELD(M, contact_queries),
       WRC_MESSAGE_FIELD(M, contact_configurations),
+      WRC_MESSAGE_FIELD(M, contact_sent_ahead),
+      WRC_MESSAGE_FIELD(M, contact_ahead_used),
       WRC_MESSAGE_FIELD(M, contact_retries),
       WRC_MESSAGE_FIELD(M, contact_timeouts),
       WRC_MESSAGE_FIELD(M, contact_failovers),

@@ -85,6 +85,7 @@ std::vector<ContactQuery> distinct_batch(Distinct& d, ContactFormulation formula
     q.second_normal_load = {d.next(1.2e3), i == 2 ? 0.0 : d.next(2.3e3)};
     for (RailOffset& r : q.rail_offsets)
       r = {d.next(1.1e-3), d.next(-0.7e-3), d.next(2.1e-3), d.next(0.013), d.next(-0.021), d.next(0.0031)};
+    q.follows = static_cast<int>(i);  // 0 (none), then the configurations before
   }
   return batch;
 }
@@ -118,6 +119,7 @@ void expect_same_query(const ContactQuery& got, const ContactQuery& want, const 
   expect_same(got.material.friction, want.material.friction, at + "friction");
   EXPECT_EQ(got.fastsim_elements, want.fastsim_elements) << at << "fastsim_elements";
   EXPECT_EQ(got.fastsim_strips, want.fastsim_strips) << at << "fastsim_strips";
+  EXPECT_EQ(got.follows, want.follows) << at << "follows";
   for (int w = 0; w < 2; ++w) {
     const std::string side = w == 0 ? "[left]" : "[right]";
     expect_same(got.normal_load[w], want.normal_load[w], at + "normal_load" + side);
@@ -160,6 +162,9 @@ TEST(ContactCodecRoundTrip, ConfigurationMessageFieldsByName) {
   EXPECT_EQ(c.second_tracked_s_wheel_right, q.second_tracked_s_wheel[1]);
   EXPECT_EQ(c.second_normal_load_left, q.second_normal_load[0]);
   EXPECT_EQ(c.second_normal_load_right, q.second_normal_load[1]);
+  const ContactQuery q2 = distinct_batch(d, ContactFormulation::kRigid)[2];
+  to_configuration_message(q2, c);
+  EXPECT_EQ(c.follows, 2);
 }
 
 // to_query_message: the shared fields from the first query under their message names, one

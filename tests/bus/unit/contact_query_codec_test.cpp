@@ -19,6 +19,7 @@
 #include <string>
 
 #include "contactd/query_evaluation.hpp"
+#include "core/dynamics/contact_evaluator.hpp"
 #include "core/model_interface/no_contact_error.hpp"
 #include "core/model_interface/query_validation.hpp"
 #include "core/models/contact_model_factory.hpp"
@@ -392,6 +393,43 @@ TEST(QueryAdapter, StatusesOfRealModels) {
   EXPECT_EQ(reply.results[1].status, wrc::contact_reply_t::OUTSIDE_MODEL);
   EXPECT_EQ(reply.status, wrc::contact_reply_t::OUTSIDE_MODEL);
   EXPECT_NE(reply.message.find("configuration 1 (y=0.006"), std::string::npos) << reply.message;
+}
+
+// A configuration that follows an earlier one's answer (wheelset_configuration_t::follows) is
+// answered as in-process (InProcessContact, the same rule), to the last bit: S1002 on UIC60 at
+// 5.5 mm following the tread point answered at 5 mm, where the lowest point is another. One that
+// follows a configuration without an answer is a BAD_REQUEST naming both.
+TEST(QueryAdapter, FollowsAnEarlierConfigurationsAnswer) {
+  wrc::contact_query_t q = distinct_query();
+  q.formulation = wrc::contact_query_t::RIGID;
+  for (auto& c : q.configurations) c.z = 0.46, c.roll = 0.0, c.yaw = 0.0, c.normal_load_left = c.normal_load_right = 8e4;
+  q.configurations[0].y = 0.005;
+  q.configurations[1].y = 0.0055;
+  q.configurations[1].follows = 1;
+  const std::shared_ptr<const ContactModel> onepoint = make_contact_model("onepoint", s1002_uic60());
+  wrc::contact_reply_t reply{};
+  contactd::evaluate_query(*onepoint, q, reply);
+  ASSERT_EQ(reply.status, wrc::contact_reply_t::OK) << reply.message;
+  InProcessContact in_process(onepoint);
+  const std::vector<ContactResult> want = in_process.evaluate({to_contact_query(q, 0), to_contact_query(q, 1)});
+  const ContactResult got = from_result_message(reply.results[1]);
+  for (size_t w = 0; w < 2; ++w) {
+    EXPECT_EQ(got.wheels[w].s_wheel, want[1].wheels[w].s_wheel) << "wheel " << w;
+    EXPECT_EQ(got.wheels[w].gap, want[1].wheels[w].gap) << "wheel " << w;
+  }
+  q.configurations[1].follows = 0;  // the lowest point instead
+  q.configurations[1].tracked_s_wheel_left = q.configurations[1].tracked_s_wheel_right =
+      std::numeric_limits<double>::quiet_NaN();
+  contactd::evaluate_query(*onepoint, q, reply);
+  EXPECT_NE(from_result_message(reply.results[1]).wheels[0].s_wheel, got.wheels[0].s_wheel) << "following matters here";
+
+  q.configurations[0].y = 0.05;  // IMPOSSIBLE_CONFIGURATION: no answer to follow
+  q.configurations[1].follows = 1;
+  contactd::evaluate_query(*onepoint, q, reply);
+  EXPECT_EQ(reply.results[0].status, wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION);
+  EXPECT_EQ(reply.results[1].status, wrc::contact_reply_t::BAD_REQUEST);
+  EXPECT_NE(reply.message.find("configuration 1: follows 1: configuration 0 has no answer"), std::string::npos)
+      << reply.message;
 }
 
 // Real model, elastic formulation: a wheelset lowered 0.1 mm is answered, one 50 mm above its rails

@@ -66,6 +66,7 @@ class Responder {
                  [this](const contact_query_t& q, const bus::ReceivedMessage&) { on_query(q); }) {}
   int unaddressed_seen = 0;
   int answered = 0;
+  std::vector<wheelset_configuration_t> seen;  // every configuration answered, in order
 
  private:
   void on_query(const contact_query_t& q) {
@@ -84,6 +85,8 @@ class Responder {
       r.results[k].num_patches = 1;
       r.results[k].patches.resize(1);
       r.results[k].patches[0].normal_force = q.configurations[k].y;
+      r.results[k].wheels[0].s_wheel = 10.0 * q.configurations[k].y;  // the answered point
+      seen.push_back(q.configurations[k]);
     }
     ++answered;
     bus::publish_signed(lcm_, q.reply_channel, r);
@@ -115,6 +118,36 @@ std::vector<ContactQuery> one_query(double y) {
   std::vector<ContactQuery> batch(1);
   batch[0].pose.y = y;
   return batch;
+}
+
+// A batch whose configurations differ in what a message carries once (here the friction) goes as
+// one message per run of configurations that share it; a configuration that follows an earlier one
+// (ContactQuery::follows) is renumbered within its message, or, when it follows one of an earlier
+// message, that answer's points are followed by the dynamics before it is sent.
+TEST(ContactFailover, ASplitBatchKeepsWhatEachConfigurationFollows) {
+  FailoverBus bus;
+  Responder b(bus.lcm);
+  publish_heartbeat(bus.lcm, "onepoint", "b", heartbeat_t::READY, 102);
+  bus::test::drain(bus.lcm);
+  BusContact contact(bus.client, bus.monitor, bus.names, bus.settings());
+  std::vector<ContactQuery> batch(4);
+  for (std::size_t k = 0; k < batch.size(); ++k) {
+    batch[k].pose.y = 0.001 * static_cast<double>(k + 1);
+    batch[k].material.friction = k < 2 ? 0.3 : 0.4;
+  }
+  batch[1].follows = 1;  // the first of the same message
+  batch[2].follows = 2;  // the second, in the first message: followed before sending
+  batch[3].follows = 3;  // the third, the first of the second message
+  const std::vector<ContactResult> r = contact.evaluate(batch);
+  ASSERT_EQ(r.size(), 4u);
+  for (std::size_t k = 0; k < r.size(); ++k) EXPECT_EQ(r[k].patches[0].normal_force, batch[k].pose.y) << k;
+  EXPECT_EQ(b.answered, 2) << "one message per friction";
+  ASSERT_EQ(b.seen.size(), 4u);
+  EXPECT_EQ(b.seen[0].follows, 0);
+  EXPECT_EQ(b.seen[1].follows, 1);
+  EXPECT_EQ(b.seen[2].follows, 0);
+  EXPECT_EQ(b.seen[2].tracked_s_wheel_left, 10.0 * 0.002) << "configuration 1's answered point";
+  EXPECT_EQ(b.seen[3].follows, 1);
 }
 
 // A READY "a" that never answers (the leader by name), and "b" that does: the first query goes to

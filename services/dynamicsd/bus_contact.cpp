@@ -21,13 +21,15 @@ BusContact::BusContact(bus::RequestClient<contact_query_t, contact_reply_t>& cli
 
 std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>& batch) {
   // A message carries formulation, material and grid once (each configuration its own speed, which
-  // on a curve depends on y): a batch whose queries differ in them goes as one message per run of
-  // queries that share them.
+  // on a curve depends on y), and at most protocol::kMaxConfigurations configurations (its reply
+  // stays one datagram): a batch whose queries differ in them, or a longer one, goes as one message
+  // per run of at most that many queries that share them, one after the other.
+  const auto most = static_cast<std::size_t>(protocol::kMaxConfigurations);
   std::vector<ContactResult> out;
   out.reserve(batch.size());
   for (std::size_t begin = 0; begin < batch.size();) {
     std::size_t end = begin + 1;
-    while (end < batch.size() && protocol::shares_query_fields(batch[begin], batch[end])) ++end;
+    while (end < batch.size() && end - begin < most && protocol::shares_query_fields(batch[begin], batch[end])) ++end;
     if (begin == 0 && end == batch.size()) return evaluate_message(batch);
     std::vector<ContactQuery> queries(batch.begin() + static_cast<std::ptrdiff_t>(begin),
                                       batch.begin() + static_cast<std::ptrdiff_t>(end));

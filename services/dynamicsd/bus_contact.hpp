@@ -61,6 +61,10 @@ class BusContact final : public ContactEvaluator {
   BusContact(bus::RequestClient<contact_query_t, contact_reply_t>& client, const bus::HeartbeatMonitor& monitor,
              const bus::ChannelNames& names, BusContactSettings settings);
   std::string model() const override { return settings_.model; }
+  /// Any number of configurations: a batch goes as one message per run of at most
+  /// protocol::kMaxConfigurations configurations that share the fields a message carries once,
+  /// in order (a configuration that follows one of an earlier message has that answer's points
+  /// before it is sent).
   /// @throws OutsideModelError (OUTSIDE_MODEL), ContactConfigurationError (IMPOSSIBLE_CONFIGURATION,
   ///         NO_CONTACT), std::runtime_error (BAD_REQUEST, INTERNAL_ERROR, another geometry, no
   ///         reply within the wait limit), each naming the model and the service's message.

@@ -150,6 +150,29 @@ TEST(ContactFailover, ASplitBatchKeepsWhatEachConfigurationFollows) {
   EXPECT_EQ(b.seen[3].follows, 1);
 }
 
+// A batch longer than a message takes (a vehicle's wheelsets with a Newton matrix each) goes as
+// messages of at most protocol::kMaxConfigurations, in order, every answer in its place; a
+// configuration that follows one across the cut follows its answer.
+TEST(ContactFailover, ABatchLongerThanAMessageGoesAsSeveral) {
+  FailoverBus bus;
+  Responder b(bus.lcm);
+  publish_heartbeat(bus.lcm, "onepoint", "b", heartbeat_t::READY, 102);
+  bus::test::drain(bus.lcm);
+  BusContact contact(bus.client, bus.monitor, bus.names, bus.settings());
+  const std::size_t n = 2 * protocol::kMaxConfigurations + 6;
+  std::vector<ContactQuery> batch(n);
+  for (std::size_t k = 0; k < n; ++k) batch[k].pose.y = 1e-4 * static_cast<double>(k + 1);
+  const std::size_t cut = protocol::kMaxConfigurations;  // the first of the second message
+  batch[cut].follows = static_cast<int>(cut);             // follows the last of the first message
+  const std::vector<ContactResult> r = contact.evaluate(batch);
+  ASSERT_EQ(r.size(), n);
+  for (std::size_t k = 0; k < n; ++k) EXPECT_EQ(r[k].patches[0].normal_force, batch[k].pose.y) << k;
+  EXPECT_EQ(b.answered, 3);
+  ASSERT_EQ(b.seen.size(), n);
+  EXPECT_EQ(b.seen[cut].follows, 0);
+  EXPECT_EQ(b.seen[cut].tracked_s_wheel_left, 10.0 * batch[cut - 1].pose.y);
+}
+
 // A READY "a" that never answers (the leader by name), and "b" that does: the first query goes to
 // both at once and b's answer is taken, so nothing is lost to a; later queries go to b, the only
 // instance that has answered, and a is only probed (20 ms, then left out). Without the spreading

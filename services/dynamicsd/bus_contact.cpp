@@ -23,29 +23,79 @@ std::vector<ContactResult> BusContact::evaluate(const std::vector<ContactQuery>&
   // A message carries formulation, material and grid once (each configuration its own speed, which
   // on a curve depends on y), and at most protocol::kMaxConfigurations configurations (its reply
   // stays one datagram): a batch whose queries differ in them, or a longer one, goes as one message
-  // per run of at most that many queries that share them, one after the other.
+  // per run of at most that many queries that share them.
   const auto most = static_cast<std::size_t>(protocol::kMaxConfigurations);
-  std::vector<ContactResult> out;
-  out.reserve(batch.size());
+  std::vector<std::pair<std::size_t, std::size_t>> messages;  // [begin, end) of each
   for (std::size_t begin = 0; begin < batch.size();) {
     std::size_t end = begin + 1;
     while (end < batch.size() && end - begin < most && protocol::shares_query_fields(batch[begin], batch[end])) ++end;
-    if (begin == 0 && end == batch.size()) return evaluate_message(batch);
-    std::vector<ContactQuery> queries(batch.begin() + static_cast<std::ptrdiff_t>(begin),
-                                      batch.begin() + static_cast<std::ptrdiff_t>(end));
-    for (ContactQuery& q : queries) {
-      if (q.follows == 0) continue;
-      const std::size_t followed = static_cast<std::size_t>(q.follows - 1);
-      if (followed < begin) {  // one of an earlier message, answered: followed here
-        follow_answered_points(out[followed], q.tracked_s_wheel, q.second_tracked_s_wheel);
-        q.follows = 0;
-      } else {
-        q.follows -= static_cast<int>(begin);  // one of this message
-      }
-    }
-    std::vector<ContactResult> part = evaluate_message(queries);
-    for (ContactResult& r : part) out.push_back(std::move(r));
+    messages.emplace_back(begin, end);
     begin = end;
+  }
+  if (messages.size() == 1) return evaluate_message(batch);
+  // Several messages at once, each to the next instance in the turn, where none follows a
+  // configuration of another message (its answer would be needed before it is sent).
+  bool independent = settings_.instance.empty();
+  for (const auto& [begin, end] : messages)
+    for (std::size_t k = begin; k < end && independent; ++k)
+      independent = batch[k].follows == 0 || static_cast<std::size_t>(batch[k].follows - 1) >= begin;
+  if (independent) {
+    refresh_instances(bus::monotonic_seconds());
+    if (!turn_.empty()) return evaluate_at_once(batch, messages);
+  }
+  std::vector<ContactResult> out;
+  out.reserve(batch.size());
+  for (const auto& [begin, end] : messages) {
+    std::vector<ContactResult> part = evaluate_message(message_queries(batch, begin, end, out));
+    for (ContactResult& r : part) out.push_back(std::move(r));
+  }
+  return out;
+}
+
+std::vector<ContactQuery> BusContact::message_queries(const std::vector<ContactQuery>& batch, std::size_t begin,
+                                                      std::size_t end, const std::vector<ContactResult>& answered) {
+  std::vector<ContactQuery> queries(batch.begin() + static_cast<std::ptrdiff_t>(begin),
+                                    batch.begin() + static_cast<std::ptrdiff_t>(end));
+  for (ContactQuery& q : queries) {
+    if (q.follows == 0) continue;
+    const std::size_t followed = static_cast<std::size_t>(q.follows - 1);
+    if (followed < begin) {  // one of an earlier message, answered: followed here
+      follow_answered_points(answered.at(followed), q.tracked_s_wheel, q.second_tracked_s_wheel);
+      q.follows = 0;
+    } else {
+      q.follows -= static_cast<int>(begin);  // one of this message
+    }
+  }
+  return queries;
+}
+
+std::vector<ContactResult> BusContact::evaluate_at_once(const std::vector<ContactQuery>& batch,
+                                                        const std::vector<std::pair<std::size_t, std::size_t>>& messages) {
+  std::vector<contact_query_t> queries(messages.size());
+  for (std::size_t m = 0; m < messages.size(); ++m) {
+    protocol::to_query_message(message_queries(batch, messages[m].first, messages[m].second, {}), queries[m]);
+    queries[m].model = settings_.model;
+    queries[m].geometry_key = settings_.geometry_key;
+    turn_last_ = (turn_last_ + 1) % turn_.size();
+    queries[m].instance = turn_[turn_last_];
+  }
+  client_.set_request_channel(request_channel_);
+  std::vector<bus::CallResult<contact_reply_t>> replies = client_.call_each(queries.data(), queries.size(), settings_.policy);
+  std::vector<ContactResult> out;
+  out.reserve(batch.size());
+  for (std::size_t m = 0; m < messages.size(); ++m) {
+    bus::CallResult<contact_reply_t>& result = replies[m];
+    retries_ += std::max(result.attempts - 1, 0);
+    const auto& [begin, end] = messages[m];
+    std::vector<ContactResult> part;
+    if (result && !of_another_model(result)) {
+      add_times(result);
+      part = take_reply(*result.reply, end - begin);
+    } else {
+      if (!result) pause(queries[m].instance);  // silent for a whole round
+      part = evaluate_message(message_queries(batch, begin, end, out));  // with its fail-over
+    }
+    for (ContactResult& r : part) out.push_back(std::move(r));
   }
   return out;
 }

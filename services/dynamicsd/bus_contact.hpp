@@ -32,6 +32,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bus/service/heartbeat_monitor.hpp"
@@ -62,9 +63,11 @@ class BusContact final : public ContactEvaluator {
              const bus::ChannelNames& names, BusContactSettings settings);
   std::string model() const override { return settings_.model; }
   /// Any number of configurations: a batch goes as one message per run of at most
-  /// protocol::kMaxConfigurations configurations that share the fields a message carries once,
-  /// in order (a configuration that follows one of an earlier message has that answer's points
-  /// before it is sent).
+  /// protocol::kMaxConfigurations configurations that share the fields a message carries once.
+  /// Where none of them follows a configuration of another message, all go at once, each to the
+  /// next instance in the turn (one round trip; a message without an answer then goes again on
+  /// its own, with the fail-over); otherwise one after the other, a configuration that follows
+  /// one of an earlier message taking that answer's points before it is sent.
   /// @throws OutsideModelError (OUTSIDE_MODEL), ContactConfigurationError (IMPOSSIBLE_CONFIGURATION,
   ///         NO_CONTACT), std::runtime_error (BAD_REQUEST, INTERNAL_ERROR, another geometry, no
   ///         reply within the wait limit), each naming the model and the service's message.
@@ -96,6 +99,13 @@ class BusContact final : public ContactEvaluator {
   void add_times(const bus::CallResult<contact_reply_t>& result);
   /// One message for queries that share formulation, material, grid and speed.
   std::vector<ContactResult> evaluate_message(const std::vector<ContactQuery>& batch);
+  /// The queries of batch[begin, end) as one message: follows renumbered within it, or, for one
+  /// of an earlier message, that configuration's answer in answered followed.
+  static std::vector<ContactQuery> message_queries(const std::vector<ContactQuery>& batch, std::size_t begin,
+                                                   std::size_t end, const std::vector<ContactResult>& answered);
+  /// Every message of batch at once (call_each), each to the next instance in the turn.
+  std::vector<ContactResult> evaluate_at_once(const std::vector<ContactQuery>& batch,
+                                              const std::vector<std::pair<std::size_t, std::size_t>>& messages);
   /// Where the next query goes.
   struct Target {
     std::string instance;  ///< empty: unaddressed

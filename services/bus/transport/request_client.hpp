@@ -11,6 +11,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstddef>
@@ -100,14 +101,7 @@ class RequestClient {
   /// the first reply is the call's. count >= 1. Otherwise as call().
   CallResult<Reply> call_any(Request* requests, std::size_t count, const CallPolicy& policy) {
     if (count == 0) throw std::invalid_argument("a call needs at least one request");
-    if (!(policy.timeout > 0.0) || !std::isfinite(policy.timeout)) {
-      throw std::invalid_argument("call timeout " + std::to_string(policy.timeout) +
-                                  " s is not a positive number");
-    }
-    if (policy.retries < 0) {
-      throw std::invalid_argument("call retries " + std::to_string(policy.retries) + " is negative");
-    }
-    if (publish_on_ == nullptr) throw std::logic_error("a request client on a lane has nowhere to publish");
+    check_policy(policy);
     ++counters_.calls;
     pending_id_ = ++last_id_;
     for (std::size_t k = 0; k < count; ++k) {
@@ -130,7 +124,7 @@ class RequestClient {
       ++result.attempts;
       result.send_time = monotonic_seconds() - send_start;
       result.sent_utime = wall_utime();
-      wait_for_answer(monotonic_seconds() + policy.timeout);
+      wait_until([this] { return answer_.has_value(); }, monotonic_seconds() + policy.timeout);
     }
     pending_id_ = 0;
     if (answer_) {
@@ -145,6 +139,65 @@ class RequestClient {
       ++counters_.failed_calls;
     }
     return result;
+  }
+
+  /// count calls at once: each request gets an id of its own, all are published, and the client
+  /// waits until each has its reply or the attempt's timeout has passed; then the unanswered ones
+  /// are re-sent (same ids), up to policy.retries times. One result per request, in order (empty
+  /// where every attempt timed out; attempts, send time and round trip are those of the whole
+  /// call). count >= 1. Otherwise as call().
+  std::vector<CallResult<Reply>> call_each(Request* requests, std::size_t count, const CallPolicy& policy) {
+    if (count == 0) throw std::invalid_argument("a call needs at least one request");
+    check_policy(policy);
+    std::vector<CallResult<Reply>> results(count);
+    each_pending_.clear();
+    for (std::size_t k = 0; k < count; ++k) {
+      ++counters_.calls;
+      requests[k].request_id = ++last_id_;
+      requests[k].reply_channel = reply_channel_;
+      each_pending_.push_back(requests[k].request_id);
+    }
+    each_answers_.assign(count, std::nullopt);
+    each_receipt_utime_.assign(count, 0);
+    each_handled_utime_.assign(count, 0);
+    each_handled_seconds_.assign(count, 0.0);
+    const double start = monotonic_seconds();
+    std::size_t answered = 0;
+    for (int attempt = 0; attempt <= policy.retries && answered < count; ++attempt) {
+      const double send_start = monotonic_seconds();
+      for (std::size_t k = 0; k < count; ++k) {
+        if (each_answers_[k]) continue;
+        if (attempt > 0) ++counters_.retries;
+        stamper_.stamp(requests[k].header);
+        if (publish_signed(*publish_on_, request_channel_, requests[k]) != 0) {
+          each_pending_.clear();
+          throw std::runtime_error("publish on '" + request_channel_ + "' failed");
+        }
+        ++counters_.sent;
+        ++results[k].attempts;
+        results[k].sent_utime = wall_utime();
+      }
+      const double send_time = monotonic_seconds() - send_start;
+      for (std::size_t k = 0; k < count; ++k)
+        if (!each_answers_[k]) results[k].send_time = send_time;
+      wait_until([&] { return each_answered() == count; }, monotonic_seconds() + policy.timeout);
+      answered = each_answered();
+    }
+    each_pending_.clear();
+    for (std::size_t k = 0; k < count; ++k) {
+      if (!each_answers_[k]) {
+        ++counters_.failed_calls;
+        continue;
+      }
+      ++counters_.replies;
+      results[k].round_trip = each_handled_seconds_[k] - start;
+      results[k].receipt_utime = each_receipt_utime_[k];
+      results[k].handled_utime = each_handled_utime_[k];
+      results[k].reply = std::move(each_answers_[k]);
+    }
+    each_completed_.clear();
+    for (std::size_t k = 0; k < count; ++k) each_completed_.push_back(requests[k].request_id);
+    return results;
   }
 
   /// While waiting, dispatches other's subscriptions too (a client on a lane of the bus keeps
@@ -165,18 +218,37 @@ class RequestClient {
   const ClientCounters& counters() const { return counters_; }
 
  private:
-  void wait_for_answer(double deadline) {
+  void check_policy(const CallPolicy& policy) const {
+    if (!(policy.timeout > 0.0) || !std::isfinite(policy.timeout)) {
+      throw std::invalid_argument("call timeout " + std::to_string(policy.timeout) +
+                                  " s is not a positive number");
+    }
+    if (policy.retries < 0) {
+      throw std::invalid_argument("call retries " + std::to_string(policy.retries) + " is negative");
+    }
+    if (publish_on_ == nullptr) throw std::logic_error("a request client on a lane has nowhere to publish");
+  }
+
+  std::size_t each_answered() const {
+    std::size_t n = 0;
+    for (const std::optional<Reply>& a : each_answers_) n += a ? 1 : 0;
+    return n;
+  }
+
+  /// Reads replies (and every dispatched subscription) until done() or the deadline [s].
+  template <class Done>
+  void wait_until(Done done, double deadline) {
     // What is queued already is read first, whatever the deadline: a reply that is there is
     // taken, and a call with a timeout below the round trip still reads every subscription of
     // the LCM object once per attempt. Without this, a caller retrying such calls in a loop (the
     // dynamics' contact client) would publish without ever reading: its queues overflowed, the
     // heartbeats of the services it needs were lost, and no reply was ever seen.
-    for (int handled = 0; !answer_ && handled < kMaxDrain; ++handled) {
+    for (int handled = 0; !done() && handled < kMaxDrain; ++handled) {
       const int rc = handle_any(dispatched_, 0);
       if (rc < 0 && errno != EINTR) throw std::runtime_error("LCM handle failed while waiting for a reply");
       if (rc <= 0) break;
     }
-    while (!answer_) {
+    while (!done()) {
       const double remaining = deadline - monotonic_seconds();
       if (remaining <= 0.0) return;
       const int ms = static_cast<int>(std::ceil(remaining * 1e3));
@@ -195,6 +267,22 @@ class RequestClient {
   }
 
   void on_reply(const Reply& reply, const ReceivedMessage& info) {
+    for (std::size_t k = 0; k < each_pending_.size(); ++k) {
+      if (reply.request_id != each_pending_[k]) continue;
+      if (each_answers_[k]) {
+        ++counters_.duplicate_replies;
+      } else {
+        each_answers_[k] = reply;
+        each_receipt_utime_[k] = info.receipt_utime;
+        each_handled_utime_[k] = wall_utime();
+        each_handled_seconds_[k] = monotonic_seconds();
+      }
+      return;
+    }
+    if (std::find(each_completed_.begin(), each_completed_.end(), reply.request_id) != each_completed_.end()) {
+      ++counters_.duplicate_replies;
+      return;
+    }
     if (pending_id_ != 0 && reply.request_id == pending_id_ && !answer_) {
       answer_ = reply;
       answer_receipt_utime_ = info.receipt_utime;
@@ -218,6 +306,14 @@ class RequestClient {
   std::optional<Reply> answer_;
   std::int64_t answer_receipt_utime_ = 0;  // [us] of answer_
   std::int64_t answer_handled_utime_ = 0;  // [us] of answer_
+  // call_each: the ids in progress, their replies and when they came, and the ids of the last
+  // call_each (a later reply to one is a duplicate)
+  std::vector<std::int64_t> each_pending_;
+  std::vector<std::optional<Reply>> each_answers_;
+  std::vector<std::int64_t> each_receipt_utime_;   // [us]
+  std::vector<std::int64_t> each_handled_utime_;   // [us]
+  std::vector<double> each_handled_seconds_;       // [s] monotonic
+  std::vector<std::int64_t> each_completed_;
   std::vector<Inbox> dispatched_;      // read while waiting: the client's own inbox first
   lcm::LCM* publish_on_;               // where requests go
 };

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -67,6 +68,8 @@ class Responder {
   int unaddressed_seen = 0;
   int answered = 0;
   std::vector<wheelset_configuration_t> seen;  // every configuration answered, in order
+  std::function<long()> note;  // called at each query answered, its value kept in noted
+  std::vector<long> noted;
 
  private:
   void on_query(const contact_query_t& q) {
@@ -89,6 +92,7 @@ class Responder {
       seen.push_back(q.configurations[k]);
     }
     ++answered;
+    if (note) noted.push_back(note());
     bus::publish_signed(lcm_, q.reply_channel, r);
   }
   lcm::LCM& lcm_;
@@ -171,6 +175,44 @@ TEST(ContactFailover, ABatchLongerThanAMessageGoesAsSeveral) {
   ASSERT_EQ(b.seen.size(), n);
   EXPECT_EQ(b.seen[cut].follows, 0);
   EXPECT_EQ(b.seen[cut].tracked_s_wheel_left, 10.0 * batch[cut - 1].pose.y);
+}
+
+// Where no configuration follows one of another message, a long batch's messages go at once, each
+// to the next instance in the turn: every message is sent before any reply is read (the client had
+// read as many replies when each was answered), the instances share them, every answer is in its
+// place.
+TEST(ContactFailover, TheMessagesOfALongBatchGoAtOnceOverTheTurn) {
+  FailoverBus bus;
+  Responder b(bus.lcm, "b", "hash-1");
+  Responder c(bus.lcm, "c", "hash-1");
+  publish_heartbeat(bus.lcm, "onepoint", "b", heartbeat_t::READY, 401, kKey, "hash-1");
+  publish_heartbeat(bus.lcm, "onepoint", "c", heartbeat_t::READY, 402, kKey, "hash-1");
+  bus::test::drain(bus.lcm);
+  BusContact contact(bus.client, bus.monitor, bus.names, bus.settings());
+  for (int k = 0; k < 2; ++k) contact.evaluate(one_query(1e-3));  // b answers first, then c is probed
+  ASSERT_EQ(contact.instance_queries().size(), 2u);
+  const long before = b.answered + c.answered;
+  b.note = c.note = [&bus] { return static_cast<long>(bus.client.counters().replies); };
+
+  const std::size_t n = 3 * protocol::kMaxConfigurations;
+  std::vector<ContactQuery> batch(n);
+  for (std::size_t k = 0; k < n; ++k) batch[k].pose.y = 1e-5 * static_cast<double>(k + 1);
+  batch[1].follows = 1;  // within the first message
+  const std::vector<ContactResult> r = contact.evaluate(batch);
+  ASSERT_EQ(r.size(), n);
+  for (std::size_t k = 0; k < n; ++k) EXPECT_EQ(r[k].patches[0].normal_force, batch[k].pose.y) << k;
+  EXPECT_EQ(b.answered + c.answered - before, 3);
+  EXPECT_GE(b.noted.size(), 1u);
+  EXPECT_GE(c.noted.size(), 1u);
+  std::vector<long> noted = b.noted;
+  noted.insert(noted.end(), c.noted.begin(), c.noted.end());
+  ASSERT_EQ(noted.size(), 3u);
+  EXPECT_EQ(noted[0], noted[1]);
+  EXPECT_EQ(noted[1], noted[2]) << "a message was sent after a reply was read";
+  EXPECT_EQ(contact.retries(), 0);
+  EXPECT_EQ(contact.timeouts(), 0);
+  const std::map<std::string, long> counted = contact.instance_queries();
+  EXPECT_EQ(counted.at("b") + counted.at("c"), 5);
 }
 
 // A READY "a" that never answers (the leader by name), and "b" that does: the first query goes to

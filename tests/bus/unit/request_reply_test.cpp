@@ -129,6 +129,71 @@ TEST(RequestReply, IgnoresStaleAndDuplicateReplies) {
   EXPECT_EQ(client.counters().duplicate_replies, 3);
 }
 
+// A server that ignores the first request it sees of each payload size given, and answers the
+// rest as the echo server does (twice: the second a duplicate).
+struct ForgetfulReplier {
+  lcm::LCM& lcm;
+  std::vector<int> ignore_once;  // payload sizes whose first request goes unanswered
+  std::vector<std::int64_t> seen_ids;
+  void on_request(const lcm::ReceiveBuffer*, const std::string&, const wrc::ping_request_t* req) {
+    seen_ids.push_back(req->request_id);
+    for (auto it = ignore_once.begin(); it != ignore_once.end(); ++it) {
+      if (*it != req->num_payload) continue;
+      ignore_once.erase(it);
+      return;
+    }
+    wrc::ping_reply_t rep{};
+    rep.request_id = req->request_id;
+    rep.num_payload = req->num_payload;
+    rep.payload = req->payload;
+    publish_signed(lcm, req->reply_channel, rep);
+    publish_signed(lcm, req->reply_channel, rep);
+  }
+};
+
+// call_each: several calls at once, each with an id of its own, each result the reply to its own
+// request; a request without a reply is sent again (same id), the answered ones are not; a second
+// reply is a duplicate; one that never gets a reply is an empty result after 1 + retries sends.
+TEST(RequestReply, CallEachWaitsForEveryReplyAndResendsOnlyTheMissing) {
+  lcm::LCM lcm("memq://");
+  ForgetfulReplier replier{lcm, {2}, {}};
+  lcm.subscribe("PING", &ForgetfulReplier::on_request, &replier);
+  Client client(lcm, "PING", "PING_REPLY.c1", "test-client");
+  std::vector<wrc::ping_request_t> requests{ping(1), ping(2), ping(3)};
+  std::vector<CallResult<wrc::ping_reply_t>> results = client.call_each(requests.data(), requests.size(), {0.05, 2});
+  ASSERT_EQ(results.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    ASSERT_TRUE(results[k]) << k;
+    EXPECT_EQ(results[k].reply->request_id, requests[k].request_id) << k;
+    EXPECT_EQ(results[k].reply->num_payload, static_cast<int>(k + 1)) << k;
+    EXPECT_GT(results[k].round_trip, 0.0) << k;
+  }
+  EXPECT_NE(requests[0].request_id, requests[1].request_id);
+  EXPECT_EQ(results[0].attempts, 1);
+  EXPECT_EQ(results[1].attempts, 2);  // its first request was ignored
+  EXPECT_EQ(results[2].attempts, 1);
+  EXPECT_EQ(replier.seen_ids, (std::vector<std::int64_t>{requests[0].request_id, requests[1].request_id,
+                                                         requests[2].request_id, requests[1].request_id}));
+  test::drain(lcm);
+  EXPECT_EQ(client.counters().calls, 3);
+  EXPECT_EQ(client.counters().sent, 4);
+  EXPECT_EQ(client.counters().retries, 1);
+  EXPECT_EQ(client.counters().replies, 3);
+  EXPECT_EQ(client.counters().duplicate_replies, 3);
+
+  lcm::LCM quiet("memq://");
+  ForgetfulReplier deaf{quiet, {5, 5, 5}, {}};  // three attempts of size 5 go unanswered
+  quiet.subscribe("PING", &ForgetfulReplier::on_request, &deaf);
+  Client other(quiet, "PING", "PING_REPLY.c2", "test-client");
+  std::vector<wrc::ping_request_t> two{ping(4), ping(5)};
+  const auto second = other.call_each(two.data(), two.size(), {0.02, 2});
+  EXPECT_TRUE(second[0]);
+  EXPECT_FALSE(second[1]);
+  EXPECT_EQ(second[1].attempts, 3);
+  EXPECT_EQ(other.counters().failed_calls, 1);
+  EXPECT_THROW(other.call_each(two.data(), 0, {0.1, 0}), std::invalid_argument);
+}
+
 /// Publishes bytes on channel signed under the test key.
 void publish_signed_bytes(lcm::LCM& lcm, const std::string& channel, std::vector<std::uint8_t> bytes) {
   bus_auth().sign(channel, bytes);

@@ -34,6 +34,14 @@ void evaluate_query(const ContactModel& model, const wrc::contact_query_t& query
     wrc::contact_result_t& out = reply.results[static_cast<std::size_t>(i)];
     std::int8_t status = wrc::contact_reply_t::OK;
     std::string why;
+    const int follows = query.configurations[static_cast<std::size_t>(i)].follows;
+    if (follows >= 1 && follows <= i && answered[static_cast<std::size_t>(follows - 1)] == nullptr) {
+      // It follows a configuration without an answer: that one's status, which it cannot raise.
+      answered.push_back(nullptr);
+      reply.results[static_cast<std::size_t>(i)] = wrc::contact_result_t{};
+      reply.results[static_cast<std::size_t>(i)].status = reply.results[static_cast<std::size_t>(follows - 1)].status;
+      continue;
+    }
     try {
       ContactQuery q = protocol::to_contact_query(query, i);
       apply_follows(answered, i, q);

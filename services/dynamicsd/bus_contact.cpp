@@ -92,7 +92,10 @@ std::vector<ContactResult> BusContact::evaluate_at_once(const std::vector<Contac
       add_times(result);
       part = take_reply(*result.reply, end - begin);
     } else {
-      if (!result) pause(queries[m].instance);  // silent for a whole round
+      if (!result) {  // silent for a whole round
+        ++timeouts_;
+        pause(queries[m].instance);
+      }
       part = evaluate_message(message_queries(batch, begin, end, out));  // with its fail-over
     }
     for (ContactResult& r : part) out.push_back(std::move(r));

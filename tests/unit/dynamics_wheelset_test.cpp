@@ -279,16 +279,14 @@ class FailingAfter final : public ContactEvaluator {
  public:
   FailingAfter(const std::string& model, long answers)
       : model_(make_contact_model(model, test::s1002_uic60_geometry())), left_(answers) {}
-  std::string model() const override { return model_->name(); }
+  std::string model() const override { return model_.model(); }
   std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch) override {
     if (--left_ < 0) throw ContactConfigurationError("test: configuration refused");
-    std::vector<ContactResult> out;
-    for (const ContactQuery& q : batch) out.push_back(model_->evaluate(q));
-    return out;
+    return model_.evaluate(batch);  // follows honoured
   }
 
  private:
-  std::shared_ptr<const ContactModel> model_;
+  InProcessContact model_;
   long left_;
 };
 

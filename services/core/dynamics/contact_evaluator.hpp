@@ -32,7 +32,9 @@ class ContactEvaluator {
   virtual ~ContactEvaluator() = default;
   /// The contact model's name ("onepoint", "interp", "multipoint", "spline").
   virtual std::string model() const = 0;
-  /// One result per query, in order, all computed with the same model data.
+  /// One result per query, in order, all computed with the same model data. A query whose
+  /// ContactQuery::follows is k >= 1 is evaluated with the points answered for query k - 1
+  /// (apply_follows(), core/model_interface/followed_points.hpp): every evaluator must honour it.
   /// @throws OutsideModelError / ContactConfigurationError for a configuration the model cannot
   ///         answer (a retry with a smaller step may help); std::runtime_error when the source
   ///         failed (the run cannot go on).

@@ -6,6 +6,13 @@
 #include <limits>
 
 #include <ida/ida_impl.h>
+#include <sundials/sundials_config.h>
+
+// next_step() reads IDA's private memory (ida_impl.h) and repeats its coefficient update and
+// prediction: both are those of SUNDIALS 6.4 (Debian's package). Another version must be checked
+// against its own ida.c before this builds.
+static_assert(SUNDIALS_VERSION_MAJOR == 6 && SUNDIALS_VERSION_MINOR == 4,
+              "IdaIntegrator::next_step() replicates SUNDIALS 6.4's IDA: check it against this version's ida.c");
 
 #include "core/dynamics/sundials_support.hpp"
 

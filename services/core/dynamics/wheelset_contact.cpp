@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/model_interface/followed_points.hpp"
+#include "core/model_interface/query_validation.hpp"
 #include "core/models/contact_model_factory.hpp"
 
 namespace wrc {
@@ -135,6 +136,9 @@ void WheelsetContact::fetch_with(const double* y, const std::vector<Ahead>& ahea
   std::vector<std::vector<double>> keys;    // their keys where known before the answer
   if (!base_cached) batch.push_back(equations_.query(formulation_, y, branches_));
   for (const Ahead& a : ahead) {
+    // A forecast state the query rules refuse (it may never be asked) is left out, so that it
+    // cannot fail the batch.
+    if (find_query_violation(a.query)) continue;
     ContactQuery q = a.query;
     std::vector<double> key;
     if (a.follows && base_cached) {

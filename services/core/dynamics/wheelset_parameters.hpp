@@ -97,6 +97,10 @@ struct IntegratorSettings {
   /// function only, no two-point contact and no branch check, so a followed point may lie above
   /// the lowest (the counter max_branch_excess says how far) and the run depends on rounding [-].
   bool two_point_sliding = true;
+  /// The accepted step's contact query carries the next step's first state and Newton matrix
+  /// (docs/dynamics.md, "Rigid contact"): the same run in fewer round trips. Not a run parameter:
+  /// false only to compare the two (tests) [-].
+  bool contact_ahead = true;
   void validate() const;
 };
 

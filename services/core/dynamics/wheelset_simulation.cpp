@@ -131,6 +131,7 @@ void WheelsetSimulation::message(const char* function, const char* text) {
 }
 
 std::vector<WheelsetContact::Ahead> WheelsetSimulation::next_step_ahead(double t) {
+  if (!spec_.integrator.contact_ahead || !(t < spec_.integrator.t_end)) return {};  // no step after t_end
   const std::optional<IdaIntegrator::NextStep> next = integrator_.next_step();
   if (!next) return {};
   // After an accepted step a rigid run follows its points (check_branches()), so the next step's

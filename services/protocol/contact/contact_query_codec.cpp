@@ -109,6 +109,11 @@ std::string validate_query(const wrc::contact_query_t& q) {
            std::to_string(q.configurations.size()) + " configurations";
   }
   for (int i = 0; i < q.num_configurations; ++i) {
+    const int follows = q.configurations[static_cast<std::size_t>(i)].follows;
+    if (follows < 0 || follows > i) {
+      return "configurations[" + std::to_string(i) + "].follows = " + std::to_string(follows) +
+             " is neither 0 nor an earlier configuration's number plus 1 (1.." + std::to_string(i) + ")";
+    }
     const std::optional<QueryViolation> violation = find_query_violation(to_contact_query(q, i));
     if (!violation) continue;
     // The field's full name is built only for the message of a bad value (hot path otherwise).
@@ -176,6 +181,9 @@ void to_configuration_message(const ContactQuery& query, wrc::wheelset_configura
   c.second_tracked_s_wheel_right = query.second_tracked_s_wheel[1];
   c.second_normal_load_left = query.second_normal_load[0];
   c.second_normal_load_right = query.second_normal_load[1];
+  if (query.follows < 0 || query.follows > kMaxConfigurations)
+    throw std::invalid_argument("to_configuration_message: follows = " + std::to_string(query.follows) +
+                                " is outside [0, " + std::to_string(kMaxConfigurations) + "]");
   c.follows = static_cast<std::int16_t>(query.follows);
   for (std::size_t i = 0; i < 2; ++i) {
     const RailOffset& rail = query.rail_offsets[i];

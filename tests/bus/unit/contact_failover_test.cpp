@@ -178,8 +178,8 @@ TEST(ContactFailover, ABatchLongerThanAMessageGoesAsSeveral) {
 }
 
 // Where no configuration follows one of another message, a long batch's messages go at once, each
-// to the next instance in the turn: every message is sent before any reply is read (the client had
-// read as many replies when each was answered), the instances share them, every answer is in its
+// to the next instance in the turn: every message is sent before any is answered (the client had
+// sent as many requests when each was answered), the instances share them, every answer is in its
 // place.
 TEST(ContactFailover, TheMessagesOfALongBatchGoAtOnceOverTheTurn) {
   FailoverBus bus;
@@ -192,7 +192,7 @@ TEST(ContactFailover, TheMessagesOfALongBatchGoAtOnceOverTheTurn) {
   for (int k = 0; k < 2; ++k) contact.evaluate(one_query(1e-3));  // b answers first, then c is probed
   ASSERT_EQ(contact.instance_queries().size(), 2u);
   const long before = b.answered + c.answered;
-  b.note = c.note = [&bus] { return static_cast<long>(bus.client.counters().replies); };
+  b.note = c.note = [&bus] { return static_cast<long>(bus.client.counters().sent); };
 
   const std::size_t n = 3 * protocol::kMaxConfigurations;
   std::vector<ContactQuery> batch(n);
@@ -208,7 +208,7 @@ TEST(ContactFailover, TheMessagesOfALongBatchGoAtOnceOverTheTurn) {
   noted.insert(noted.end(), c.noted.begin(), c.noted.end());
   ASSERT_EQ(noted.size(), 3u);
   EXPECT_EQ(noted[0], noted[1]);
-  EXPECT_EQ(noted[1], noted[2]) << "a message was sent after a reply was read";
+  EXPECT_EQ(noted[1], noted[2]) << "a message was sent after another was answered";
   EXPECT_EQ(contact.retries(), 0);
   EXPECT_EQ(contact.timeouts(), 0);
   const std::map<std::string, long> counted = contact.instance_queries();

@@ -423,13 +423,29 @@ TEST(QueryAdapter, FollowsAnEarlierConfigurationsAnswer) {
   contactd::evaluate_query(*onepoint, q, reply);
   EXPECT_NE(from_result_message(reply.results[1]).wheels[0].s_wheel, got.wheels[0].s_wheel) << "following matters here";
 
-  q.configurations[0].y = 0.05;  // IMPOSSIBLE_CONFIGURATION: no answer to follow
+  // A follower of a configuration without an answer has that one's status, and the reply the
+  // followed one's status and message (a run then sees IMPOSSIBLE_CONFIGURATION, as in-process).
+  q.configurations[0].y = 0.05;
   q.configurations[1].follows = 1;
   contactd::evaluate_query(*onepoint, q, reply);
   EXPECT_EQ(reply.results[0].status, wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION);
-  EXPECT_EQ(reply.results[1].status, wrc::contact_reply_t::BAD_REQUEST);
-  EXPECT_NE(reply.message.find("configuration 1: follows 1: configuration 0 has no answer"), std::string::npos)
-      << reply.message;
+  EXPECT_EQ(reply.results[1].status, wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION);
+  EXPECT_EQ(reply.status, wrc::contact_reply_t::IMPOSSIBLE_CONFIGURATION);
+  EXPECT_EQ(reply.message.rfind("configuration 0 (y=0.05", 0), 0u) << reply.message;
+
+  // A follows that names no earlier configuration is refused with the message, before any work.
+  q.configurations[0].y = 0.005;
+  for (const int bad : {2, -1, 300}) {
+    q.configurations[1].follows = static_cast<std::int16_t>(bad);
+    EXPECT_EQ(validate_query(q), "configurations[1].follows = " + std::to_string(bad) +
+                                     " is neither 0 nor an earlier configuration's number plus 1 (1..1)");
+  }
+  q.configurations[1].follows = 1;
+  EXPECT_EQ(validate_query(q), "");
+  ContactQuery huge;
+  huge.follows = 40000;
+  wrc::wheelset_configuration_t c{};
+  EXPECT_THROW(to_configuration_message(huge, c), std::invalid_argument);
 }
 
 // Real model, elastic formulation: a wheelset lowered 0.1 mm is answered, one 50 mm above its rails

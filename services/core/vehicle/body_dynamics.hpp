@@ -89,8 +89,8 @@ std::array<double, kBodyCoordinates> body_accelerations(const VehicleBody& body,
                                                         const std::array<double, kBodyCoordinates>& element_forces,
                                                         double gravity = kStandardGravity);
 
-/// Every body's q'' (in the order of vehicle.bodies) from the elements' loads on them
-/// (element_loads() at the same s_ref, speed and states).
+/// Every body's q'' [m/s^2], [rad/s^2] (in the order of vehicle.bodies) from the elements' loads
+/// on them (element_loads() at the same s_ref, speed and states).
 /// @throws std::invalid_argument if the states or loads do not match the bodies, and as the
 ///         single body's.
 std::vector<std::array<double, kBodyCoordinates>> body_accelerations(const VehicleDescription& vehicle,

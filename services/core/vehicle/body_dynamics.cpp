@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/vehicle/body_dynamics.hpp"
+#include "core/vehicle/rotations.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
@@ -40,27 +41,6 @@ void check_inputs(const VehicleBody& body, double s_ref, double speed, const Bod
     refuse(body, "gravity", number(gravity) + " [m/s^2] is not a finite number >= 0");
   check_finite(body, "displacement", state.displacement);
   check_finite(body, "rate", state.rate);
-}
-
-Eigen::Matrix3d rotation_x(double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  Eigen::Matrix3d r;
-  r << 1, 0, 0, 0, c, -s, 0, s, c;
-  return r;
-}
-
-Eigen::Matrix3d rotation_y(double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  Eigen::Matrix3d r;
-  r << c, 0, s, 0, 1, 0, -s, 0, c;
-  return r;
-}
-
-Eigen::Matrix3d rotation_z(double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  Eigen::Matrix3d r;
-  r << c, -s, 0, s, c, 0, 0, 0, 1;
-  return r;
 }
 
 Eigen::Matrix3d inertia_tensor(const VehicleBody& b) {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/vehicle/element_forces.hpp"
+#include "core/vehicle/rotations.hpp"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -13,27 +14,6 @@
 
 namespace wrc {
 namespace {
-
-Eigen::Matrix3d rotation_x(double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  Eigen::Matrix3d r;
-  r << 1, 0, 0, 0, c, -s, 0, s, c;
-  return r;
-}
-
-Eigen::Matrix3d rotation_y(double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  Eigen::Matrix3d r;
-  r << c, 0, s, 0, 1, 0, -s, 0, c;
-  return r;
-}
-
-Eigen::Matrix3d rotation_z(double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  Eigen::Matrix3d r;
-  r << c, -s, 0, s, c, 0, 0, 0, 1;
-  return r;
-}
 
 // The axes of the three rotations of R = Rz(z) Ry(y) Rx(x), as columns (x, y, z): the angular
 // velocity is J (x', y', z') in the frame R maps into (the roll axis Rz Ry e_x does not depend on

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/vehicle/track_frames.hpp"
+#include "core/vehicle/rotations.hpp"
 
 #include <algorithm>
 #include <array>
@@ -82,20 +83,6 @@ Plan plan(const TrackLayout& layout, double s0, double s, bool with_position) {
   return p;
 }
 
-Eigen::Matrix3d roll_matrix(double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  Eigen::Matrix3d r;
-  r << 1, 0, 0, 0, c, -s, 0, s, c;
-  return r;
-}
-
-Eigen::Matrix3d yaw_matrix(double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  Eigen::Matrix3d r;
-  r << c, -s, 0, s, c, 0, 0, 0, 1;
-  return r;
-}
-
 }  // namespace
 
 double track_heading_change(const TrackLayout& layout, double s0, double s) {
@@ -106,8 +93,8 @@ FramePose track_frame_pose(const TrackLayout& layout, double s0, double s) {
   FramePose pose;
   if (s == s0) return pose;
   const Plan p = plan(layout, s0, s, true);
-  const Eigen::Matrix3d back = roll_matrix(-layout.at(s0).cant_angle);
-  pose.rotation = back * yaw_matrix(p.heading) * roll_matrix(layout.at(s).cant_angle);
+  const Eigen::Matrix3d back = rotation_x(-layout.at(s0).cant_angle);
+  pose.rotation = back * rotation_z(p.heading) * rotation_x(layout.at(s).cant_angle);
   pose.translation = back * Eigen::Vector3d(p.x, p.y, 0.0);
   return pose;
 }

@@ -35,6 +35,10 @@ namespace wrc::bus::test {
 namespace {
 
 constexpr double kRunDeadline = 300.0;  // [s] a run with service start-up and (spline) a fit
+// [s] simulated time of a multipoint run that a test disturbs (kills a service) once the statuses,
+// sent twice a second, say it is 1 s in: about 3 s of wall time over the bus here (10 s of it took
+// 0.5 s once the chain's next step travelled with each query, and ended before the first status).
+constexpr double kDisturbedRun = 60.0;
 
 class DynamicsServiceTest : public BusTest {
  protected:
@@ -598,9 +602,9 @@ TEST_F(DynamicsServiceTest, KilledContactServiceIsWaitedForAndTheRunEndsTheSame)
   auto launcher = launch({"contact-multipoint", "dynamics"}, log);
   for (const char* model : {"multipoint", "dynamicsd"})
     ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
-  const nlohmann::json clean = run(run_args("multipoint", 10.0, temp_path("clean.json")), "clean");
+  const nlohmann::json clean = run(run_args("multipoint", kDisturbedRun, temp_path("clean.json")), "clean");
   ASSERT_EQ(clean["state"], "finished") << clean.dump();
-  const std::vector<std::string> args = run_args("multipoint", 10.0, temp_path("killed.json"));
+  const std::vector<std::string> args = run_args("multipoint", kDisturbedRun, temp_path("killed.json"));
   ChildProcess cli(WRC_CLI_PATH, args, temp_path("killed.log"));
   ASSERT_TRUE(wait_running_past(run_id(temp_path("killed.json")), 1.0, 60.0)) << read_text(temp_path("killed.log"));
   int killed_pid = 0;
@@ -651,14 +655,13 @@ int ready_dynamics_pid(const HeartbeatMonitor& monitor) {
 
 class KilledDynamicsTest : public DynamicsServiceTest {
  protected:
-  // A multipoint run to 10 s (about 5 s of wall time) undisturbed, then the same run with its
+  // A multipoint run (kDisturbedRun) undisturbed, then the same run with its
   // wrc-dynamicsd killed (SIGKILL) once it is 1 s into the run: the second run re-sent once
   // (`wrc run` says why, and what it did in its log line `recovery`), ending where the first
   // does in every state and counter.
   void expect_same_run_after_the_kill(const std::string& recovery) {
-    // 30 s of simulated time: about 3 s of wall time over the bus, so that the run is still going
-    // when the statuses (twice a second) say it is past t = 1 s and the dynamics is killed.
-    constexpr double kSimulated = 30.0;
+    // The run is still going when the statuses say it is past t = 1 s and the dynamics is killed.
+    constexpr double kSimulated = kDisturbedRun;
     const nlohmann::json clean = run(run_args("multipoint", kSimulated, temp_path("clean.json")), "clean");
     ASSERT_EQ(clean["state"], "finished") << clean.dump();
     EXPECT_EQ(clean["run_resends"], 0);

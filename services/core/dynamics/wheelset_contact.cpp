@@ -101,22 +101,33 @@ bool WheelsetContact::asked_and_cached(const std::vector<double>& key) {
   return true;
 }
 
-void WheelsetContact::fetch(const std::vector<const double*>& states) {
+WheelsetContact::Pending WheelsetContact::pending(const std::vector<const double*>& states) {
   if (states.size() > kCacheSize)
     throw std::logic_error("WheelsetContact: " + std::to_string(states.size()) + " states at once, the cache keeps " +
                            std::to_string(kCacheSize));
-  std::vector<std::vector<double>> keys;
-  std::vector<ContactQuery> batch;
+  Pending p;
   for (const double* y : states) {
     std::vector<double> key = key_of(y);
     // A state asked for now and cached goes to the back, so that the new results cannot push it out.
     if (asked_and_cached(key)) continue;
-    keys.push_back(std::move(key));
-    batch.push_back(equations_.query(formulation_, y, branches_));
+    p.keys.push_back(std::move(key));
+    p.queries.push_back(equations_.query(formulation_, y, branches_));
   }
-  if (batch.empty()) return;
-  std::vector<ContactResult> results = evaluate(batch);
-  for (size_t i = 0; i < results.size(); ++i) store(std::move(keys[i]), std::move(results[i]), false);
+  return p;
+}
+
+void WheelsetContact::deliver(Pending pending, std::vector<ContactResult> results) {
+  if (results.size() != pending.queries.size())
+    throw std::runtime_error("contact model " + evaluator_->model() + " answered " + std::to_string(results.size()) +
+                             " configurations for " + std::to_string(pending.queries.size()));
+  for (size_t i = 0; i < results.size(); ++i) store(std::move(pending.keys[i]), std::move(results[i]), false);
+}
+
+void WheelsetContact::fetch(const std::vector<const double*>& states) {
+  Pending p = pending(states);
+  if (p.queries.empty()) return;
+  std::vector<ContactResult> results = evaluate(p.queries);
+  deliver(std::move(p), std::move(results));
 }
 
 void WheelsetContact::fetch_with(const double* y, const std::vector<Ahead>& ahead) {

@@ -59,6 +59,18 @@ class WheelsetContact {
   std::vector<ContactResult> at_each(const std::vector<const double*>& states);
   /// How many states' contact the cache keeps [-].
   static size_t contact_cache_size();
+  /// The queries of the states whose contact is not cached yet, with the keys they will be cached
+  /// under: for a caller that evaluates several wheelsets' queries in one batch (a vehicle) and
+  /// hands each its results by deliver(). A state asked for now and cached goes to the back of the
+  /// cache (so that delivered results cannot push it out). At most contact_cache_size() states.
+  struct Pending {
+    std::vector<std::vector<double>> keys;
+    std::vector<ContactQuery> queries;
+  };
+  Pending pending(const std::vector<const double*>& states);
+  /// Caches results, one per query of pending in order (evaluated elsewhere, counted there).
+  /// @throws std::runtime_error when their number differs from the queries'.
+  void deliver(Pending pending, std::vector<ContactResult> results);
   /// One evaluation of a batch, one result per query in order (not cached).
   /// @throws std::runtime_error when the evaluator answers another number of results.
   std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch);

@@ -17,6 +17,14 @@ WheelsetEquations::WheelsetEquations(WheelsetParameters parameters, double z_ref
   parameters_.validate();
 }
 
+WheelsetEquations::WheelsetEquations(WheelsetParameters parameters, double z_reference, double nominal_radius,
+                                     double force_scale)
+    : WheelsetEquations(parameters, z_reference, nominal_radius) {
+  if (!(force_scale > 0.0) || !std::isfinite(force_scale))
+    throw std::invalid_argument("force_scale: " + std::to_string(force_scale) + " [N] is not positive and finite");
+  force_scale_ = force_scale;
+}
+
 ContactQuery WheelsetEquations::query(ContactFormulation f, const double* y, const FollowedBranches& branches) const {
   ContactQuery q;
   q.pose.y = y[kUnknownY];
@@ -102,6 +110,7 @@ Eigen::Vector4d WheelsetEquations::applied_forces(ContactFormulation f, const do
   q[3] = moment.dot(axes.yaw) -
          2.0 * b2 * (s.longitudinal_stiffness * pose.yaw + s.longitudinal_damping * y[kUnknownYawDot]);
   if (axle_moment) *axle_moment = moment.dot(axes.axle);
+  if (has_element_forces_) q += element_forces_;
   return q;
 }
 

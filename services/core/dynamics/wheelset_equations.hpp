@@ -70,6 +70,9 @@ class WheelsetEquations {
   /// @param z_reference height of the centred wheelset in contact, where the vertical
   ///        suspension is relaxed [m].
   WheelsetEquations(WheelsetParameters parameters, double z_reference, double nominal_radius);
+  /// @param force_scale N per unit of the scaled normal forces [N], > 0 (a vehicle's wheelset: its
+  ///        static wheel load, which its own load does not give).
+  WheelsetEquations(WheelsetParameters parameters, double z_reference, double nominal_radius, double force_scale);
 
   const WheelsetParameters& parameters() const { return parameters_; }
   double force_scale() const { return force_scale_; }  ///< N per unit of the scaled normal forces [N]
@@ -86,6 +89,13 @@ class WheelsetEquations {
   /// every query carries them. Default: the nominal rails.
   void set_rails(const std::array<RailOffset, 2>& rails) { rails_ = rails; }
   const std::array<RailOffset, 2>& rails() const { return rails_; }
+  /// Generalised forces (y, z, roll, yaw) [N, N, N m, N m] of the bodies the wheelset is joined to
+  /// (a vehicle's elements at its axle boxes), added to applied_forces() until set again; none by
+  /// default (the lone wheelset's suspension is its PrimarySuspension).
+  void set_element_forces(const Eigen::Vector4d& forces) {
+    element_forces_ = forces;
+    has_element_forces_ = true;
+  }
 
   /// The contact query at state y (formulation f): pose and rates, rigid loads N_i, the followed
   /// branches (and in two-point contact the second points and their loads), material and grid.
@@ -122,6 +132,8 @@ class WheelsetEquations {
   double force_scale_;
   TrackPoint track_;
   std::array<RailOffset, 2> rails_{};
+  Eigen::Vector4d element_forces_ = Eigen::Vector4d::Zero();
+  bool has_element_forces_ = false;  // a lone wheelset adds nothing (not even +0.0)
 };
 
 }  // namespace wrc

@@ -13,22 +13,15 @@
 
 #include <Eigen/Dense>
 
+#include "core/dynamics/segment_settings.hpp"
 #include "core/dynamics/wheelset_jacobian.hpp"
 #include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
 
-// [-] relative change of IDA's cj (alpha / h) beyond which the Newton matrix is rebuilt: 0, at
-// every change (IDA's default 0.25).
-constexpr double kNewtonMatrixCjChange = 0.0;
 // Restarts after a corrector failure at one time before the run fails (rigid formulation).
 constexpr int kMaxConvergenceRestartsInARow = 3;
-// Corrector iterations per step of the rigid (index-2) formulation (IDA's default: 4).
-constexpr int kMaxNewtonIterations = 8;
-// [-] IDA's absolute tolerance of the scaled normal forces and multipliers (they are left out of
-// the error test; it only scales the Newton test).
-constexpr double kScaledForceTolerance = 1e-6;
 // [-] the scaled normal forces the start's projection begins from (force_scale each).
 constexpr double kStartScaledNormalForce = 1.0;
 
@@ -45,36 +38,12 @@ std::shared_ptr<ContactEvaluator> checked_contact(const RunSpec& spec, std::shar
 
 // How IDA integrates a segment of n unknowns in formulation f.
 IdaSegment segment_settings(const IntegratorSettings& s, ContactFormulation f, long n) {
-  IdaSegment segment;
-  segment.relative_tolerance = s.relative_tolerance;
-  segment.max_step = s.max_step;
-  segment.differential.resize(static_cast<size_t>(n));
-  segment.absolute_tolerance.resize(static_cast<size_t>(n));
-  for (long k = 0; k < n; ++k) {
-    segment.differential[static_cast<size_t>(k)] = k <= kUnknownSpinRate ? 1.0 : 0.0;
-    segment.absolute_tolerance[static_cast<size_t>(k)] = k < kPoseUnknowns ? s.position_tolerance
-                                                         : k <= kUnknownSpinRate ? s.velocity_tolerance
-                                                                                 : kScaledForceTolerance;
-  }
-  // A new Newton matrix whenever the step's coefficient cj changes (IDA's default waits for a
-  // 25 % change): one Jacobian is one batched contact query, a round trip like one Newton
-  // iteration, and the fresh matrix saves more iterations than it costs. Measured in-process
-  // (contact queries, IDA's default -> this): the paper's benchmark spline 1173 -> 1115,
-  // multipoint 5338 -> 4047, interp 1927 -> 1705, onepoint 13509 -> 13791; the 1 km irregular
-  // curve with the spline model 75806 -> 59355 (Newton iterations 2.15 -> 1.34 per step).
-  segment.newton_matrix_cj_change = kNewtonMatrixCjChange;
-  if (f == ContactFormulation::kRigid) {
-    // The multipliers of an index-2 system are left out of the error test.
-    segment.index2 = true;
-    // The index-2 Newton matrix is ill-conditioned at small steps (~1/h^2); right after a switch
-    // on the switching surface its corrector may need more than IDA's default 4 iterations (seen:
-    // mu = 0.01, y0 = 1e-8, the first step after a restart failing down to h = 2.5e-15 with 4,
-    // passing with 8). A step that converges in 4 is unchanged.
-    segment.max_newton_iterations = kMaxNewtonIterations;
-    // Events where a switch function or a normal force falls through 0; a second point's normal
-    // force both ways.
-    segment.root_direction = {-1, -1, -1, -1, 0, 0};
-  }
+  const bool rigid = f == ContactFormulation::kRigid;
+  IdaSegment segment = segment_settings_without_unknowns(s, rigid);
+  append_wheelset_unknowns(segment, s, static_cast<int>(n));
+  // Events where a switch function or a normal force falls through 0; a second point's normal
+  // force both ways.
+  if (rigid) segment.root_direction = {-1, -1, -1, -1, 0, 0};
   return segment;
 }
 

@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "core/vehicle_dynamics/vehicle_equations.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "core/dynamics/rail_placement.hpp"
+#include "core/vehicle/body_dynamics.hpp"
+
+namespace wrc {
+namespace {
+
+// The wheelset equations' parameters of wheelset body b: its mass and inertias, its external
+// force as the wheelset equations' loads (lateral force, and the vertical one as a weight that
+// takes the curve's centrifugal share, as the lone wheelset's load does), no suspension of its own
+// (the vehicle's elements are its suspension), the rest the run's.
+WheelsetParameters wheelset_parameters(const VehicleBody& b, const WheelsetParameters& common) {
+  const auto refuse = [&b](const std::string& key, const std::string& why) {
+    throw std::invalid_argument("body '" + b.name + "': " + key + ": " + why);
+  };
+  for (double p : b.products_of_inertia)
+    if (p != 0.0) refuse("products_of_inertia", "a wheelset's principal axes lie along the track (all 0)");
+  if (b.position[1] != 0.0) refuse("position", "a wheelset's centre lies on the centre line (y = 0)");
+  if (b.external_force[0] != 0.0)
+    refuse("external_force", "a wheelset has no longitudinal freedom (F_x must be 0, not " +
+                                 std::to_string(b.external_force[0]) + " N)");
+  WheelsetParameters p = common;
+  p.mass = b.mass;
+  p.roll_inertia = b.inertia[0];
+  p.spin_inertia = b.inertia[1];
+  p.yaw_inertia = b.inertia[2];
+  p.lateral_force = b.external_force[1];
+  p.vertical_force = -b.external_force[2];
+  p.include_gravity = true;
+  p.suspension = PrimarySuspension::none();
+  return p;
+}
+
+}  // namespace
+
+VehicleEquations::VehicleEquations(VehicleDescription vehicle, const WheelsetParameters& common, TrackLayout layout,
+                                   TrackIrregularity irregularity, double nominal_radius,
+                                   const std::vector<double>& wheel_loads)
+    : vehicle_(std::move(vehicle)),
+      layout_(std::move(layout)),
+      irregularity_(std::move(irregularity)),
+      speed_(common.speed),
+      gravity_(common.include_gravity ? common.gravity : 0.0) {
+  validate(vehicle_);
+  common.validate();
+  const std::vector<const VehicleBody*> ws = vehicle_.wheelsets();
+  if (wheel_loads.size() != ws.size())
+    throw std::invalid_argument("VehicleEquations: " + std::to_string(wheel_loads.size()) + " wheel loads for " +
+                                std::to_string(ws.size()) + " wheelsets");
+  wheelsets_.reserve(ws.size());  // WheelsetContact keeps references to them
+  wheelset_of_body_.assign(vehicle_.bodies.size(), -1);
+  for (size_t b = 0; b < vehicle_.bodies.size(); ++b) {
+    const VehicleBody& body = vehicle_.bodies[b];
+    if (body.kind != BodyKind::kWheelset) continue;
+    const size_t w = wheelsets_.size();
+    WheelsetParameters p = wheelset_parameters(body, common);
+    wheelsets_.emplace_back(p, body.position[2], nominal_radius, wheel_loads[w]);
+    wheelset_bodies_.push_back(b);
+    wheelset_of_body_[b] = static_cast<int>(w);
+  }
+}
+
+VehicleLayout VehicleEquations::layout_of(const std::vector<int>& wheelset_unknowns) const {
+  if (wheelset_unknowns.size() != wheelsets_.size())
+    throw std::logic_error("VehicleEquations::layout_of: unknowns of " + std::to_string(wheelset_unknowns.size()) +
+                           " wheelsets for " + std::to_string(wheelsets_.size()));
+  VehicleLayout l;
+  for (size_t b = 0; b < vehicle_.bodies.size(); ++b) {
+    const int w = wheelset_of_body_[b];
+    const int n = w < 0 ? kBodyUnknowns : wheelset_unknowns[static_cast<size_t>(w)];
+    l.offset.push_back(l.unknowns);
+    l.size.push_back(n);
+    l.unknowns += n;
+  }
+  return l;
+}
+
+void VehicleEquations::place(double t) {
+  s_ref_ = speed_ * t;
+  for (size_t w = 0; w < wheelsets_.size(); ++w) {
+    const double s = s_ref_ + vehicle_.bodies[wheelset_bodies_[w]].position[0];
+    if (!layout_.straight()) wheelsets_[w].set_track(layout_.at(s));
+    if (!irregularity_.empty())
+      wheelsets_[w].set_rails(rail_offsets_at(irregularity_.at(s), layout_.cant_base(), speed_));
+  }
+}
+
+std::vector<BodyState> VehicleEquations::body_states(const VehicleLayout& layout, const double* y) const {
+  std::vector<BodyState> states(vehicle_.bodies.size());
+  for (size_t b = 0; b < vehicle_.bodies.size(); ++b) {
+    const double* u = y + layout.offset[b];
+    BodyState& s = states[b];
+    if (wheelset_of_body_[b] < 0) {
+      for (size_t k = 0; k < kBodyCoordinates; ++k) {
+        s.displacement[k] = u[k];
+        s.rate[k] = u[kBodyCoordinates + k];
+      }
+      continue;
+    }
+    s.displacement = {u[kUnknownY], u[kUnknownZ] - vehicle_.bodies[b].position[2], u[kUnknownRoll], u[kUnknownYaw], 0.0};
+    s.rate = {u[kUnknownYDot], u[kUnknownZDot], u[kUnknownRollDot], u[kUnknownYawDot], 0.0};
+  }
+  return states;
+}
+
+void VehicleEquations::residual(const VehicleLayout& layout, const double* y, const double* yp,
+                                const std::vector<WheelsetContactView>& contacts, double* r) {
+  const std::vector<BodyState> states = body_states(layout, y);
+  const std::vector<BodyLoads> loads = element_loads(vehicle_, layout_, s_ref_, speed_, states);
+  for (size_t b = 0; b < vehicle_.bodies.size(); ++b) {
+    const int off = layout.offset[b];
+    const std::array<double, kBodyCoordinates>& q = loads[b].generalised;
+    const int w = wheelset_of_body_[b];
+    if (w >= 0) {
+      const WheelsetContactView& c = contacts[static_cast<size_t>(w)];
+      WheelsetEquations& e = wheelsets_[static_cast<size_t>(w)];
+      e.set_element_forces(Eigen::Vector4d(q[kBodyLateral], q[kBodyVertical], q[kBodyRoll], q[kBodyYaw]));
+      e.residual(c.formulation, y + off, yp + off, *c.result, *c.branches, r + off);
+      continue;
+    }
+    const BodyDynamics d = body_dynamics(vehicle_.bodies[b], layout_, s_ref_, speed_, states[b], gravity_);
+    constexpr int n = static_cast<int>(kBodyCoordinates);
+    const Eigen::Map<const BodyVector> rate(y + off + n);
+    const Eigen::Map<const BodyVector> acceleration(yp + off + n);
+    const Eigen::Map<const BodyVector> applied(q.data());
+    Eigen::Map<BodyVector> kinematic(r + off);
+    Eigen::Map<BodyVector> dynamic(r + off + n);
+    kinematic = Eigen::Map<const BodyVector>(yp + off) - rate;
+    dynamic = d.mass_matrix * acceleration - (applied + d.gravity + d.external - d.inertial);
+  }
+}
+
+void VehicleEquations::add_derivative_terms(const VehicleLayout& layout, const double* y, double c,
+                                            DenseMatrixView jac) const {
+  const std::vector<BodyState> states = body_states(layout, y);
+  for (size_t b = 0; b < vehicle_.bodies.size(); ++b) {
+    const int off = layout.offset[b];
+    const int w = wheelset_of_body_[b];
+    if (w >= 0) {
+      const WheelsetEquations& e = wheelsets_[static_cast<size_t>(w)];
+      for (int k = 0; k < layout.size[b]; ++k) jac(off + k, off + k) += c * e.derivative_coefficient(k);
+      continue;
+    }
+    constexpr int n = static_cast<int>(kBodyCoordinates);
+    for (int k = 0; k < n; ++k) jac(off + k, off + k) += c;
+    const BodyDynamics d = body_dynamics(vehicle_.bodies[b], layout_, s_ref_, speed_, states[b], gravity_);
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < n; ++k) jac(off + n + i, off + n + k) += c * d.mass_matrix(i, k);
+  }
+}
+
+}  // namespace wrc

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "core/vehicle_dynamics/vehicle_equilibrium.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+
+#include "core/dynamics/segment_settings.hpp"
+#include "core/dynamics/wheelset_equations.hpp"
+
+namespace wrc {
+namespace {
+
+// [-] the weighted RMS Newton step below which the iteration has converged: every unknown within
+// a thousandth of its tolerance.
+constexpr double kConvergedStep = 1e-3;
+// [-] the smallest damping factor of a Newton step.
+constexpr double kSmallestDamping = 1.0 / 64.0;
+
+double weighted_rms(const Eigen::VectorXd& v, const std::vector<double>& w) {
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < v.size(); ++i) sum += std::pow(v[i] * w[static_cast<size_t>(i)], 2);
+  return std::sqrt(sum / static_cast<double>(std::max<Eigen::Index>(v.size(), 1)));
+}
+
+// "body 'NAME' unknown k" of state index i.
+std::string unknown_name(const VehicleDae& dae, const VehicleLayout& layout, Eigen::Index i) {
+  const VehicleDescription& v = dae.equations().vehicle();
+  for (size_t b = 0; b < v.bodies.size(); ++b)
+    if (i >= layout.offset[b] && i < layout.offset[b] + layout.size[b])
+      return "body '" + v.bodies[b].name + "' unknown " + std::to_string(i - layout.offset[b]);
+  return "unknown " + std::to_string(i);
+}
+
+}  // namespace
+
+std::vector<double> equilibrium_weights(const VehicleDae& dae, double position_tolerance, double velocity_tolerance) {
+  const VehicleEquations& e = dae.equations();
+  const VehicleLayout layout = dae.layout();
+  std::vector<double> w;
+  for (size_t b = 0; b < e.vehicle().bodies.size(); ++b) {
+    for (int k = 0; k < layout.size[b]; ++k) {
+      const bool wheelset = e.wheelset_of_body(b) >= 0;
+      const double tol = wheelset ? (k < kPoseUnknowns ? position_tolerance
+                                     : k <= kUnknownSpinRate ? velocity_tolerance
+                                                             : kScaledForceTolerance)
+                                  : (k < static_cast<int>(kBodyCoordinates) ? position_tolerance : velocity_tolerance);
+      w.push_back(1.0 / tol);
+    }
+  }
+  return w;
+}
+
+VehicleEquilibrium vehicle_equilibrium(VehicleDae& dae, double t, std::vector<double> y,
+                                       const std::vector<double>& weights, int max_iterations) {
+  const VehicleLayout layout = dae.layout();
+  const Eigen::Index n = layout.unknowns;
+  if (static_cast<Eigen::Index>(y.size()) != n || static_cast<Eigen::Index>(weights.size()) != n)
+    throw std::logic_error("vehicle_equilibrium: a guess or weights of another layout");
+  const std::vector<double> zero(static_cast<size_t>(n), 0.0);
+  Eigen::VectorXd r(n), r_trial(n);
+  Eigen::MatrixXd jac(n, n);
+  const auto residual = [&](const std::vector<double>& state, Eigen::VectorXd& out) {
+    dae.residual(t, state.data(), zero.data(), out.data());
+  };
+  residual(y, r);
+  VehicleEquilibrium result;
+  for (int iteration = 1; iteration <= max_iterations; ++iteration) {
+    jac.setZero();
+    dae.jacobian(t, 0.0, y.data(), zero.data(), r.data(), DenseMatrixView{jac.data(), n});
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(jac);
+    if (!lu.isInvertible()) {
+      std::ostringstream msg;
+      msg << "the vehicle's equilibrium at t = " << t << " s: the Newton matrix is singular (rank " << lu.rank()
+          << " of " << n << "): a body is not held in some direction";
+      throw std::runtime_error(msg.str());
+    }
+    const Eigen::VectorXd step = -lu.solve(r);
+    const double norm = weighted_rms(step, weights);
+    result.iterations = iteration;
+    result.last_step = norm;
+    if (norm < kConvergedStep) {
+      for (Eigen::Index i = 0; i < n; ++i) y[static_cast<size_t>(i)] += step[i];
+      result.state = std::move(y);
+      return result;
+    }
+    // Damped: the next Newton step (with this matrix) must be shorter than this one.
+    double lambda = 1.0;
+    std::vector<double> trial(y.size());
+    for (;;) {
+      for (Eigen::Index i = 0; i < n; ++i) trial[static_cast<size_t>(i)] = y[static_cast<size_t>(i)] + lambda * step[i];
+      residual(trial, r_trial);
+      const double next = weighted_rms(lu.solve(r_trial), weights);
+      if (std::isfinite(next) && (next < (1.0 - lambda / 4.0) * norm || lambda <= kSmallestDamping)) break;
+      lambda *= 0.5;
+    }
+    y = trial;
+    r = r_trial;
+  }
+  Eigen::Index worst = 0;
+  r.cwiseAbs().maxCoeff(&worst);
+  std::ostringstream msg;
+  msg << "the vehicle's equilibrium at t = " << t << " s does not converge in " << max_iterations
+      << " Newton iterations (last step " << result.last_step << " times the tolerance; largest residual "
+      << r[worst] << " at " << unknown_name(dae, layout, worst) << ")";
+  throw std::runtime_error(msg.str());
+}
+
+}  // namespace wrc

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: Apache-2.0
+#pragma once
+/// @file
+/// A vehicle run: the equations of vehicle_equations.hpp integrated by SUNDIALS IDA step by step
+/// from the vehicle's equilibrium on the track at t = 0 (vehicle_equilibrium.hpp), every
+/// wheelset's contact from one contact evaluator in one batch per evaluation
+/// (vehicle_contact.hpp), output samples every output period.
+///
+/// What the lone wheelset's run has and this one does not have yet (docs/vehicle.md, "Running a
+/// vehicle"): the one-point contact's events and switches per wheelset (a rigid run follows each
+/// wheel's lowest point at every evaluation, so a jump of the contact point is a discontinuity the
+/// integrator steps through with smaller steps), two-point sliding, model swaps, the states sent
+/// ahead with the accepted step, an initial disturbance.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/dynamics/contact_evaluator.hpp"
+#include "core/dynamics/ida_integrator.hpp"
+#include "core/dynamics/run_counters.hpp"
+#include "core/dynamics/wheelset_parameters.hpp"
+#include "core/dynamics/wheelset_simulation.hpp"
+#include "core/vehicle/vehicle_description.hpp"
+#include "core/vehicle_dynamics/vehicle_contact.hpp"
+#include "core/vehicle_dynamics/vehicle_dae.hpp"
+#include "core/vehicle_dynamics/vehicle_equations.hpp"
+
+namespace wrc {
+
+/// A whole vehicle run.
+struct VehicleRunSpec {
+  VehicleDescription vehicle;
+  /// The run: speed, material, FASTSIM grid, gravity and flange angle from run.wheelset (its
+  /// masses, loads and suspension are the vehicle's instead), the integrator settings, the track
+  /// and its irregularities. run.initial must be the rest state (all 0): the run starts from the
+  /// vehicle's equilibrium.
+  RunSpec run;
+};
+
+/// The vehicle at one time.
+struct VehicleSnapshot {
+  double t = 0;                  ///< simulated time [s]
+  /// Each body's displacement from its nominal position in its own track frame and its rates, in
+  /// the order of the vehicle's bodies (a wheelset's z from its position's z; pitch 0)
+  std::vector<BodyState> bodies;
+  std::vector<double> spin_rates;  ///< each wheelset's spin [rad/s], in the order of the wheelsets
+};
+
+class VehicleSimulation : private DaeSystem {
+ public:
+  /// @param nominal_radius r0 of the wheel profile [m]
+  /// @throws std::invalid_argument for an invalid spec (naming the body and key), a null contact.
+  VehicleSimulation(VehicleRunSpec spec, std::shared_ptr<ContactEvaluator> contact, double nominal_radius);
+  ~VehicleSimulation() override;
+  VehicleSimulation(const VehicleSimulation&) = delete;
+  VehicleSimulation& operator=(const VehicleSimulation&) = delete;
+
+  /// Called with every output sample (t = 0, every output period, t_end).
+  void on_output(std::function<void(const VehicleSnapshot&)> callback) { on_output_ = std::move(callback); }
+
+  /// The equilibrium at t = 0 (rigid contact first, then the model's own formulation) and the
+  /// first output. @throws std::runtime_error when there is none (the message says why).
+  void start();
+  /// One integrator step with the outputs it passes; false once the run is over (state()).
+  bool advance();
+  /// start() if not started, then advance() to the end.
+  void run();
+
+  RunState state() const { return state_; }
+  const std::string& message() const { return message_; }
+  double time() const { return t_; }
+  std::string model() const { return contact_.evaluator()->model(); }
+  /// The vehicle now (after the last step).
+  VehicleSnapshot snapshot() const;
+  /// The state vector now and its layout (vehicle_equations.hpp).
+  std::vector<double> state_vector() const;
+  VehicleLayout layout() const { return dae_.layout(); }
+  /// Counters summed over the run: IDA's, the Jacobians and the contact batches.
+  RunCounters counters() const;
+  const VehicleEquations& equations() const { return equations_; }
+  /// Each wheelset's static wheel load, the scale of its normal forces [N].
+  const std::vector<double>& wheel_loads() const { return wheel_loads_; }
+
+ private:
+  int residual(double t, const double* y, const double* yp, double* r) override;
+  int jacobian(double t, double cj, const double* y, const double* yp, const double* r, DenseMatrixView jac) override;
+  int roots(double t, const double* y, double* g) override;
+  void message(const char* function, const char* text) override;
+  VehicleSnapshot snapshot_of(double t, const std::vector<double>& y) const;
+  void emit_outputs_until(double t);
+  void fail(const std::string& why);
+
+  VehicleRunSpec spec_;
+  std::vector<double> wheel_loads_;
+  VehicleEquations equations_;
+  VehicleContact contact_;
+  VehicleDae dae_;
+  IdaIntegrator integrator_;
+  std::function<void(const VehicleSnapshot&)> on_output_;
+  bool started_ = false;
+  double t_ = 0;
+  long next_output_ = 0;  // index of the next output sample
+  RunState state_ = RunState::kRunning;
+  std::string message_;
+  std::string last_error_;
+};
+
+/// Each wheelset's static wheel load on level track [N]: the vehicle's weight and vertical
+/// external forces shared evenly by its wheels.
+/// @param gravity g [m/s^2]
+std::vector<double> static_wheel_loads(const VehicleDescription& vehicle, double gravity);
+
+}  // namespace wrc

@@ -1,11 +1,24 @@
 // SPDX-License-Identifier: Apache-2.0
-// A vehicle's equations (core/vehicle_dynamics/) against the linear steady-curving theory of a
-// two-axle bogie (core/vehicle/bogie_steady_curving.hpp, docs/bogie-curving.md).
+// A vehicle's equations (core/vehicle_dynamics/) run through a curve against the linear
+// steady-curving theory of a two-axle bogie (core/vehicle/bogie_steady_curving.hpp, derived in
+// docs/bogie-curving.md, whose last section derives the tolerances used here).
+//
+// The vehicle is the shipped Cooperrider bogie (parameters/vehicles/cooperrider-bogie.json: a frame
+// and two wheelsets on primary springs, its secondary springs and dampers tied to the track) on a
+// cone of conicity 0.05 with r0 = 0.425 m on a 0.1 m circular rail head, gauge 1.5 m, friction 10
+// ("linear creep": FASTSIM far from saturation), at 20 m/s, no cant. It enters the curve from a
+// straight through a 40 m transition and runs there until it has settled. The theory takes the
+// contact's linear values from wrc's own geometry and contact at the static wheel load
+// (wickens_from_model(): conicity, rolling radius, contact half distance, f11, f22, f23 from the
+// Hertz patch and Kalker's coefficients, the gravitational stiffness) and the uncompensated
+// lateral acceleration -V^2 / R of every body.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
-#include <cstdio>
 #include <memory>
+#include <string>
 
 #include "core/dynamics/linear_stability.hpp"
 #include "core/dynamics/wickens_from_model.hpp"
@@ -19,7 +32,11 @@
 namespace wrc {
 namespace {
 
-constexpr double kR0 = 0.425;
+constexpr double kR0 = 0.425;     // [m] the Cooperrider wheel's radius
+constexpr double kSpeed = 20.0;   // [m/s]
+constexpr double kFriction = 10.0;
+// Bodies of the bogie file, in its order.
+constexpr size_t kFrame = 0, kLeading = 1, kTrailing = 2;
 
 std::shared_ptr<const WheelsetGeometry> cone_on_circle() {
   TrackParameters t;
@@ -36,35 +53,33 @@ std::shared_ptr<ContactEvaluator> contact(const std::string& model) {
   return std::make_shared<InProcessContact>(make_contact_model(model, cone_on_circle()));
 }
 
-TEST(VehicleCurving, Explore) {
-  const double radius = 3000.0, speed = 20.0;
-  VehicleRunSpec spec;
-  spec.vehicle = read_vehicle_file(std::string(WRC_PARAMETERS_DIR) + "/vehicles/cooperrider-bogie.json");
-  spec.run.wheelset.speed = speed;
-  spec.run.wheelset.material.friction = 10.0;
-  spec.run.wheelset.lateral_force = 0.0;
-  spec.run.integrator.t_end = 6.0;
-  spec.run.integrator.output_period = 0.5;
-  TrackSegment straight{TrackSegmentKind::kStraight, 10.0};
-  TrackSegment transition{TrackSegmentKind::kTransition, 40.0};
-  TrackSegment curve{TrackSegmentKind::kCurve, 1000.0, radius, true, 0.0};
-  spec.run.track = TrackLayout({straight, transition, curve});
-  VehicleSimulation sim(spec, contact("onepoint"), kR0);
-  sim.on_output([](const VehicleSnapshot& s) {
-    std::printf("t=%.2f  frame y=%.4e yaw=%.4e z=%.4e | ws1 y=%.4e yaw=%.4e z=%.4e | ws2 y=%.4e yaw=%.4e\n", s.t,
-                s.bodies[0].displacement[0], s.bodies[0].displacement[3], s.bodies[0].displacement[1],
-                s.bodies[1].displacement[0], s.bodies[1].displacement[3], s.bodies[1].displacement[1],
-                s.bodies[2].displacement[0], s.bodies[2].displacement[3]);
-  });
-  sim.run();
-  EXPECT_EQ(sim.state(), RunState::kFinished) << sim.message();
-  const RunCounters c = sim.counters();
-  std::printf("steps %ld queries %ld configs %ld jac %ld\n", c.steps, c.contact_queries, c.contact_configurations,
-              c.jacobian_evals);
+VehicleDescription cooperrider_bogie() {
+  return read_vehicle_file(std::string(WRC_PARAMETERS_DIR) + "/vehicles/cooperrider-bogie.json");
+}
 
+// A run of the bogie through a straight of 10 m and a 40 m transition into a curve of radius R
+// [m] (left, or right for R < 0), to t_end [s].
+VehicleRunSpec curve_run(double radius, double t_end) {
+  VehicleRunSpec spec;
+  spec.vehicle = cooperrider_bogie();
+  spec.run.wheelset.speed = kSpeed;
+  spec.run.wheelset.material.friction = kFriction;
+  spec.run.wheelset.lateral_force = 0.0;
+  spec.run.integrator.t_end = t_end;
+  spec.run.integrator.output_period = 0.01;
+  const TrackSegment straight{TrackSegmentKind::kStraight, 10.0};
+  const TrackSegment transition{TrackSegmentKind::kTransition, 40.0};
+  const TrackSegment curve{TrackSegmentKind::kCurve, 2000.0, std::abs(radius), radius > 0.0, 0.0};
+  spec.run.track = TrackLayout({straight, transition, curve});
+  return spec;
+}
+
+// The theory's bogie: the file's masses and springs (docs/bogie-curving.md, "Numbers"), the contact
+// of the cone at the static wheel load [N] from the model, and the curve's 1/R and -V^2/R.
+BogieCurvingResult theory(double radius, double wheel_load) {
   BogieCurvingParameters p;
   p.curvature = 1.0 / radius;
-  p.lateral_acceleration = -speed * speed / radius;
+  p.lateral_acceleration = -kSpeed * kSpeed / radius;
   p.frame_mass = 2918.9;
   p.wheelset_mass = 1022.0;
   p.semi_wheelbase = 1.074;
@@ -73,24 +88,107 @@ TEST(VehicleCurving, Explore) {
   p.primary_semi_spacing = 0.62;
   p.secondary_lateral_stiffness = 2.0 * 1.823e5;
   p.secondary_yaw_stiffness = 2.0 * 9.0335e5 * 0.68 * 0.68;
-  WheelsetParameters wp;
-  wp.mass = 1022.0;
-  wp.vertical_force = 2.0 * sim.wheel_loads()[0] - 1022.0 * 9.81;
-  wp.lateral_force = 0.0;
-  wp.material.friction = 10.0;
-  wp.suspension = PrimarySuspension::none();
-  LinearStability ls(wp, contact("onepoint"), kR0);
-  const WickensFromModel w = wickens_from_model(*cone_on_circle(), wp, ls.steady_state(speed));
-  p.conicity = w.model.conicity;
-  p.rolling_radius = w.model.rolling_radius;
-  p.contact_half_distance = w.model.contact_half_distance;
-  p.f11 = w.model.f11;
-  p.f22 = w.model.f22;
-  p.gravitational_lateral_stiffness = w.gravitational_stiffness;
-  p.f23 = wp.material.shear_modulus * std::pow(w.semi_axis_a * w.semi_axis_b, 1.5) * w.c23;
-  const BogieCurvingResult r = bogie_steady_curving(p);
-  std::printf("theory frame y=%.4e yaw=%.4e | ws1 y=%.4e yaw=%.4e | ws2 y=%.4e yaw=%.4e\n", r.frame_lateral,
-              r.frame_yaw, r.wheelsets[0].lateral, r.wheelsets[0].yaw, r.wheelsets[1].lateral, r.wheelsets[1].yaw);
+  WheelsetParameters w;
+  w.mass = p.wheelset_mass;
+  w.vertical_force = 2.0 * wheel_load - w.mass * w.gravity;
+  w.lateral_force = 0.0;
+  w.material.friction = kFriction;
+  // The primary vertical springs resist the roll that comes with a lateral shift: part of the
+  // gravitational stiffness as wickens_from_model() takes it (2 k_z b1^2 (d roll/dy)^2).
+  w.suspension = PrimarySuspension::none();
+  w.suspension.vertical_stiffness = 3.646e6;
+  w.suspension.half_spacing = 0.62;
+  LinearStability linear(w, contact("onepoint"), kR0);
+  const WickensFromModel m = wickens_from_model(*cone_on_circle(), w, linear.steady_state(kSpeed));
+  p.conicity = m.model.conicity;
+  p.rolling_radius = m.model.rolling_radius;
+  p.contact_half_distance = m.model.contact_half_distance;
+  p.f11 = m.model.f11;
+  p.f22 = m.model.f22;
+  p.f23 = w.material.shear_modulus * std::pow(m.semi_axis_a * m.semi_axis_b, 1.5) * m.c23;
+  p.gravitational_lateral_stiffness = m.gravitational_stiffness;
+  return bogie_steady_curving(p);
+}
+
+// (y_f, psi_f, y_1, psi_1, y_2, psi_2) of a snapshot and of the theory.
+std::array<double, 6> displacements(const VehicleSnapshot& s) {
+  const auto& b = s.bodies;
+  return {b[kFrame].displacement[kBodyLateral], b[kFrame].displacement[kBodyYaw],
+          b[kLeading].displacement[kBodyLateral], b[kLeading].displacement[kBodyYaw],
+          b[kTrailing].displacement[kBodyLateral], b[kTrailing].displacement[kBodyYaw]};
+}
+std::array<double, 6> displacements(const BogieCurvingResult& r) {
+  return {r.frame_lateral, r.frame_yaw, r.wheelsets[0].lateral, r.wheelsets[0].yaw, r.wheelsets[1].lateral,
+          r.wheelsets[1].yaw};
+}
+
+// The largest difference on the theory's scales (docs/bogie-curving.md): lateral ones over the
+// wheelsets' largest |y_i|, angles over a / |R|.
+double scaled_difference(const std::array<double, 6>& a, const std::array<double, 6>& b, double y_scale,
+                         double psi_scale) {
+  double d = 0.0;
+  for (size_t k = 0; k < 6; ++k) d = std::max(d, std::abs(a[k] - b[k]) / (k % 2 == 0 ? y_scale : psi_scale));
+  return d;
+}
+
+struct CurveOutcome {
+  std::array<double, 6> run_end, steady, linear;
+  double y_scale = 0, psi_scale = 0;
+};
+
+CurveOutcome run_curve(double radius, const std::string& model) {
+  VehicleSimulation run(curve_run(radius, 12.0), contact(model), kR0);
+  run.run();
+  EXPECT_EQ(run.state(), RunState::kFinished) << run.message();
+  CurveOutcome o;
+  o.run_end = displacements(run.snapshot());
+  o.steady = displacements(run.steady_state(run.time()));
+  o.linear = displacements(theory(radius, run.wheel_loads()[0]));
+  o.y_scale = std::max(std::abs(o.linear[2]), std::abs(o.linear[4]));
+  o.psi_scale = 1.074 / std::abs(radius);
+  return o;
+}
+
+// docs/bogie-curving.md, "The tolerance of a nonlinear simulation against this theory": on the cone
+// with spin and the gravitational stiffness in the theory, the neglected second-order kinematics,
+// contact angle, FASTSIM's coefficients and the start of saturation sum to 1.2 % at R = 3000 m and
+// 3.4 % at R = 600 m; asserted: 2 % and 5 %. Measured: 1.37 % at both radii (the frame's yaw),
+// so what differs is linear in 1/R (creep coefficients, contact angle), not the kinematics. The run ends within 1e-3 of the scales of the steady
+// state it settles on (the lightly damped frame's last oscillation, decaying). A gross error is far
+// outside: a lost factor 2 in a creep coefficient moves the results by tens of percent, a wrong
+// sign of the curve's terms by 200 %.
+TEST(VehicleCurving, TheCooperriderBogieOnTheConeCurvesAsTheLinearTheoryHasIt) {
+  for (const auto& [radius, tolerance] : {std::pair{3000.0, 0.02}, std::pair{600.0, 0.05}}) {
+    SCOPED_TRACE("R = " + std::to_string(radius) + " m");
+    const CurveOutcome o = run_curve(radius, "onepoint");
+    EXPECT_LT(scaled_difference(o.run_end, o.steady, o.y_scale, o.psi_scale), 1e-3);
+    EXPECT_LT(scaled_difference(o.steady, o.linear, o.y_scale, o.psi_scale), tolerance);
+    // The shape the theory predicts: both wheelsets outwards (y < 0 in a left curve), the leading
+    // one further, pointing outwards (psi_1 < 0), the trailing one inwards.
+    EXPECT_LT(o.steady[2], o.steady[4]);
+    EXPECT_LT(o.steady[4], 0.0);
+    EXPECT_LT(o.steady[3], 0.0);
+    EXPECT_GT(o.steady[5], 0.0);
+  }
+}
+
+// The elastic formulation (multipoint: normal forces from Hertz springs) curves alike: it differs
+// from the rigid one by the wheels' vertical compliance only.
+TEST(VehicleCurving, TheElasticFormulationCurvesAsTheRigidOne) {
+  const CurveOutcome rigid = run_curve(3000.0, "onepoint");
+  const CurveOutcome elastic = run_curve(3000.0, "multipoint");
+  EXPECT_LT(scaled_difference(elastic.steady, elastic.linear, elastic.y_scale, elastic.psi_scale), 0.02);
+  EXPECT_LT(scaled_difference(elastic.steady, rigid.steady, rigid.y_scale, rigid.psi_scale), 2e-3);
+}
+
+// Mirror symmetry: a right curve gives the left curve's lateral displacements and yaw angles
+// negated (the cone and the bogie are symmetric); rounding only, 1e-9 of the scales.
+TEST(VehicleCurving, ARightCurveMirrorsALeftOne) {
+  const CurveOutcome left = run_curve(3000.0, "onepoint");
+  const CurveOutcome right = run_curve(-3000.0, "onepoint");
+  std::array<double, 6> mirrored{};
+  for (size_t k = 0; k < 6; ++k) mirrored[k] = -right.steady[k];
+  EXPECT_LT(scaled_difference(mirrored, left.steady, left.y_scale, left.psi_scale), 1e-9);
 }
 
 }  // namespace

@@ -196,6 +196,13 @@ VehicleSnapshot VehicleSimulation::snapshot_of(double t, const std::vector<doubl
 
 VehicleSnapshot VehicleSimulation::snapshot() const { return snapshot_of(t_, integrator_.state()); }
 
+VehicleSnapshot VehicleSimulation::steady_state(double t) {
+  const IntegratorSettings& s = spec_.run.integrator;
+  const VehicleEquilibrium e = vehicle_equilibrium(dae_, t, integrator_.state(),
+                                                   equilibrium_weights(dae_, s.position_tolerance, s.velocity_tolerance));
+  return snapshot_of(t, e.state);
+}
+
 void VehicleSimulation::emit_outputs_until(double t) {
   const IntegratorSettings& s = spec_.run.integrator;
   for (;;) {

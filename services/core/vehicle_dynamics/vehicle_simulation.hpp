@@ -74,6 +74,11 @@ class VehicleSimulation : private DaeSystem {
   std::string model() const { return contact_.evaluator()->model(); }
   /// The vehicle now (after the last step).
   VehicleSnapshot snapshot() const;
+  /// The vehicle at rest in its track frames where time t places it: F(t, y, 0) = 0 solved from the
+  /// state now (vehicle_equilibrium.hpp). In a curve of constant radius and cant, the steady
+  /// curving state a run settles on; the run itself is not changed.
+  /// @throws std::runtime_error when the iteration finds none.
+  VehicleSnapshot steady_state(double t);
   /// The state vector now and its layout (vehicle_equations.hpp).
   std::vector<double> state_vector() const;
   VehicleLayout layout() const { return dae_.layout(); }

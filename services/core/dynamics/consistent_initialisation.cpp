@@ -18,9 +18,6 @@ constexpr double kGapTolerance = 1e-13;
 // 40 leaves room for the start (height r0, far from the rigid one by the profile's shape).
 constexpr int kMaxProjectionIterations = 40;
 
-// [m] the elastic settling starts this far below the rigid contact: the static Hertz approach of
-// a typical wheel load (about 0.1 mm for the benchmark's 77 kN).
-constexpr double kElasticStartDepth = 1e-4;
 // [m] for the height, [rad] for the roll: the finite-difference increment of the settling's
 // Jacobian (the Hertz force is smooth at that scale, rounding of the distance well below it).
 constexpr double kSettleIncrement = 1e-9;

@@ -15,6 +15,11 @@
 
 namespace wrc {
 
+/// [m] the elastic settling starts this far below the rigid contact: the static Hertz approach of
+/// a typical wheel load (about 0.1 mm for the benchmark's 77 kN); a Hertz spring at zero approach
+/// has no stiffness to start Newton's method from.
+inline constexpr double kElasticStartDepth = 1e-4;
+
 /// A constraint the rigid formulation holds: each wheel's point, and the second point of a wheel
 /// in two-point contact, with the index of its normal force in the state.
 struct ActiveConstraint {

@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "core/dynamics/consistent_initialisation.hpp"
+#include "core/dynamics/critical_speed_search.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/numerics/inclusive_range.hpp"
 #include "core/numerics/number_text.hpp"
@@ -320,34 +321,16 @@ LinearisedWheelset LinearStability::linearise(double speed) {
 }
 
 CriticalSpeed LinearStability::critical_speed(const std::vector<LinearisedWheelset>& scan, double relative_tolerance) {
+  const GrowthCrossing<LinearisedWheelset> crossing = first_growth_crossing(
+      scan, [this](double v) { return linearise(v); },
+      [](const LinearisedWheelset& l) { return l.least_damped().eigenvalue.real(); }, relative_tolerance);
   CriticalSpeed c;
-  auto growth = [](const LinearisedWheelset& l) { return l.least_damped().eigenvalue.real(); };
-  for (size_t i = 0; i + 1 < scan.size(); ++i) {
-    if (!(growth(scan[i]) < 0.0 && growth(scan[i + 1]) >= 0.0)) continue;
-    double a = scan[i].speed, fa = growth(scan[i]);
-    double b = scan[i + 1].speed, fb = growth(scan[i + 1]);
-    LinearisedWheelset at = scan[i + 1];
-    // Illinois: regula falsi that halves the value of an end kept twice, so both ends move.
-    for (int iteration = 0; iteration < 100 && std::abs(b - a) > relative_tolerance * b && fb != 0.0; ++iteration) {
-      const double v = (a * fb - b * fa) / (fb - fa);
-      at = linearise(v);
-      ++c.linearisations;
-      const double fv = growth(at);
-      if ((fv < 0.0) == (fb < 0.0)) {
-        fa *= 0.5;
-      } else {
-        a = b;
-        fa = fb;
-      }
-      b = v;
-      fb = fv;
-    }
-    c.found = true;
-    c.speed = b;
-    c.frequency = at.least_damped().frequency();
-    c.kind = at.least_damped().kind;
-    return c;
-  }
+  c.linearisations = crossing.linearisations;
+  if (!crossing.found) return c;
+  c.found = true;
+  c.speed = crossing.speed;
+  c.frequency = crossing.at.least_damped().frequency();
+  c.kind = crossing.at.least_damped().kind;
   return c;
 }
 

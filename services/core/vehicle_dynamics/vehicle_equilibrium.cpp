@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/dynamics/consistent_initialisation.hpp"
 #include "core/dynamics/segment_settings.hpp"
 #include "core/dynamics/wheelset_equations.hpp"
 
@@ -54,7 +55,8 @@ std::vector<double> equilibrium_weights(const VehicleDae& dae, double position_t
 }
 
 VehicleEquilibrium vehicle_equilibrium(VehicleDae& dae, double t, std::vector<double> y,
-                                       const std::vector<double>& weights, int max_iterations) {
+                                       const std::vector<double>& weights, const std::vector<HeldWheelset>& held,
+                                       int max_iterations) {
   const VehicleLayout layout = dae.layout();
   const Eigen::Index n = layout.unknowns;
   if (static_cast<Eigen::Index>(y.size()) != n || static_cast<Eigen::Index>(weights.size()) != n)
@@ -62,14 +64,33 @@ VehicleEquilibrium vehicle_equilibrium(VehicleDae& dae, double t, std::vector<do
   const std::vector<double> zero(static_cast<size_t>(n), 0.0);
   Eigen::VectorXd r(n), r_trial(n);
   Eigen::MatrixXd jac(n, n);
+  // The rows and columns of the held wheelsets: its lateral and yaw balance rows hold y and yaw.
+  struct Hold {
+    Eigen::Index row, column;
+    double value;
+  };
+  std::vector<Hold> holds;
+  for (const HeldWheelset& h : held) {
+    if (h.wheelset >= dae.equations().wheelset_count())
+      throw std::invalid_argument("vehicle_equilibrium: wheelset " + std::to_string(h.wheelset) + " of " +
+                                  std::to_string(dae.equations().wheelset_count()));
+    const Eigen::Index off = layout.offset[dae.equations().wheelset_body(h.wheelset)];
+    holds.push_back({off + kUnknownYDot, off + kUnknownY, h.lateral});
+    holds.push_back({off + kUnknownYawDot, off + kUnknownYaw, h.yaw});
+  }
   const auto residual = [&](const std::vector<double>& state, Eigen::VectorXd& out) {
     dae.residual(t, state.data(), zero.data(), out.data());
+    for (const Hold& h : holds) out[h.row] = state[static_cast<size_t>(h.column)] - h.value;
   };
   residual(y, r);
   VehicleEquilibrium result;
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
     jac.setZero();
     dae.jacobian(t, 0.0, y.data(), zero.data(), r.data(), DenseMatrixView{jac.data(), n});
+    for (const Hold& h : holds) {
+      jac.row(h.row).setZero();
+      jac(h.row, h.column) = 1.0;
+    }
     const Eigen::FullPivLU<Eigen::MatrixXd> lu(jac);
     if (!lu.isInvertible()) {
       std::ostringstream msg;
@@ -106,6 +127,36 @@ VehicleEquilibrium vehicle_equilibrium(VehicleDae& dae, double t, std::vector<do
       << " Newton iterations (last step " << result.last_step << " times the tolerance; largest residual "
       << r[worst] << " at " << unknown_name(dae, layout, worst) << ")";
   throw std::runtime_error(msg.str());
+}
+
+std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, double t, double position_tolerance,
+                                       double velocity_tolerance, const std::vector<HeldWheelset>& held) {
+  VehicleEquations& e = dae.equations();
+  VehicleContact& contact = dae.contact();
+  for (size_t w = 0; w < contact.size(); ++w) contact.wheelset(w).set_formulation(ContactFormulation::kRigid);
+  const VehicleLayout rigid = dae.layout();
+  std::vector<double> y(static_cast<size_t>(rigid.unknowns), 0.0);
+  for (size_t w = 0; w < e.wheelset_count(); ++w) {
+    double* u = y.data() + rigid.offset[e.wheelset_body(w)];
+    const double r0 = e.wheelset(w).nominal_radius();
+    u[kUnknownZ] = r0;
+    u[kUnknownSpinRate] = e.speed() / r0;
+    u[kUnknownNormalLeft] = u[kUnknownNormalRight] = 1.0;  // the static wheel load each
+  }
+  y = vehicle_equilibrium(dae, t, std::move(y), equilibrium_weights(dae, position_tolerance, velocity_tolerance), held)
+          .state;
+  if (own == ContactFormulation::kRigid) return y;
+  std::vector<double> elastic;
+  for (size_t b = 0; b < e.vehicle().bodies.size(); ++b) {
+    const auto first = y.begin() + rigid.offset[b];
+    const bool wheelset = e.wheelset_of_body(b) >= 0;
+    elastic.insert(elastic.end(), first, first + (wheelset ? kElasticUnknowns : rigid.size[b]));
+    if (wheelset) elastic[elastic.size() - kElasticUnknowns + kUnknownZ] -= kElasticStartDepth;
+  }
+  for (size_t w = 0; w < contact.size(); ++w) contact.wheelset(w).set_formulation(ContactFormulation::kElastic);
+  return vehicle_equilibrium(dae, t, std::move(elastic),
+                             equilibrium_weights(dae, position_tolerance, velocity_tolerance), held)
+      .state;
 }
 
 }  // namespace wrc

@@ -26,12 +26,31 @@ struct VehicleEquilibrium {
 ///        [m/s, rad/s]; a wheelset's scaled normal forces and multipliers take 1e-6 [-].
 std::vector<double> equilibrium_weights(const VehicleDae& dae, double position_tolerance, double velocity_tolerance);
 
-/// Solves F(t, y, 0) = 0 by Newton's method from guess (damped: a step is halved until the next
-/// Newton step is shorter, down to 1/64), the forward-difference Jacobian of VehicleDae.
+/// A wheelset held at a lateral shift and yaw: its lateral force and yaw moment balances are
+/// replaced by y = lateral and yaw = yaw (a start disturbed from rest: the vehicle at rest with the
+/// wheelset held there, then released).
+struct HeldWheelset {
+  size_t wheelset = 0;  ///< index among the vehicle's wheelsets [-]
+  double lateral = 0;   ///< y [m]
+  double yaw = 0;       ///< [rad]
+};
+
+/// Solves F(t, y, 0) = 0 (with the held wheelsets' rows replaced) by Newton's method from guess
+/// (damped: a step is halved until the next Newton step is shorter, down to 1/64), the
+/// forward-difference Jacobian of VehicleDae.
 /// @throws std::runtime_error naming the time, the largest residual's body and unknown when the
 ///         iteration does not converge in max_iterations or the matrix is singular (a vehicle
 ///         not held in some direction), and what the contact throws.
 VehicleEquilibrium vehicle_equilibrium(VehicleDae& dae, double t, std::vector<double> guess,
-                                       const std::vector<double>& weights, int max_iterations = 50);
+                                       const std::vector<double>& weights, const std::vector<HeldWheelset>& held = {},
+                                       int max_iterations = 50);
+
+/// The state a run or a linearisation starts from at time t [s]: every body at its nominal
+/// position, each wheelset rolling at V / r0 as the guess; the equilibrium in rigid contact (a
+/// Hertz spring at zero approach has no stiffness to start Newton from), then, for an elastic
+/// model (own), in elastic contact from the rigid one lowered by 0.1 mm. Leaves every wheelset in
+/// formulation own. The tolerances [m, rad] and [m/s, rad/s] weigh the convergence test.
+std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, double t, double position_tolerance,
+                                       double velocity_tolerance, const std::vector<HeldWheelset>& held = {});
 
 }  // namespace wrc

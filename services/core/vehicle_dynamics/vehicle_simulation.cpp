@@ -13,31 +13,15 @@
 namespace wrc {
 namespace {
 
-// [m] the elastic contact's equilibrium starts this far below the rigid contact's: a Hertz
-// spring's stiffness vanishes at zero approach, Newton's matrix with it; 0.1 mm is about the
-// static approach of a 70 kN wheel (the lone wheelset's start takes the same).
-constexpr double kElasticStartDepth = 1e-4;
-
 const VehicleRunSpec& checked(const VehicleRunSpec& spec) {
   validate(spec.vehicle);
   spec.run.validate();
   const InitialState& i = spec.run.initial;
-  if (i.y != 0.0 || i.yaw != 0.0 || i.y_dot != 0.0 || i.yaw_dot != 0.0 || i.spin_rate_offset != 0.0)
-    throw std::invalid_argument("initial state: a vehicle run starts from its equilibrium (every initial value 0)");
+  if (i.y_dot != 0.0 || i.yaw_dot != 0.0 || i.spin_rate_offset != 0.0)
+    throw std::invalid_argument(
+        "initial state: a vehicle run starts at rest (y_dot0, yaw_dot0 and spin_rate_offset 0; y0 and yaw0 hold its "
+        "first wheelset there)");
   return spec;
-}
-
-// The run's equilibrium guess: every body at its nominal position, each wheelset on the nominal
-// radius with its static wheel load, rolling at V / r0.
-std::vector<double> rest_guess(const VehicleEquations& e, const VehicleLayout& layout, double nominal_radius) {
-  std::vector<double> y(static_cast<size_t>(layout.unknowns), 0.0);
-  for (size_t w = 0; w < e.wheelset_count(); ++w) {
-    double* u = y.data() + layout.offset[e.wheelset_body(w)];
-    u[kUnknownZ] = nominal_radius;
-    u[kUnknownSpinRate] = e.speed() / nominal_radius;
-    if (layout.size[e.wheelset_body(w)] > kUnknownNormalRight) u[kUnknownNormalLeft] = u[kUnknownNormalRight] = 1.0;
-  }
-  return y;
 }
 
 // The segment settings of the layout: every car body's and frame's displacements and rates
@@ -83,29 +67,12 @@ VehicleSimulation::~VehicleSimulation() = default;
 void VehicleSimulation::start() {
   const IntegratorSettings& s = spec_.run.integrator;
   const ContactFormulation own = formulation_of(*contact_.evaluator());
-  const double r0 = equations_.wheelset(0).nominal_radius();
-  // Rigid contact first (a Hertz spring at zero approach has no stiffness to start Newton from).
-  for (size_t w = 0; w < contact_.size(); ++w) contact_.wheelset(w).set_formulation(ContactFormulation::kRigid);
-  VehicleLayout layout = dae_.layout();
-  std::vector<double> y = vehicle_equilibrium(dae_, 0.0, rest_guess(equations_, layout, r0),
-                                              equilibrium_weights(dae_, s.position_tolerance, s.velocity_tolerance))
-                              .state;
-  if (own == ContactFormulation::kElastic) {
-    std::vector<double> elastic;
-    for (size_t b = 0; b < equations_.vehicle().bodies.size(); ++b) {
-      const auto first = y.begin() + layout.offset[b];
-      const int keep = equations_.wheelset_of_body(b) >= 0 ? kElasticUnknowns : layout.size[b];
-      elastic.insert(elastic.end(), first, first + keep);
-      if (equations_.wheelset_of_body(b) >= 0) elastic[elastic.size() - kElasticUnknowns + kUnknownZ] -= kElasticStartDepth;
-    }
-    for (size_t w = 0; w < contact_.size(); ++w) contact_.wheelset(w).set_formulation(ContactFormulation::kElastic);
-    y = vehicle_equilibrium(dae_, 0.0, std::move(elastic),
-                            equilibrium_weights(dae_, s.position_tolerance, s.velocity_tolerance))
-            .state;
-    layout = dae_.layout();
-  }
+  std::vector<HeldWheelset> held;
+  if (spec_.run.initial.y != 0.0 || spec_.run.initial.yaw != 0.0)
+    held.push_back({0, spec_.run.initial.y, spec_.run.initial.yaw});
+  const std::vector<double> y = vehicle_rest_state(dae_, own, 0.0, s.position_tolerance, s.velocity_tolerance, held);
   const std::vector<double> yp(y.size(), 0.0);
-  integrator_.begin(0.0, y, yp, vehicle_segment(s, equations_, layout, own == ContactFormulation::kRigid));
+  integrator_.begin(0.0, y, yp, vehicle_segment(s, equations_, dae_.layout(), own == ContactFormulation::kRigid));
   contact_.clear_cache();
   started_ = true;
   t_ = 0.0;

@@ -10,7 +10,7 @@
 /// vehicle"): the one-point contact's events and switches per wheelset (a rigid run follows each
 /// wheel's lowest point at every evaluation, so a jump of the contact point is a discontinuity the
 /// integrator steps through with smaller steps), two-point sliding, model swaps, the states sent
-/// ahead with the accepted step, an initial disturbance.
+/// ahead with the accepted step.
 
 #include <functional>
 #include <memory>
@@ -34,8 +34,9 @@ struct VehicleRunSpec {
   VehicleDescription vehicle;
   /// The run: speed, material, FASTSIM grid, gravity and flange angle from run.wheelset (its
   /// masses, loads and suspension are the vehicle's instead), the integrator settings, the track
-  /// and its irregularities. run.initial must be the rest state (all 0): the run starts from the
-  /// vehicle's equilibrium.
+  /// and its irregularities. The run starts from the vehicle's equilibrium at rest; run.initial's
+  /// y and yaw hold its first wheelset at that lateral shift and yaw there (the rest of the vehicle
+  /// in equilibrium about it), released at t = 0; its rates must be 0.
   RunSpec run;
 };
 

@@ -206,6 +206,7 @@ const char* mode_kind_name(ModeKind kind) {
     case ModeKind::kLateralYaw: return "lateral-yaw";
     case ModeKind::kVerticalRoll: return "vertical-roll";
     case ModeKind::kSpin: return "spin";
+    case ModeKind::kVerticalPitch: return "vertical-pitch";
   }
   return "?";
 }

@@ -37,9 +37,10 @@ enum class ModeKind {
   kLateralYaw,    ///< y and yaw (hunting, the kinematic mode, the creep-damped lateral mode)
   kVerticalRoll,  ///< z and roll (elastic contact only: the wheelset on its Hertz springs)
   kSpin,          ///< the spin perturbation Omega - V / r0 (a real, creep-damped mode)
+  kVerticalPitch, ///< z and pitch of a vehicle's car body or frame (bounce and pitch on its springs)
 };
 
-/// "lateral-yaw", "vertical-roll", "spin".
+/// "lateral-yaw", "vertical-roll", "spin", "vertical-pitch".
 const char* mode_kind_name(ModeKind kind);
 
 /// One eigenvalue of the linearised wheelset.

@@ -4,6 +4,7 @@
 // eigenvalues against speed, the least damped mode per speed, the linear critical speed with its
 // frequency, a CSV of every eigenvalue and the eigenvalue plot (root locus, largest real part
 // against speed), and the classical model (Wickens) built from the same contact for comparison.
+// With --vehicle FILE of several bodies: the vehicle's (cli/vehicle_stability.hpp).
 
 #include <cstdio>
 #include <fstream>
@@ -22,64 +23,18 @@
 #include "cli/plot/plot_options.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/speed_scan_option.hpp"
+#include "cli/stability_report.hpp"
+#include "cli/vehicle_stability.hpp"
 #include "core/dynamics/linear_stability.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
 #include "core/dynamics/wickens_from_model.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "core/vehicle/vehicle_file.hpp"
 #include "options/parameter_options.hpp"
 
 namespace wrc::cli {
 namespace {
-
-void write_csv(const std::string& path, const std::vector<LinearisedWheelset>& scan) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  out.precision(10);
-  out << "speed [m/s],real [1/s],imag [rad/s],frequency [Hz],damping_ratio [-],kind [-],least_damped [-]\n";
-  for (const LinearisedWheelset& l : scan) {
-    for (size_t i = 0; i < l.modes.size(); ++i) {
-      const StabilityMode& m = l.modes[i];
-      out << l.speed << "," << m.eigenvalue.real() << "," << m.eigenvalue.imag() << "," << m.frequency() << ","
-          << m.damping_ratio() << "," << mode_kind_name(m.kind) << "," << (i == 0 ? 1 : 0) << "\n";
-    }
-  }
-}
-
-void draw(const std::string& path, const std::vector<LinearisedWheelset>& scan, const CriticalSpeed& critical,
-          const std::string& title) {
-  const plot::ImageRequest image = plot::image_request(path, 1400, 700);
-  plot::GnuplotJob job;
-  {
-    auto locus = job.open_data("locus.dat");
-    auto largest = job.open_data("largest.dat");
-    locus << "# real[1/s] frequency[Hz] speed[m/s]\n";
-    largest << "# speed[m/s] largest_real[1/s]\n";
-    for (const LinearisedWheelset& l : scan) {
-      // The spin mode's real eigenvalue lies far to the left (hundreds of 1/s): the locus shows
-      // the lateral (and vertical) modes, the CSV has every eigenvalue.
-      for (const StabilityMode& m : l.modes)
-        if (m.kind != ModeKind::kSpin) locus << m.eigenvalue.real() << " " << m.eigenvalue.imag() / (2 * M_PI) << " " << l.speed << "\n";
-      largest << l.speed << " " << l.least_damped().eigenvalue.real() << "\n";
-    }
-  }
-  std::string script = "set multiplot layout 1,2 title " + plot::quoted(title) + "\n";
-  script += "set grid\nset xlabel 'real part [1/s]'\nset ylabel 'imaginary part / 2 pi [Hz]'\n"
-            "set cblabel 'speed [m/s]'\nset palette rgb 33,13,10\nset xzeroaxis\nset arrow from 0, graph 0 to 0, graph 1 nohead dt 2\n"
-            "set title 'eigenvalues (root locus, spin mode left out)'\n";
-  script += "plot " + plot::quoted(job.data_path("locus.dat")) + " using 1:2:3 with points pt 7 ps 0.5 palette notitle\n";
-  script += "unset arrow\nset xlabel 'speed [m/s]'\nset ylabel 'largest real part [1/s]'\nunset cblabel\n"
-            "set title 'least damped mode'\nset yzeroaxis\n";
-  if (critical.found)
-    script += plot::format("set arrow from %.9g, graph 0 to %.9g, graph 1 nohead dt 2 lc rgb 'red'\n"
-                           "set label %s at %.9g, graph 0.92 left offset 1,0\n",
-                           critical.speed, critical.speed,
-                           plot::quoted(plot::format("V_c = %.2f m/s, %.2f Hz", critical.speed, critical.frequency)).c_str(),
-                           critical.speed);
-  script += "plot " + plot::quoted(job.data_path("largest.dat")) + " using 1:2 with linespoints pt 7 ps 0.5 lw 1.5 notitle\n";
-  script += "unset multiplot\n";
-  job.render(script, image);
-}
 
 int run_stability(const std::vector<std::string>& args) {
   std::vector<OptionSpec> specs{
@@ -105,12 +60,23 @@ int run_stability(const std::vector<std::string>& args) {
   }
   const std::string model = o.choice("--model", contact_model_names());
   if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
-  const RunSpec spec = centred_run_spec(o, "a centred steady state has no lateral load");
   const std::vector<double> speeds = parse_speed_scan(o.text("--speeds", "5:80:1"), "--speeds");
   const std::string csv = o.text("--out", "stability.csv");
   const std::string picture = o.text("--plot", "stability.png");
   check_output_path(csv, "--out");
   plot::image_request(picture, 1400, 700);  // checks the extension and the path before the work
+  if (o.has("--vehicle")) {
+    // A vehicle of several bodies takes the vehicle's equations; one wheelset, the wheelset's.
+    const std::string path = o.text("--vehicle");
+    VehicleDescription vehicle;
+    try {
+      vehicle = read_vehicle_file(path);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--vehicle: ") + e.what());
+    }
+    if (vehicle.bodies.size() > 1) return run_vehicle_stability(o, vehicle, path, model, speeds, csv, picture);
+  }
+  const RunSpec spec = centred_run_spec(o, "a centred steady state has no lateral load");
 
   const GeometrySpec geometry_spec = geometry_spec_from_options(o);
   const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(geometry_spec));
@@ -152,10 +118,11 @@ int run_stability(const std::vector<std::string>& args) {
   else
     std::printf("  its critical speed without dampers: none\n");
 
-  write_csv(csv, scan);
+  std::vector<StabilityScanRow> rows;
+  for (const LinearisedWheelset& l : scan) rows.push_back({l.speed, l.modes, {}});
+  write_stability_csv(csv, rows);
   std::cout << "wrote " << csv << "\n";
-  draw(picture, scan, critical,
-       "wrc stability: " + model + " contact, " + plot::geometry_title(geometry_spec));
+  draw_stability(picture, rows, critical, "wrc stability: " + model + " contact, " + plot::geometry_title(geometry_spec));
   std::cout << "wrote " << picture << "\n";
   return 0;
 }

@@ -41,6 +41,7 @@ struct Mistake {
 TEST(EarlyErrors, EachMistakeIsRefusedNamingTheOptionAndTheValue) {
   const std::string out = (std::filesystem::temp_directory_path() / "wrc-early-error-never-written.csv").string();
   std::filesystem::remove(out);
+  const std::string car = std::string(WRC_PARAMETERS_DIR) + "/vehicles/cooperrider-car.json";
   const std::vector<Mistake> mistakes = {
       {"query", {"--model", "nonsense", "--y", "0"}, "--model: 'nonsense' is not one of onepoint, interp, multipoint, spline"},
       {"query", {"--model", "onepoint"}, "missing required option --y"},
@@ -60,6 +61,11 @@ TEST(EarlyErrors, EachMistakeIsRefusedNamingTheOptionAndTheValue) {
       {"run", {"--model", "onepoint", "--t-end", "-1"}, "--t-end: -1 is outside (0, inf) [s]"},
       {"run", {"--model", "nonsense"}, "--model: 'nonsense' is not one of onepoint, interp, multipoint, spline"},
       {"conicity", {"--samples", "2"}, "--samples: 2 is outside [8, 100000]"},
+      {"stability", {"--model", "onepoint", "--vehicle", car, "--mass", "900", "--out", out},
+       "--mass: a vehicle of several bodies takes it from its file (--vehicle)"},
+      {"stability", {"--model", "onepoint", "--vehicle", car, "--out", out},
+       "body 'front_wheelset_1': position: z = 0.425 m is the axle's height above the rails, the wheel's nominal "
+       "radius is 0.46 m"},
       {"geometry", {"--y", "1"}, "unknown option --y"},
       {"plot", {"area", "--y", "0.003", "--eps0", "1"}, "--eps0: 1 is outside [2.5e-05, 0.01]"},
       {"plot", {"conicity", "--a-from", "0.004", "--a-to", "0.001"}, "--a-to 0.001 is below --a-from 0.004"},

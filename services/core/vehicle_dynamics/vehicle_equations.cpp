@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/vehicle_dynamics/vehicle_equations.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "core/dynamics/rail_placement.hpp"
+#include "core/numerics/number_text.hpp"
 #include "core/vehicle/body_dynamics.hpp"
 
 namespace wrc {
@@ -37,6 +39,11 @@ WheelsetParameters wheelset_parameters(const VehicleBody& b, const WheelsetParam
   return p;
 }
 
+// [m] how far a wheelset's position z (its axle's height above the rails) may lie from the wheel
+// profile's nominal radius: a worn wheel's radius differs by millimetres, a wrong file or profile
+// by centimetres (the primary springs would carry the difference as a preload).
+constexpr double kAxleHeightTolerance = 5e-3;
+
 }  // namespace
 
 VehicleEquations::VehicleEquations(VehicleDescription vehicle, const WheelsetParameters& common, TrackLayout layout,
@@ -59,6 +66,11 @@ VehicleEquations::VehicleEquations(VehicleDescription vehicle, const WheelsetPar
     const VehicleBody& body = vehicle_.bodies[b];
     if (body.kind != BodyKind::kWheelset) continue;
     const size_t w = wheelsets_.size();
+    if (std::abs(body.position[2] - nominal_radius) > kAxleHeightTolerance)
+      throw std::invalid_argument("body '" + body.name + "': position: z = " + number_text(body.position[2]) +
+                                  " m is the axle's height above the rails, the wheel's nominal radius is " +
+                                  number_text(nominal_radius) + " m (the geometry's r0): they differ by more than " +
+                                  number_text(kAxleHeightTolerance) + " m");
     WheelsetParameters p = wheelset_parameters(body, common);
     wheelsets_.emplace_back(p, body.position[2], nominal_radius, wheel_loads[w]);
     wheelset_bodies_.push_back(b);

@@ -111,6 +111,13 @@ VehicleLinearStability::VehicleLinearStability(VehicleRunSpec spec, std::shared_
     if (b.external_force[1] != 0.0)
       refuse("body '" + b.name + "': external_force: a lateral force " + number_text(b.external_force[1]) +
              " N leaves no centred rest state");
+  // What the equations refuse (a wheelset they cannot take, an axle off the wheel's radius), now.
+  try {
+    VehicleEquations(spec_.vehicle, spec_.run.wheelset, TrackLayout{}, TrackIrregularity{}, nominal_radius_,
+                     static_wheel_loads(spec_.vehicle, spec_.run.wheelset.gravity));
+  } catch (const std::invalid_argument& e) {
+    refuse(e.what());
+  }
 }
 
 LinearisedVehicle VehicleLinearStability::linearise(double speed) {

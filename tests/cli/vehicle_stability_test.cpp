@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: Apache-2.0
+// `wrc stability --vehicle FILE` for a vehicle of several bodies (clients/cli/vehicle_stability.hpp),
+// called in-process through the command registry: the shipped Cooperrider bogie on a cone of
+// conicity 0.2 (its critical speed 82.0 m/s, core's VehicleLinearStability tests) writes every
+// eigenvalue with the body that moves most, and its least damped mode crosses 0 between 80 and
+// 90 m/s in the CSV.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cli/command.hpp"
+
+namespace wrc::cli {
+namespace {
+
+TEST(VehicleStabilityCommand, WritesEveryEigenvalueWithItsBody) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "wrc-vehicle-stability-test";
+  std::filesystem::create_directories(dir);
+  const std::string csv = (dir / "stability.csv").string(), png = (dir / "stability.png").string();
+  const std::vector<std::string> args{"--model", "onepoint", "--vehicle",
+                                      std::string(WRC_PARAMETERS_DIR) + "/vehicles/cooperrider-bogie.json",
+                                      "--wheel", "conic:0.2", "--rail", "circle:0.1", "--gauge", "1.5",
+                                      "--gauge-depth", "0", "--inclination", "0", "--r0", "0.425", "--friction", "10",
+                                      "--speeds", "70:100:10", "--out", csv, "--plot", png};
+  int status = -1;
+  for (const Command& c : command_registry())
+    if (c.name == "stability") status = c.run(args);
+  ASSERT_EQ(status, 0);
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header,
+            "speed [m/s],real [1/s],imag [rad/s],frequency [Hz],damping_ratio [-],kind [-],body [-],least_damped [-]");
+  std::map<double, double> largest;  // speed -> largest real part
+  std::map<std::string, int> bodies;
+  int rows = 0;
+  for (std::string line; std::getline(in, line); ++rows) {
+    std::vector<std::string> f;
+    for (size_t from = 0, to; from <= line.size(); from = to + 1) {
+      to = line.find(',', from);
+      if (to == std::string::npos) to = line.size();
+      f.push_back(line.substr(from, to - from));
+    }
+    ASSERT_EQ(f.size(), 8u) << line;
+    ++bodies[f[6]];
+    if (f[7] == "1") largest[std::stod(f[0])] = std::stod(f[1]);
+  }
+  // 4 speeds x (a frame's 10 states + 5 of each wheelset in rigid contact).
+  EXPECT_EQ(rows, 4 * 20);
+  EXPECT_EQ(bodies.size(), 3u);
+  EXPECT_LT(largest.at(80.0), 0.0);
+  EXPECT_GT(largest.at(90.0), 0.0);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace wrc::cli

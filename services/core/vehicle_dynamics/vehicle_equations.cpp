@@ -148,6 +148,23 @@ void VehicleEquations::residual(const VehicleLayout& layout, const double* y, co
   }
 }
 
+std::vector<Eigen::Vector2d> VehicleEquations::body_accelerations(const VehicleLayout& layout, const double* y) const {
+  const std::vector<BodyState> states = body_states(layout, y);
+  const std::vector<BodyLoads> loads = element_loads(vehicle_, layout_, s_ref_, speed_, states);
+  std::vector<Eigen::Vector2d> a(vehicle_.bodies.size(), Eigen::Vector2d::Zero());
+  for (size_t b = 0; b < vehicle_.bodies.size(); ++b) {
+    if (wheelset_of_body_[b] >= 0) continue;
+    const VehicleBody& body = vehicle_.bodies[b];
+    const std::array<double, kBodyCoordinates> q = wrc::body_accelerations(body, layout_, s_ref_, speed_, states[b],
+                                                                            loads[b].generalised, gravity_);
+    // h / m on y and z is the absolute acceleration less q'' there (body_dynamics.hpp).
+    const BodyDynamics d = body_dynamics(body, layout_, s_ref_, speed_, states[b], gravity_);
+    a[b] = {q[kBodyLateral] + d.inertial[kBodyLateral] / body.mass,
+            q[kBodyVertical] + d.inertial[kBodyVertical] / body.mass};
+  }
+  return a;
+}
+
 void VehicleEquations::add_derivative_terms(const VehicleLayout& layout, const double* y, double c,
                                             DenseMatrixView jac) const {
   const std::vector<BodyState> states = body_states(layout, y);

@@ -82,6 +82,12 @@ class VehicleEquations {
   /// its height minus its position's z; its pitch 0: the axle boxes do not spin).
   std::vector<BodyState> body_states(const VehicleLayout& layout, const double* y) const;
 
+  /// The absolute acceleration [m/s^2] of each body's centre of gravity along y and z of its own
+  /// track frame at state y, the place()d time (the frame's motion and turning included, gravity
+  /// not: what an accelerometer there reads, less gravity), for every car body and frame; zeros
+  /// for the wheelsets. From the bodies' equations with the elements' forces at y.
+  std::vector<Eigen::Vector2d> body_accelerations(const VehicleLayout& layout, const double* y) const;
+
   /// F(y, y') into r at the place()d time, every wheelset's contact given.
   /// @throws what the wheelset equations throw (a two-point wheel without its second point).
   void residual(const VehicleLayout& layout, const double* y, const double* yp,

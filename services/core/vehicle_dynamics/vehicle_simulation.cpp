@@ -2,6 +2,7 @@
 #include "core/vehicle_dynamics/vehicle_simulation.hpp"
 
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -60,6 +61,9 @@ VehicleSimulation::VehicleSimulation(VehicleRunSpec spec, std::shared_ptr<Contac
       dae_(equations_, contact_),
       integrator_(*this) {
   if (!(nominal_radius > 0.0)) throw std::invalid_argument("VehicleSimulation: nominal radius must be > 0");
+  const IntegratorSettings& s = spec_.run.integrator;
+  for (size_t w = 0; w < equations_.wheelset_count(); ++w)
+    samplers_.emplace_back(s.output_period, s.t_end, spec_.run.wheelset.speed);
 }
 
 VehicleSimulation::~VehicleSimulation() = default;
@@ -76,7 +80,23 @@ void VehicleSimulation::start() {
   contact_.clear_cache();
   started_ = true;
   t_ = 0.0;
+  for (OutputSampler& sampler : samplers_) sampler.restart();
+  record_step_contact(true);
   emit_outputs_until(0.0);
+}
+
+void VehicleSimulation::record_step_contact(bool restart) {
+  const std::vector<double> y = integrator_.state();
+  equations_.place(t_);
+  const VehicleLayout layout = dae_.layout();
+  const std::vector<WheelsetContactView> views = contact_.at(layout, y.data());
+  for (size_t w = 0; w < samplers_.size(); ++w) {
+    const auto first = y.begin() + layout.offset[equations_.wheelset_body(w)];
+    const std::vector<double> own(first, first + layout.size[equations_.wheelset_body(w)]);
+    samplers_[w].record_step(
+        step_contact(equations_.wheelset(w), views[w].formulation, *views[w].branches, *views[w].result, own, t_),
+        restart);
+  }
 }
 
 int VehicleSimulation::residual(double t, const double* y, const double* yp, double* r) {
@@ -125,6 +145,12 @@ bool VehicleSimulation::advance() {
     return false;
   }
   t_ = step.t;
+  try {
+    record_step_contact(false);
+  } catch (const std::exception& e) {
+    fail("at t = " + std::to_string(t_) + " s: the contact of the accepted step: " + e.what());
+    return false;
+  }
   emit_outputs_until(t_);
   const RunCounters c = integrator_.counters();
   if (c.steps >= spec_.run.integrator.max_steps) {
@@ -151,17 +177,20 @@ void VehicleSimulation::fail(const std::string& why) {
 
 std::vector<double> VehicleSimulation::state_vector() const { return integrator_.state(); }
 
-VehicleSnapshot VehicleSimulation::snapshot_of(double t, const std::vector<double>& y) const {
+VehicleSnapshot VehicleSimulation::snapshot_of(double t, const std::vector<double>& y) {
   VehicleSnapshot s;
   s.t = t;
   const VehicleLayout layout = dae_.layout();
   s.bodies = equations_.body_states(layout, y.data());
+  // The bodies' accelerations where time t places the track (every evaluation places it anew).
+  equations_.place(t);
+  for (const Eigen::Vector2d& a : equations_.body_accelerations(layout, y.data())) s.accelerations.push_back({a[0], a[1]});
   for (size_t w = 0; w < equations_.wheelset_count(); ++w)
     s.spin_rates.push_back(y[static_cast<size_t>(layout.offset[equations_.wheelset_body(w)] + kUnknownSpinRate)]);
   return s;
 }
 
-VehicleSnapshot VehicleSimulation::snapshot() const { return snapshot_of(t_, integrator_.state()); }
+VehicleSnapshot VehicleSimulation::snapshot() { return snapshot_of(t_, integrator_.state()); }
 
 VehicleSnapshot VehicleSimulation::steady_state(double t) {
   const IntegratorSettings& s = spec_.run.integrator;
@@ -171,12 +200,41 @@ VehicleSnapshot VehicleSimulation::steady_state(double t) {
 }
 
 void VehicleSimulation::emit_outputs_until(double t) {
-  const IntegratorSettings& s = spec_.run.integrator;
-  for (;;) {
-    const double t_out = std::min(static_cast<double>(next_output_) * s.output_period, s.t_end);
-    if (t_out > t || next_output_ < 0) return;
-    if (on_output_) on_output_(snapshot_of(t_out, t_out == t ? integrator_.state() : integrator_.state_at(t_out)));
-    next_output_ = t_out >= s.t_end ? -1 : next_output_ + 1;
+  // Every sampler emits the same output times; the state at each is interpolated once.
+  std::map<double, std::vector<double>> states;
+  std::map<double, std::vector<std::array<WheelOutput, 2>>> wheels;
+  const auto state_at = [&](double t_out) -> const std::vector<double>& {
+    auto found = states.find(t_out);
+    if (found == states.end())
+      found = states.emplace(t_out, t_out == t_ ? integrator_.state() : integrator_.state_at(t_out)).first;
+    return found->second;
+  };
+  const VehicleLayout layout = dae_.layout();
+  for (size_t w = 0; w < samplers_.size(); ++w) {
+    const size_t body = equations_.wheelset_body(w);
+    const WheelsetContact& c = contact_.wheelset(w);
+    OutputSampler::NormalForce rigid_normal_force;
+    if (c.formulation() == ContactFormulation::kRigid) {
+      rigid_normal_force = [this, &c, w](const double* y, int wheel) {
+        return equations_.wheelset(w).normal_force(c.formulation(), y, ContactResult{}, wheel, c.branches());
+      };
+    }
+    samplers_[w].emit_until(
+        t,
+        [&](double t_out) {
+          const std::vector<double>& y = state_at(t_out);
+          return std::vector<double>(y.begin() + layout.offset[body], y.begin() + layout.offset[body] + layout.size[body]);
+        },
+        rigid_normal_force,
+        [&](const std::vector<double>&, double t_out, const std::array<WheelOutput, 2>& out) {
+          wheels[t_out].push_back(out);
+        });
+  }
+  for (auto& [t_out, y] : states) {
+    if (!on_output_) break;
+    VehicleSnapshot s = snapshot_of(t_out, y);
+    s.wheels = std::move(wheels[t_out]);
+    on_output_(s);
   }
 }
 

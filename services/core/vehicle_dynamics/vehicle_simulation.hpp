@@ -12,6 +12,7 @@
 /// integrator steps through with smaller steps), two-point sliding, model swaps, the states sent
 /// ahead with the accepted step.
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -19,6 +20,9 @@
 
 #include "core/dynamics/contact_evaluator.hpp"
 #include "core/dynamics/ida_integrator.hpp"
+#include "core/dynamics/output_sampler.hpp"
+#include "core/dynamics/run_extremes.hpp"
+#include "core/dynamics/wheel_output.hpp"
 #include "core/dynamics/run_counters.hpp"
 #include "core/dynamics/wheelset_parameters.hpp"
 #include "core/dynamics/wheelset_simulation.hpp"
@@ -47,6 +51,13 @@ struct VehicleSnapshot {
   /// the order of the vehicle's bodies (a wheelset's z from its position's z; pitch 0)
   std::vector<BodyState> bodies;
   std::vector<double> spin_rates;  ///< each wheelset's spin [rad/s], in the order of the wheelsets
+  /// Each wheelset's wheels, left [0] and right [1] (docs/run-quantities.md), in the order of the
+  /// wheelsets: at an output time between two steps, the contact interpolated as the lone
+  /// wheelset's run does
+  std::vector<std::array<WheelOutput, 2>> wheels;
+  /// Each car body's and frame's absolute acceleration [m/s^2] along y and z of its track frame,
+  /// gravity not included; zeros for the wheelsets; in the order of the bodies
+  std::vector<std::array<double, 2>> accelerations;
 };
 
 class VehicleSimulation : private DaeSystem {
@@ -74,7 +85,7 @@ class VehicleSimulation : private DaeSystem {
   double time() const { return t_; }
   std::string model() const { return contact_.evaluator()->model(); }
   /// The vehicle now (after the last step).
-  VehicleSnapshot snapshot() const;
+  VehicleSnapshot snapshot();
   /// The vehicle at rest in its track frames where time t places it: F(t, y, 0) = 0 solved from the
   /// state now (vehicle_equilibrium.hpp). In a curve of constant radius and cant, the steady
   /// curving state a run settles on; the run itself is not changed.
@@ -86,6 +97,9 @@ class VehicleSimulation : private DaeSystem {
   /// Counters summed over the run: IDA's, the Jacobians and the contact batches.
   RunCounters counters() const;
   const VehicleEquations& equations() const { return equations_; }
+  /// The largest |Y/Q|, |sum Y|, T gamma and p_max of wheelset w so far, over every accepted step
+  /// and output sample (its distance: V t), as the lone wheelset's run takes them.
+  const RunExtremes& extremes(size_t w) const { return samplers_[w].extremes(); }
   /// Each wheelset's static wheel load, the scale of its normal forces [N].
   const std::vector<double>& wheel_loads() const { return wheel_loads_; }
 
@@ -94,7 +108,9 @@ class VehicleSimulation : private DaeSystem {
   int jacobian(double t, double cj, const double* y, const double* yp, const double* r, DenseMatrixView jac) override;
   int roots(double t, const double* y, double* g) override;
   void message(const char* function, const char* text) override;
-  VehicleSnapshot snapshot_of(double t, const std::vector<double>& y) const;
+  VehicleSnapshot snapshot_of(double t, const std::vector<double>& y);
+  /// Each wheelset's contact at the accepted state into its sampler (restart: a segment starts).
+  void record_step_contact(bool restart);
   void emit_outputs_until(double t);
   void fail(const std::string& why);
 
@@ -105,9 +121,9 @@ class VehicleSimulation : private DaeSystem {
   VehicleDae dae_;
   IdaIntegrator integrator_;
   std::function<void(const VehicleSnapshot&)> on_output_;
+  std::vector<OutputSampler> samplers_;  // one per wheelset
   bool started_ = false;
   double t_ = 0;
-  long next_output_ = 0;  // index of the next output sample
   RunState state_ = RunState::kRunning;
   std::string message_;
   std::string last_error_;

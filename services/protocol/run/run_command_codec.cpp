@@ -10,6 +10,7 @@
 #include "protocol/run/run_request_table.hpp"
 #include "protocol/run/irregularity_codec.hpp"
 #include "protocol/run/track_layout_codec.hpp"
+#include "protocol/run/vehicle_codec.hpp"
 #include "wrc/run_status_t.hpp"
 
 namespace wrc::protocol {
@@ -63,6 +64,7 @@ run_command_t to_message(const RunRequest& r) {
   to_message_fields(run_request_table(), r, run_command_fields(), m);
   to_layout_fields(r.spec.track, m);
   to_irregularity_fields(r.spec.irregularity, m);
+  to_vehicle_fields(r.vehicle, m);
   m.num_scheduled_swaps = static_cast<std::int32_t>(r.swaps.size());
   for (const ScheduledSwap& swap : r.swaps) {
     m.scheduled_swap_times.push_back(swap.t);
@@ -85,6 +87,7 @@ RunRequest from_message(const run_command_t& m) {
   from_message_fields(run_request_table(), m, run_command_fields(), r);
   r.spec.track = layout_from_fields(m);
   r.spec.irregularity = irregularity_from_fields(m);
+  r.vehicle = vehicle_from_fields(m);
   r.spec.validate();  // the rules between parameters
   const IntegratorSettings& g = r.spec.integrator;
   const std::string swaps = "num_scheduled_swaps = " + std::to_string(m.num_scheduled_swaps);

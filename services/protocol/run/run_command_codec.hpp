@@ -7,11 +7,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/dynamics/wheelset_simulation.hpp"
 #include "core/geometry/geometry_spec.hpp"
+#include "core/vehicle/vehicle_description.hpp"
 #include "wrc/run_command_t.hpp"
 
 namespace wrc::protocol {
@@ -38,6 +40,9 @@ struct RunRequest {
   int contact_retries = 3;       ///< [-] re-sends per attempt round
   double contact_wait = 10.0;    ///< [s] how long a run waits for a (restarted) contact service
   std::vector<ScheduledSwap> swaps;
+  /// A vehicle of several bodies (docs/vehicle.md), run on the vehicle's equations: its masses,
+  /// loads and elements replace spec.wheelset's and its suspension; none: the lone wheelset.
+  std::optional<VehicleDescription> vehicle;
 };
 
 /// Name of a run_status_t state code, as the summary JSON and the logs write it ("idle",

@@ -16,11 +16,14 @@
 namespace wrc::bus::test {
 namespace {
 
-// The encoding of command with the byte at marker (which must occur once) set to 0.
+// The encoding of command with the byte at marker (which must occur once in the fields) set to 0.
+// The search starts after LCM's 8-byte type fingerprint, which may hold the marker's byte by chance
+// (run_command_t's fingerprint of interface version 18 holds a '#').
 std::vector<std::uint8_t> encoded_with_nul(const run_command_t& command, const std::string& marker) {
+  constexpr std::ptrdiff_t kFingerprintSize = 8;
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(command.getEncodedSize()));
   command.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  const auto at = std::search(bytes.begin(), bytes.end(), marker.begin(), marker.end());
+  const auto at = std::search(bytes.begin() + kFingerprintSize, bytes.end(), marker.begin(), marker.end());
   EXPECT_NE(at, bytes.end()) << marker;
   if (at != bytes.end()) *at = 0;
   return bytes;

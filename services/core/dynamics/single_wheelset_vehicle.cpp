@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/single_wheelset_vehicle.hpp"
 
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -46,6 +47,25 @@ double axle_box(const VehicleDescription& v, const VehicleBody& wheelset, const 
 
 }  // namespace
 
+void apply_wheelset_body(const VehicleBody& b, WheelsetParameters& p) {
+  const std::string body = "body '" + b.name + "': ";
+  if (b.products_of_inertia != std::array<double, 3>{})
+    throw std::invalid_argument(body + "products_of_inertia: " + text(b.products_of_inertia) +
+                                " [kg m^2]; the wheelset equations take principal axes along the track");
+  if (b.position[1] != 0.0)
+    throw std::invalid_argument(body + "position: " + text(b.position) +
+                                " [m]; a wheelset's centre is on the centre line (y = 0)");
+  if (b.external_force[0] != 0.0)
+    throw std::invalid_argument(body + "external_force: " + text(b.external_force) +
+                                " [N]; the wheelset has no longitudinal freedom for F_x");
+  p.mass = b.mass;
+  p.roll_inertia = b.inertia[0];
+  p.spin_inertia = b.inertia[1];
+  p.yaw_inertia = b.inertia[2];
+  p.lateral_force = b.external_force[1];
+  p.vertical_force = -b.external_force[2];
+}
+
 void apply_single_wheelset(const VehicleDescription& vehicle, WheelsetParameters& p) {
   validate(vehicle);
   if (vehicle.bodies.size() != 1 || vehicle.bodies.front().kind != BodyKind::kWheelset)
@@ -53,15 +73,14 @@ void apply_single_wheelset(const VehicleDescription& vehicle, WheelsetParameters
                         "; a run takes one wheelset on the track so far (the equations of a vehicle of several "
                         "bodies are not built yet, docs/vehicle.md)");
   const VehicleBody& w = vehicle.bodies.front();
-  const std::string body = "body '" + w.name + "': ";
-  if (w.products_of_inertia != std::array<double, 3>{})
-    refuse(vehicle, body + "products_of_inertia: " + text(w.products_of_inertia) +
-                        " [kg m^2]; the wheelset equations take principal axes along the track");
-  if (w.position[0] != 0.0 || w.position[1] != 0.0)
-    refuse(vehicle, body + "position: " + text(w.position) + " [m]; a lone wheelset's centre is on the centre line");
-  if (w.external_force[0] != 0.0)
-    refuse(vehicle, body + "external_force: " + text(w.external_force) +
-                        " [N]; the wheelset has no longitudinal freedom for F_x");
+  if (w.position[0] != 0.0)
+    refuse(vehicle, "body '" + w.name + "': position: " + text(w.position) +
+                        " [m]; a lone wheelset's centre is at x = 0 on the centre line");
+  try {
+    apply_wheelset_body(w, p);
+  } catch (const std::invalid_argument& e) {
+    refuse(vehicle, e.what());
+  }
   PrimarySuspension s = PrimarySuspension::none();
   if (!vehicle.elements.empty()) {
     if (vehicle.elements.size() != 2)
@@ -81,12 +100,6 @@ void apply_single_wheelset(const VehicleDescription& vehicle, WheelsetParameters
     s.vertical_damping = a.damping[2];
     s.half_spacing = ya > 0.0 ? ya : yb;
   }
-  p.mass = w.mass;
-  p.roll_inertia = w.inertia[0];
-  p.spin_inertia = w.inertia[1];
-  p.yaw_inertia = w.inertia[2];
-  p.lateral_force = w.external_force[1];
-  p.vertical_force = -w.external_force[2];
   p.suspension = s;
 }
 

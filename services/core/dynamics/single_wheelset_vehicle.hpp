@@ -12,6 +12,14 @@
 
 namespace wrc {
 
+/// Sets p's mass, roll, spin and yaw inertia [kg, kg m^2] and lateral and vertical load [N] from
+/// wheelset body b (its external force; the vertical load is -F_z, as the wheelset equations'
+/// load). The rest of p stays. What the wheelset equations take of one wheelset body, alone or in
+/// a vehicle: principal axes along the track (no products of inertia), its centre of gravity on
+/// the centre line (position y = 0), no longitudinal external force.
+/// @throws std::invalid_argument "body 'NAME': key: value [unit]; reason" for anything else.
+void apply_wheelset_body(const VehicleBody& b, WheelsetParameters& p);
+
 /// Sets p's mass, roll, spin and yaw inertia, lateral and vertical load and suspension from the
 /// vehicle's one wheelset (the rest of p, speed, material, gravity, stays). What the wheelset
 /// equations take: one body, a wheelset, with principal axes along the track (no products of

@@ -31,14 +31,19 @@ WheelsetContact::WheelsetContact(std::shared_ptr<ContactEvaluator> evaluator, co
     : evaluator_(std::move(evaluator)), equations_(equations), rails_move_(rails_move),
       formulation_(evaluator_ ? formulation_of(*evaluator_) : ContactFormulation::kRigid) {}
 
-std::vector<ContactResult> WheelsetContact::evaluate(const std::vector<ContactQuery>& batch) {
-  ++counters_.contact_queries;
-  counters_.contact_configurations += static_cast<long>(batch.size());
-  std::vector<ContactResult> results = evaluator_->evaluate(batch);
+std::vector<ContactResult> evaluate_counted(ContactEvaluator& evaluator, const std::vector<ContactQuery>& batch,
+                                            RunCounters& counters) {
+  ++counters.contact_queries;
+  counters.contact_configurations += static_cast<long>(batch.size());
+  std::vector<ContactResult> results = evaluator.evaluate(batch);
   if (results.size() != batch.size())
-    throw std::runtime_error("contact model " + evaluator_->model() + " answered " + std::to_string(results.size()) +
+    throw std::runtime_error("contact model " + evaluator.model() + " answered " + std::to_string(results.size()) +
                              " configurations for " + std::to_string(batch.size()));
   return results;
+}
+
+std::vector<ContactResult> WheelsetContact::evaluate(const std::vector<ContactQuery>& batch) {
+  return evaluate_counted(*evaluator_, batch, counters_);
 }
 
 size_t WheelsetContact::contact_cache_size() { return kCacheSize; }

@@ -20,6 +20,12 @@ namespace wrc {
 /// The formulation the dynamics takes for the evaluator's contact model.
 ContactFormulation formulation_of(const ContactEvaluator& contact);
 
+/// One evaluation of batch by evaluator, counted in counters (contact_queries one more,
+/// contact_configurations the batch's size): one result per query in order.
+/// @throws std::runtime_error when the evaluator answers another number of results.
+std::vector<ContactResult> evaluate_counted(ContactEvaluator& evaluator, const std::vector<ContactQuery>& batch,
+                                            RunCounters& counters);
+
 class WheelsetContact {
  public:
   /// @param equations give each query the pose, the track and the rails; they must outlive this.

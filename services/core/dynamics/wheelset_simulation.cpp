@@ -13,6 +13,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/dynamics/ida_callback_status.hpp"
 #include "core/dynamics/segment_settings.hpp"
 #include "core/dynamics/wheelset_jacobian.hpp"
 #include "core/numerics/number_text.hpp"
@@ -67,32 +68,17 @@ void WheelsetSimulation::place_on_track(double t) {
 
 int WheelsetSimulation::residual(double t, const double* y, const double* yp, double* r) {
   place_on_track(t);
-  try {
+  return ida_callback_status(last_contact_error_, [&] {
     const ContactResult& c = residual_contact(contact_, y, integrator_.newton_matrix_expected());
     equations_.residual(contact_.formulation(), y, yp, c, contact_.branches(), r);
-    return 0;
-  } catch (const ContactConfigurationError& e) {
-    last_contact_error_ = e.what();
-    return 1;  // recoverable: IDA retries with a smaller step
-  } catch (const std::exception& e) {
-    last_contact_error_ = e.what();
-    return -1;
-  }
+  });
 }
 
 int WheelsetSimulation::jacobian(double t, double cj, const double* y, const double* yp, const double* r,
                                  DenseMatrixView jac) {
   place_on_track(t);
-  try {
-    wheelset_jacobian(equations_, contact_, cj, y, yp, r, jac, own_);
-    return 0;
-  } catch (const ContactConfigurationError& e) {
-    last_contact_error_ = e.what();
-    return 1;
-  } catch (const std::exception& e) {
-    last_contact_error_ = e.what();
-    return -1;
-  }
+  return ida_callback_status(last_contact_error_,
+                             [&] { wheelset_jacobian(equations_, contact_, cj, y, yp, r, jac, own_); });
 }
 
 void WheelsetSimulation::message(const char* function, const char* text) {

@@ -33,12 +33,7 @@ void VehicleContact::fetch(const std::vector<std::vector<const double*>>& states
     batch.insert(batch.end(), pending.back().queries.begin(), pending.back().queries.end());
   }
   if (batch.empty()) return;
-  ++counters_.contact_queries;
-  counters_.contact_configurations += static_cast<long>(batch.size());
-  std::vector<ContactResult> results = evaluator_->evaluate(batch);
-  if (results.size() != batch.size())
-    throw std::runtime_error("contact model " + evaluator_->model() + " answered " + std::to_string(results.size()) +
-                             " configurations for " + std::to_string(batch.size()));
+  std::vector<ContactResult> results = evaluate_counted(*evaluator_, batch, counters_);
   auto next = results.begin();
   for (size_t w = 0; w < wheelsets_.size(); ++w) {
     const auto count = static_cast<std::ptrdiff_t>(pending[w].queries.size());

@@ -7,33 +7,20 @@
 #include <utility>
 
 #include "core/dynamics/rail_placement.hpp"
+#include "core/dynamics/single_wheelset_vehicle.hpp"
 #include "core/numerics/number_text.hpp"
 #include "core/vehicle/body_dynamics.hpp"
 
 namespace wrc {
 namespace {
 
-// The wheelset equations' parameters of wheelset body b: its mass and inertias, its external
-// force as the wheelset equations' loads (lateral force, and the vertical one as a weight that
-// takes the curve's centrifugal share, as the lone wheelset's load does), no suspension of its own
-// (the vehicle's elements are its suspension), the rest the run's.
+// The wheelset equations' parameters of wheelset body b: its mass, inertias and external force
+// as the lone wheelset's (apply_wheelset_body; the vertical force a weight that takes the curve's
+// centrifugal share, as the lone wheelset's load does), no suspension of its own (the vehicle's
+// elements are its suspension), the rest the run's.
 WheelsetParameters wheelset_parameters(const VehicleBody& b, const WheelsetParameters& common) {
-  const auto refuse = [&b](const std::string& key, const std::string& why) {
-    throw std::invalid_argument("body '" + b.name + "': " + key + ": " + why);
-  };
-  for (double p : b.products_of_inertia)
-    if (p != 0.0) refuse("products_of_inertia", "a wheelset's principal axes lie along the track (all 0)");
-  if (b.position[1] != 0.0) refuse("position", "a wheelset's centre lies on the centre line (y = 0)");
-  if (b.external_force[0] != 0.0)
-    refuse("external_force", "a wheelset has no longitudinal freedom (F_x must be 0, not " +
-                                 std::to_string(b.external_force[0]) + " N)");
   WheelsetParameters p = common;
-  p.mass = b.mass;
-  p.roll_inertia = b.inertia[0];
-  p.spin_inertia = b.inertia[1];
-  p.yaw_inertia = b.inertia[2];
-  p.lateral_force = b.external_force[1];
-  p.vertical_force = -b.external_force[2];
+  apply_wheelset_body(b, p);
   p.include_gravity = true;
   p.suspension = PrimarySuspension::none();
   return p;

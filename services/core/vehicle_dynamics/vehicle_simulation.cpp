@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/dynamics/ida_callback_status.hpp"
 #include "core/dynamics/segment_settings.hpp"
 #include "core/model_interface/contact_model.hpp"
 #include "core/vehicle_dynamics/vehicle_equilibrium.hpp"
@@ -100,30 +101,12 @@ void VehicleSimulation::record_step_contact(bool restart) {
 }
 
 int VehicleSimulation::residual(double t, const double* y, const double* yp, double* r) {
-  try {
-    dae_.residual(t, y, yp, r, integrator_.newton_matrix_expected());
-    return 0;
-  } catch (const ContactConfigurationError& e) {
-    last_error_ = e.what();
-    return 1;  // recoverable: IDA retries with a smaller step
-  } catch (const std::exception& e) {
-    last_error_ = e.what();
-    return -1;
-  }
+  return ida_callback_status(last_error_, [&] { dae_.residual(t, y, yp, r, integrator_.newton_matrix_expected()); });
 }
 
 int VehicleSimulation::jacobian(double t, double cj, const double* y, const double* yp, const double* r,
                                 DenseMatrixView jac) {
-  try {
-    dae_.jacobian(t, cj, y, yp, r, jac);
-    return 0;
-  } catch (const ContactConfigurationError& e) {
-    last_error_ = e.what();
-    return 1;
-  } catch (const std::exception& e) {
-    last_error_ = e.what();
-    return -1;
-  }
+  return ida_callback_status(last_error_, [&] { dae_.jacobian(t, cj, y, yp, r, jac); });
 }
 
 int VehicleSimulation::roots(double, const double*, double*) { return 0; }

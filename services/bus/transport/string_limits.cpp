@@ -134,6 +134,13 @@ void visit_strings(wrc::run_command_t& m, const StringVisitor& f) {
   f("geometry_key", m.geometry_key, kMaxHashBytes, kId);
   visit_track(m.track, f);
   visit_all("scheduled_swap_models[]", m.scheduled_swap_models, kMaxNameBytes, f);
+  f("vehicle_name", m.vehicle_name, kMaxIdBytes, kText);
+  for (wrc::vehicle_body_t& b : m.vehicle_bodies) f("vehicle_bodies[].name", b.name, kMaxIdBytes, kId);
+  for (wrc::vehicle_element_t& e : m.vehicle_elements) {
+    f("vehicle_elements[].name", e.name, kMaxIdBytes, kId);
+    f("vehicle_elements[].body_a", e.body_a, kMaxIdBytes, kId);
+    f("vehicle_elements[].body_b", e.body_b, kMaxIdBytes, kId);
+  }
 }
 
 void visit_strings(wrc::run_status_t& m, const StringVisitor& f) {
@@ -154,6 +161,7 @@ void visit_strings(wrc::run_summary_t& m, const StringVisitor& f) {
   f("stats.run_id", m.stats.run_id, kMaxIdBytes, kId);
   visit_all("swap_models[]", m.swap_models, kMaxNameBytes, f);
   visit_all("query_instances[]", m.query_instances, kMaxIdBytes, f);
+  for (wrc::wheelset_summary_t& w : m.wheelsets) f("wheelsets[].name", w.name, kMaxIdBytes, kId);
 }
 
 void visit_strings(wrc::spline_model_t& m, const StringVisitor& f) {

@@ -49,6 +49,8 @@ class OutputSampler {
   void record_step(const StepContact& now, bool restart);
   /// Every sample up to t [s].
   void emit_until(double t, const StateAt& state_at, const NormalForce& rigid_normal_force, const Sample& sample);
+  /// The contact of the last accepted step recorded.
+  const StepContact& last_step() const { return current_step_; }
   /// The largest values over every accepted step and sample.
   const RunExtremes& extremes() const { return extremes_; }
 

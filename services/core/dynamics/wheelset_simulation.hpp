@@ -22,6 +22,7 @@
 #include "core/dynamics/output_sampler.hpp"
 #include "core/dynamics/run_counters.hpp"
 #include "core/dynamics/run_extremes.hpp"
+#include "core/dynamics/simulation.hpp"
 #include "core/dynamics/wheelset_contact.hpp"
 #include "core/dynamics/wheelset_equations.hpp"
 #include "core/dynamics/wheel_forces.hpp"
@@ -47,17 +48,7 @@ struct WheelsetSnapshot {
   std::string model;     ///< contact model in use
 };
 
-/// A model swap that took effect.
-struct SwapRecord {
-  double t = 0;        ///< simulated time of the step boundary where it took effect [s]
-  std::string from;    ///< model before
-  std::string to;      ///< model after
-};
-
-/// How a run ends.
-enum class RunState { kRunning, kFinished, kFailed, kStopped };
-
-class WheelsetSimulation : private DaeSystem {
+class WheelsetSimulation : public Simulation, private DaeSystem {
  public:
   /// @param nominal_radius r0 of the wheel profile (nominal spin V / r0) [m].
   /// @throws std::invalid_argument for an invalid spec or a null contact.
@@ -71,10 +62,10 @@ class WheelsetSimulation : private DaeSystem {
 
   /// Consistent initial values at t = 0 and the first output. Throws std::runtime_error when no
   /// consistent state exists (the message says why).
-  void start();
+  void start() override;
   /// One integrator step, with the outputs, events and restarts it passes. A pending swap takes
   /// effect first. Returns false once the run is over (state() says how).
-  bool advance();
+  bool advance() override;
   /// Runs advance() until the end.
   void run();
 
@@ -86,18 +77,18 @@ class WheelsetSimulation : private DaeSystem {
   /// one boundary are performed there one after the other.
   void schedule_swap(double t, std::shared_ptr<ContactEvaluator> next);
   /// Ends the run at the next step boundary with RunState::kStopped.
-  void request_stop() { stop_requested_ = true; }
+  void request_stop() override { stop_requested_ = true; }
 
-  RunState state() const { return state_; }
-  const std::string& message() const { return message_; }
-  double time() const { return t_; }
-  std::string model() const { return contact_.evaluator()->model(); }
+  RunState state() const override { return state_; }
+  const std::string& message() const override { return message_; }
+  double time() const override { return t_; }
+  std::string model() const override { return contact_.evaluator()->model(); }
   ContactFormulation formulation() const { return contact_.formulation(); }
   /// The wheelset now (after the last step).
   WheelsetSnapshot snapshot();
   /// Counters summed over the whole run.
-  RunCounters counters() const;
-  const std::vector<SwapRecord>& swaps() const { return swaps_; }
+  RunCounters counters() const override;
+  const std::vector<SwapRecord>& swaps() const override { return swaps_; }
   const std::vector<SwitchRecord>& switches() const { return switch_log_; }
   /// The largest |Y/Q|, |sum Y|, T gamma and p_max so far, over every accepted step and output
   /// sample, with their time and distance travelled (docs/run-quantities.md).

@@ -10,6 +10,7 @@
 #include "core/dynamics/ida_callback_status.hpp"
 #include "core/dynamics/segment_settings.hpp"
 #include "core/model_interface/contact_model.hpp"
+#include "core/numerics/number_text.hpp"
 #include "core/vehicle_dynamics/vehicle_equilibrium.hpp"
 
 namespace wrc {
@@ -118,6 +119,11 @@ void VehicleSimulation::message(const char* function, const char* text) {
 bool VehicleSimulation::advance() {
   if (state_ != RunState::kRunning) return false;
   if (!started_) start();
+  if (stop_requested_) {
+    state_ = RunState::kStopped;
+    message_ = "stopped at t = " + exact_number_text(t_) + " s";
+    return false;
+  }
   const double t_end = spec_.run.integrator.t_end;
   const IdaStep step = integrator_.step(t_end);
   if (step.flag < 0) {
@@ -131,7 +137,7 @@ bool VehicleSimulation::advance() {
   try {
     record_step_contact(false);
   } catch (const std::exception& e) {
-    fail("at t = " + std::to_string(t_) + " s: the contact of the accepted step: " + e.what());
+    fail("at t = " + exact_number_text(t_) + " s: the contact of the accepted step: " + e.what());
     return false;
   }
   emit_outputs_until(t_);
@@ -219,6 +225,31 @@ void VehicleSimulation::emit_outputs_until(double t) {
     s.wheels = std::move(wheels[t_out]);
     on_output_(s);
   }
+}
+
+WheelsetSnapshot VehicleSimulation::wheelset_snapshot(const VehicleSnapshot& s, size_t w) const {
+  const size_t b = equations_.wheelset_body(w);
+  const BodyState& state = s.bodies[b];
+  WheelsetSnapshot out;
+  out.t = s.t;
+  out.y = state.displacement[kBodyLateral];
+  out.z = state.displacement[kBodyVertical] + equations_.vehicle().bodies[b].position[2];
+  out.roll = state.displacement[kBodyRoll];
+  out.yaw = state.displacement[kBodyYaw];
+  out.y_dot = state.rate[kBodyLateral];
+  out.z_dot = state.rate[kBodyVertical];
+  out.roll_dot = state.rate[kBodyRoll];
+  out.yaw_dot = state.rate[kBodyYaw];
+  out.spin_rate = s.spin_rates[w];
+  if (w < s.wheels.size()) out.wheels = s.wheels[w];
+  out.model = model();
+  return out;
+}
+
+WheelsetParameters VehicleSimulation::wheelset_parameters(size_t w) const {
+  WheelsetParameters p = equations_.wheelset(w).parameters();
+  p.vertical_force = 2.0 * wheel_loads_[w] - (p.include_gravity ? p.mass * p.gravity : 0.0);
+  return p;
 }
 
 RunCounters VehicleSimulation::counters() const {

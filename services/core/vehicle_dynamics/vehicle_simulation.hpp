@@ -60,7 +60,7 @@ struct VehicleSnapshot {
   std::vector<std::array<double, 2>> accelerations;
 };
 
-class VehicleSimulation : private DaeSystem {
+class VehicleSimulation : public Simulation, private DaeSystem {
  public:
   /// @param nominal_radius r0 of the wheel profile [m]
   /// @throws std::invalid_argument for an invalid spec (naming the body and key), a null contact.
@@ -74,16 +74,27 @@ class VehicleSimulation : private DaeSystem {
 
   /// The equilibrium at t = 0 (rigid contact first, then the model's own formulation) and the
   /// first output. @throws std::runtime_error when there is none (the message says why).
-  void start();
+  void start() override;
   /// One integrator step with the outputs it passes; false once the run is over (state()).
-  bool advance();
+  bool advance() override;
   /// start() if not started, then advance() to the end.
   void run();
+  /// Ends the run at the next step boundary with RunState::kStopped.
+  void request_stop() override { stop_requested_ = true; }
+  /// None: a vehicle run takes no model swap yet.
+  const std::vector<SwapRecord>& swaps() const override { return swaps_; }
+  /// Wheelset w at the output sample s in the lone wheelset's terms (z: the centre's height above
+  /// the rails), with the contact model in use.
+  WheelsetSnapshot wheelset_snapshot(const VehicleSnapshot& s, size_t w) const;
+  /// Wheelset w's parameters as the lone wheelset's run states them: its mass and inertias, the
+  /// run's material, speed and flange angle, and its static axle load as its total vertical load
+  /// (vertical_force less its weight), what Prud'homme's limit takes.
+  WheelsetParameters wheelset_parameters(size_t w) const;
 
-  RunState state() const { return state_; }
-  const std::string& message() const { return message_; }
-  double time() const { return t_; }
-  std::string model() const { return contact_.evaluator()->model(); }
+  RunState state() const override { return state_; }
+  const std::string& message() const override { return message_; }
+  double time() const override { return t_; }
+  std::string model() const override { return contact_.evaluator()->model(); }
   /// The vehicle now (after the last step).
   VehicleSnapshot snapshot();
   /// The vehicle at rest in its track frames where time t places it: F(t, y, 0) = 0 solved from the
@@ -95,11 +106,15 @@ class VehicleSimulation : private DaeSystem {
   std::vector<double> state_vector() const;
   VehicleLayout layout() const { return dae_.layout(); }
   /// Counters summed over the run: IDA's, the Jacobians and the contact batches.
-  RunCounters counters() const;
+  RunCounters counters() const override;
   const VehicleEquations& equations() const { return equations_; }
   /// The largest |Y/Q|, |sum Y|, T gamma and p_max of wheelset w so far, over every accepted step
   /// and output sample (its distance: V t), as the lone wheelset's run takes them.
   const RunExtremes& extremes(size_t w) const { return samplers_[w].extremes(); }
+  /// Wheelset w's wheels at the last accepted step.
+  const std::array<WheelOutput, 2>& last_step_wheels(size_t w) const { return samplers_[w].last_step().wheels; }
+  /// The formulation of the model's contact (every wheelset's).
+  ContactFormulation formulation() const { return formulation_of(*contact_.evaluator()); }
   /// Each wheelset's static wheel load, the scale of its normal forces [N].
   const std::vector<double>& wheel_loads() const { return wheel_loads_; }
 
@@ -127,6 +142,8 @@ class VehicleSimulation : private DaeSystem {
   RunState state_ = RunState::kRunning;
   std::string message_;
   std::string last_error_;
+  bool stop_requested_ = false;
+  std::vector<SwapRecord> swaps_;  // none yet
 };
 
 /// Each wheelset's static wheel load on level track [N]: the vehicle's weight and vertical

@@ -37,10 +37,10 @@ run_maximum_t to_message(const RunMaximum& m) {
   return out;
 }
 
-// The maxima of what engineers read off the run and the limits they are judged against.
-void copy_extremes(const WheelsetSimulation& sim, run_summary_t& m) {
-  const RunExtremes& e = sim.extremes();
-  const WheelsetParameters& p = sim.spec().wheelset;
+// The maxima of what engineers read off a wheelset's run, and the axle load and Prud'homme's limit
+// they are judged against (run_summary_t, wheelset_summary_t).
+template <class Message>
+void copy_extremes(const RunExtremes& e, const WheelsetParameters& p, Message& m) {
   for (std::size_t i = 0; i < 2; ++i) {
     m.max_y_over_q[i] = to_message(e.y_over_q[i]);
     m.max_wear_number[i] = to_message(e.wear_number[i]);
@@ -49,10 +49,37 @@ void copy_extremes(const WheelsetSimulation& sim, run_summary_t& m) {
   }
   m.max_track_shift_force = to_message(e.track_shift_force);
   m.max_track_shift_force_2m = to_message(e.track_shift_force_2m);
-  m.flange_angle = p.flange_angle;
-  m.nadal_limit = nadal_limit(p.flange_angle, p.material.friction);
   m.axle_load = p.total_vertical_load();
   m.prudhomme_limit = prudhomme_limit(m.axle_load);
+}
+
+// Nadal's limit of the run (its flange angle and friction).
+void copy_nadal(const WheelsetParameters& p, run_summary_t& m) {
+  m.flange_angle = p.flange_angle;
+  m.nadal_limit = nadal_limit(p.flange_angle, p.material.friction);
+}
+
+// What every summary says of the run as a whole.
+void copy_run(const Simulation& sim, const std::string& run_id, std::int64_t request_id, double wall_time,
+              run_summary_t& m) {
+  m.request_id = request_id;
+  m.run_id = run_id;
+  switch (sim.state()) {
+    case RunState::kFinished: m.state = run_status_t::FINISHED; break;
+    case RunState::kStopped: m.state = run_status_t::STOPPED; break;
+    case RunState::kFailed: m.state = run_status_t::FAILED; break;
+    case RunState::kRunning: m.state = run_status_t::RUNNING; break;
+  }
+  m.message = sim.message();
+  m.model = sim.model();
+  m.t_end = sim.time();
+  m.wall_time = wall_time;
+  m.stats = to_stats_message(sim.counters(), run_id, sim.time(), wall_time);
+  m.num_swaps = static_cast<std::int32_t>(sim.swaps().size());
+  for (const SwapRecord& s : sim.swaps()) {
+    m.swap_times.push_back(s.t);
+    m.swap_models.push_back(s.to);
+  }
 }
 
 // The field of each run_counter_table() name; three kept the message's older names.
@@ -100,13 +127,15 @@ const std::vector<MessageField<integrator_stats_t>>& stats_fields() {
 
 }  // namespace
 
-wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, const WheelsetParameters& w) {
+wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, const WheelsetParameters& w,
+                                  int wheelset, double ahead) {
   const double speed = w.speed;
   wheelset_state_t m{};
   m.run_id = run_id;
+  m.wheelset = static_cast<std::int16_t>(wheelset);
   m.t = s.t;
   copy_motion(s, m);
-  m.x = speed * s.t;
+  m.x = speed * s.t + ahead;
   m.speed = speed;
   for (std::size_t i = 0; i < 2; ++i) {
     const WheelOutput& wheel = s.wheels[i];
@@ -142,31 +171,54 @@ RunCounters from_stats_message(const integrator_stats_t& m) {
 run_summary_t to_summary_message(WheelsetSimulation& sim, const std::string& run_id, std::int64_t request_id,
                                  double wall_time) {
   run_summary_t m{};
-  m.request_id = request_id;
-  m.run_id = run_id;
-  switch (sim.state()) {
-    case RunState::kFinished: m.state = run_status_t::FINISHED; break;
-    case RunState::kStopped: m.state = run_status_t::STOPPED; break;
-    case RunState::kFailed: m.state = run_status_t::FAILED; break;
-    case RunState::kRunning: m.state = run_status_t::RUNNING; break;
-  }
-  m.message = sim.message();
-  m.model = sim.model();
+  copy_run(sim, run_id, request_id, wall_time, m);
   m.formulation = sim.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic";
-  m.t_end = sim.time();
-  m.wall_time = wall_time;
   try {
     copy_motion(sim.snapshot(), m);
   } catch (const std::exception& e) {
     if (m.message.empty()) m.message = std::string("final state unavailable: ") + e.what();
   }
-  m.stats = to_stats_message(sim.counters(), run_id, sim.time(), wall_time);
-  copy_extremes(sim, m);
-  m.num_swaps = static_cast<std::int32_t>(sim.swaps().size());
-  for (const SwapRecord& s : sim.swaps()) {
-    m.swap_times.push_back(s.t);
-    m.swap_models.push_back(s.to);
+  copy_extremes(sim.extremes(), sim.spec().wheelset, m);
+  copy_nadal(sim.spec().wheelset, m);
+  return m;
+}
+
+run_summary_t to_summary_message(VehicleSimulation& sim, const std::string& run_id, std::int64_t request_id,
+                                 double wall_time) {
+  run_summary_t m{};
+  copy_run(sim, run_id, request_id, wall_time, m);
+  m.formulation = sim.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic";
+  const VehicleEquations& e = sim.equations();
+  copy_nadal(sim.wheelset_parameters(0), m);
+  try {
+    const VehicleSnapshot now = sim.snapshot();
+    for (size_t w = 0; w < e.wheelset_count(); ++w) {
+      wheelset_summary_t ws{};
+      ws.name = e.vehicle().bodies[e.wheelset_body(w)].name;
+      copy_motion(sim.wheelset_snapshot(now, w), ws);
+      // The final normal forces from the last accepted step (the snapshot has no wheels).
+      for (std::size_t i = 0; i < 2; ++i) {
+        ws.normal_force[i] = sim.last_step_wheels(w)[i].normal_force;
+        ws.s_wheel[i] = sim.last_step_wheels(w)[i].s_wheel;
+      }
+      copy_extremes(sim.extremes(w), sim.wheelset_parameters(w), ws);
+      m.wheelsets.push_back(ws);
+    }
+  } catch (const std::exception& ex) {
+    if (m.message.empty()) m.message = std::string("final state unavailable: ") + ex.what();
+  }
+  m.num_wheelsets = static_cast<std::int16_t>(m.wheelsets.size());
+  if (!m.wheelsets.empty()) {  // the first wheelset in the lone wheelset's fields
+    const wheelset_summary_t& f = m.wheelsets.front();
+    m.y = f.y, m.z = f.z, m.roll = f.roll, m.yaw = f.yaw;
+    m.y_dot = f.y_dot, m.z_dot = f.z_dot, m.roll_dot = f.roll_dot, m.yaw_dot = f.yaw_dot, m.spin_rate = f.spin_rate;
+    for (std::size_t i = 0; i < 2; ++i) {
+      m.normal_force[i] = f.normal_force[i];
+      m.s_wheel[i] = f.s_wheel[i];
+    }
+    copy_extremes(sim.extremes(0), sim.wheelset_parameters(0), m);
   }
   return m;
 }
+
 }  // namespace wrc::protocol

@@ -11,6 +11,7 @@
 #include "bus/transport/guarded_subscription.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/service_starter.hpp"
+#include "core/dynamics/run_parameter_table.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
 #include "core/dynamics/single_wheelset_vehicle.hpp"
 #include "core/models/contact_model_factory.hpp"
@@ -64,7 +65,21 @@ std::vector<OptionSpec> wheelset_source_option_specs() {
   };
 }
 
-void apply_wheelset_sources(const Options& o, RunSpec& spec, std::ostream& notes) {
+void refuse_options_a_vehicle_gives(const Options& o) {
+  // The run parameters a vehicle file gives for each of its wheelsets and bodies.
+  static constexpr const char* kVehicleKeys[] = {
+      "mass",           "roll_inertia",           "yaw_inertia",       "spin_inertia",       "vertical_force",
+      "lateral_force",  "longitudinal_stiffness", "lateral_stiffness", "vertical_stiffness", "longitudinal_damping",
+      "lateral_damping", "vertical_damping",      "half_spacing"};
+  if (o.has("--suspension")) throw UsageError("--suspension and --vehicle both give the suspension: leave one out");
+  for (const auto& p : wheelset_parameter_table())
+    for (const char* key : kVehicleKeys)
+      if (std::string(p.key) == key && o.has(p.option_name()))
+        throw UsageError(p.option_name() + ": a vehicle of several bodies takes it from its file (--vehicle)");
+}
+
+void apply_wheelset_sources(const Options& o, RunSpec& spec, std::ostream& notes,
+                            std::optional<VehicleDescription>* several_bodies) {
   if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
   if (o.has("--vehicle")) {
     if (o.has("--suspension")) throw UsageError("--suspension and --vehicle both give the suspension: leave one out");
@@ -72,17 +87,22 @@ void apply_wheelset_sources(const Options& o, RunSpec& spec, std::ostream& notes
     VehicleDescription vehicle;
     try {
       vehicle = read_vehicle_file(path);
+      if (several_bodies && vehicle.bodies.size() > 1) {
+        refuse_options_a_vehicle_gives(o);
+        notes << "vehicle: '" << vehicle.name << "' (" << path << "), " << vehicle.bodies.size() << " bodies, "
+              << vehicle.elements.size() << " elements\n";
+        *several_bodies = std::move(vehicle);
+        return;  // --suspension was refused above
+      }
       apply_single_wheelset(vehicle, spec.wheelset);
     } catch (const std::invalid_argument& e) {
       throw UsageError("--vehicle: " + path + ": " + e.what());
     }
     notes << "vehicle: '" << vehicle.name << "' (" << path << "), one wheelset on the track\n";
   }
-  if (o.has("--suspension")) {
-    spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none"
-                                   ? PrimarySuspension::none()
-                                   : PrimarySuspension::benchmark();
-  }
+  if (!o.has("--suspension")) return;
+  spec.wheelset.suspension = o.choice("--suspension", {"benchmark", "none"}) == "none" ? PrimarySuspension::none()
+                                                                                       : PrimarySuspension::benchmark();
 }
 
 std::vector<OptionSpec> run_option_specs() {
@@ -120,16 +140,20 @@ protocol::RunRequest run_request_from(const Options& o, std::ostream& notes) {
   request.model = o.choice("--model", contact_model_names());
   if (request.model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
   RunSpec& spec = request.spec;
-  apply_wheelset_sources(o, spec, notes);
+  apply_wheelset_sources(o, spec, notes, &request.vehicle);
   apply_parameter_options(protocol::run_request_table(), o, request);
   spec.validate();  // the rules between parameters (the total vertical load)
   if (o.has("--track")) {
     spec.track = read_track_layout_file(o.text("--track"));
-    // On a curve the benchmark's lateral load would add to the centrifugal force.
-    zero_lateral_load_unless_given(o, spec.wheelset, kTrackLateralLoadReason, notes);
+    // On a curve the benchmark's lateral load would add to the centrifugal force (a vehicle's
+    // loads are its file's).
+    if (!request.vehicle) zero_lateral_load_unless_given(o, spec.wheelset, kTrackLateralLoadReason, notes);
   }
   if (o.has("--irregularities")) spec.irregularity = read_track_irregularity_file(o.text("--irregularities"));
-  if (o.has("--swap-at")) request.swaps = parse_swaps(o.text("--swap-at"), spec.integrator.t_end);
+  if (o.has("--swap-at")) {
+    if (request.vehicle) throw UsageError("--swap-at: a vehicle of several bodies takes no model swap yet");
+    request.swaps = parse_swaps(o.text("--swap-at"), spec.integrator.t_end);
+  }
   request.in_process = o.has("--in-process");
   request.run_id = o.text("--run-id", "run-" + std::to_string(::getpid()));
   if (o.has("--dynamics-instance")) {

@@ -6,12 +6,14 @@
 /// run request table (protocol/run/run_request_table.hpp: every run parameter and the contact
 /// client's settings, defaults and rules the table's), the service start and profile options.
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "cli/options.hpp"
 #include "core/dynamics/wheelset_parameters.hpp"
+#include "core/vehicle/vehicle_description.hpp"
 #include "protocol/run/run_command_codec.hpp"
 
 namespace wrc::cli {
@@ -21,10 +23,19 @@ namespace wrc::cli {
 std::vector<OptionSpec> wheelset_source_option_specs();
 /// spec's parameters from --params (the run parameter file), then its wheelset's from --vehicle (a
 /// vehicle file of one wheelset on the track, apply_single_wheelset(); a line to notes says which),
-/// then --suspension. The parameter options come after, in each caller.
-/// @throws UsageError for --vehicle with --suspension or a vehicle file that is bad or more than one
-///         wheelset on the track, naming the file; std::invalid_argument for a bad parameter file.
-void apply_wheelset_sources(const Options& options, RunSpec& spec, std::ostream& notes);
+/// then --suspension. The parameter options come after, in each caller. With several_bodies, a
+/// vehicle file of several bodies goes there instead (the vehicle's equations run it; the options
+/// it gives are refused, refuse_options_a_vehicle_gives()).
+/// @throws UsageError for --vehicle with --suspension or a vehicle file that is bad or (without
+///         several_bodies) more than one wheelset on the track, naming the file;
+///         std::invalid_argument for a bad parameter file.
+void apply_wheelset_sources(const Options& options, RunSpec& spec, std::ostream& notes,
+                            std::optional<VehicleDescription>* several_bodies = nullptr);
+
+/// The one rule for a vehicle of several bodies: its file gives every wheelset's and body's mass,
+/// inertias, loads and suspension, so --suspension and those parameter options (--mass,
+/// --vertical-force, ...) are refused, naming the option.
+void refuse_options_a_vehicle_gives(const Options& options);
 
 /// Every option of `wrc run`, in --help order.
 std::vector<OptionSpec> run_option_specs();

@@ -55,6 +55,24 @@ nlohmann::json irregularity_json(const TrackIrregularity& irregularity) {
   return j;
 }
 
+// A wheelset's final state (run_summary_t's or wheelset_summary_t's fields).
+template <class Summary>
+nlohmann::json final_state_json(const Summary& s) {
+  return {{"y", s.y},
+          {"z", s.z},
+          {"roll", s.roll},
+          {"yaw", s.yaw},
+          {"y_dot", s.y_dot},
+          {"z_dot", s.z_dot},
+          {"roll_dot", s.roll_dot},
+          {"yaw_dot", s.yaw_dot},
+          {"spin_rate", s.spin_rate},
+          {"normal_force_left", s.normal_force[0]},
+          {"normal_force_right", s.normal_force[1]},
+          {"s_wheel_left", s.s_wheel[0]},
+          {"s_wheel_right", s.s_wheel[1]}};
+}
+
 // {"max", "t", "distance"} of one maximum.
 nlohmann::json maximum_json(const run_maximum_t& m) { return {{"max", m.value}, {"t", m.t}, {"distance", m.distance}}; }
 
@@ -91,6 +109,32 @@ nlohmann::json run_quantities_json(const run_summary_t& s, double friction) {
   j["wear_number"] = per_wheel_json(s.max_wear_number);
   j["max_pressure"] = per_wheel_json(s.max_pressure);
   return j;
+}
+
+// A vehicle run's vehicle and each of its wheelsets' final state and run quantities, in the order
+// of the vehicle file (the summary's final_state and run_quantities are its first wheelset's).
+nlohmann::json vehicle_json(const run_summary_t& s, const VehicleDescription& vehicle, double friction) {
+  nlohmann::json wheelsets = nlohmann::json::array();
+  for (const wheelset_summary_t& w : s.wheelsets) {
+    run_summary_t one{};  // the wheelset's fields where the lone wheelset's run has them
+    one.max_y_over_q[0] = w.max_y_over_q[0], one.max_y_over_q[1] = w.max_y_over_q[1];
+    one.max_y_over_q_2m[0] = w.max_y_over_q_2m[0], one.max_y_over_q_2m[1] = w.max_y_over_q_2m[1];
+    one.max_wear_number[0] = w.max_wear_number[0], one.max_wear_number[1] = w.max_wear_number[1];
+    one.max_pressure[0] = w.max_pressure[0], one.max_pressure[1] = w.max_pressure[1];
+    one.max_track_shift_force = w.max_track_shift_force;
+    one.max_track_shift_force_2m = w.max_track_shift_force_2m;
+    one.nadal_limit = s.nadal_limit;
+    one.flange_angle = s.flange_angle;
+    one.axle_load = w.axle_load;
+    one.prudhomme_limit = w.prudhomme_limit;
+    wheelsets.push_back({{"name", w.name},
+                         {"final_state", final_state_json(w)},
+                         {"run_quantities", run_quantities_json(one, friction)}});
+  }
+  return {{"name", vehicle.name},
+          {"bodies", vehicle.bodies.size()},
+          {"elements", vehicle.elements.size()},
+          {"wheelsets", wheelsets}};
 }
 
 // One column of the history CSV: its name, unit and value in a state message.
@@ -134,6 +178,7 @@ const std::vector<HistoryColumn>& history_columns() {
       WRC_WHEEL_COLUMNS("creep_force_y", "N", creep_force_y),
       WRC_WHEEL_COLUMNS("wear_number", "N", wear_number),
       WRC_WHEEL_COLUMNS("max_pressure", "Pa", max_pressure),
+      WRC_HISTORY_COLUMN("wheelset", "-", m.wheelset),
   };
   return columns;
 }
@@ -154,19 +199,7 @@ nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& 
   j["in_process"] = request.in_process;
   j["geometry_key"] = key;
   j["t_end"] = s.t_end;
-  j["final_state"] = {{"y", s.y},
-                      {"z", s.z},
-                      {"roll", s.roll},
-                      {"yaw", s.yaw},
-                      {"y_dot", s.y_dot},
-                      {"z_dot", s.z_dot},
-                      {"roll_dot", s.roll_dot},
-                      {"yaw_dot", s.yaw_dot},
-                      {"spin_rate", s.spin_rate},
-                      {"normal_force_left", s.normal_force[0]},
-                      {"normal_force_right", s.normal_force[1]},
-                      {"s_wheel_left", s.s_wheel[0]},
-                      {"s_wheel_right", s.s_wheel[1]}};
+  j["final_state"] = final_state_json(s);
   j["wall_time"] = s.wall_time;
   j["counters"] = table_json(run_counter_table(), protocol::from_stats_message(s.stats));
   nlohmann::json swaps = nlohmann::json::array();
@@ -183,6 +216,7 @@ nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& 
   j["track_layout"] = layout_json(request.spec.track, request.spec.wheelset.speed, request.spec.wheelset.gravity,
                                   s.t_end);
   j["irregularities"] = irregularity_json(request.spec.irregularity);
+  if (request.vehicle) j["vehicle"] = vehicle_json(s, *request.vehicle, request.spec.wheelset.material.friction);
   return j;
 }
 
@@ -193,13 +227,13 @@ void write_summary(const std::string& path, const nlohmann::json& summary) {
   if (!out) throw std::runtime_error(path + ": write error");
 }
 
-void write_history(const std::string& path, const std::map<double, wheelset_state_t>& history) {
+void write_history(const std::string& path, const StateHistory& history) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error(path + ": cannot write the history");
   for (const HistoryColumn& c : history_columns()) out << c.name << " [" << c.unit << "],";
   out << "model [-]\n";
   out << std::setprecision(17);
-  for (const auto& [t, m] : history) {
+  for (const auto& [when, m] : history) {
     for (const HistoryColumn& c : history_columns()) out << c.value(m) << ',';
     out << m.model << '\n';
   }

@@ -7,6 +7,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -22,8 +23,12 @@ nlohmann::json summary_json(const run_summary_t& summary, const protocol::RunReq
 /// Writes the summary JSON to path. @throws std::runtime_error when it cannot.
 void write_summary(const std::string& path, const nlohmann::json& summary);
 
-/// Writes the states by simulated time [s] as CSV (SI units), every header "name [unit]" (docs/cli.md lists
-/// the columns). @throws std::runtime_error when it cannot.
-void write_history(const std::string& path, const std::map<double, wheelset_state_t>& history);
+/// A run's states by simulated time [s] and wheelset (its index in a vehicle run; the lone
+/// wheelset: 0).
+using StateHistory = std::map<std::pair<double, int>, wheelset_state_t>;
+
+/// Writes the states by simulated time [s] and wheelset as CSV (SI units), every header
+/// "name [unit]" (docs/cli.md lists the columns). @throws std::runtime_error when it cannot.
+void write_history(const std::string& path, const StateHistory& history);
 
 }  // namespace wrc::cli

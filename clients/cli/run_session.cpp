@@ -40,6 +40,13 @@ bool dynamics_alive(const bus::HeartbeatMonitor& monitor, std::uint64_t runner, 
   return false;
 }
 
+// Whether any wrc-dynamicsd (of that instance name, when one is given) beats, READY or not.
+bool any_dynamics_alive(const bus::HeartbeatMonitor& monitor, const std::string& instance, double now) {
+  for (const bus::ServiceStatus& s : monitor.services(now))
+    if (s.last.model == "dynamicsd" && s.alive && (instance.empty() || s.last.instance == instance)) return true;
+  return false;
+}
+
 }  // namespace
 
 RunSession::RunSession(const Options& options, protocol::RunRequest request)
@@ -92,7 +99,7 @@ const run_summary_t& RunSession::run() {
       [&](const wheelset_states_t& batch, const bus::ReceivedMessage&) {
         if (batch.run_id != run_id) return;
         for (const wheelset_state_t& m : batch.states)
-          if (m.run_id == run_id) history_[m.t] = m;
+          if (m.run_id == run_id) history_[{m.t, m.wheelset}] = m;
       }, 1000);
   bus::GuardedSubscription<run_status_t> status(
       lcm, session_.names.name(bus::channel::kRunStatus), "run status",
@@ -119,10 +126,19 @@ const run_summary_t& RunSession::run() {
     bus::publish_signed(lcm, session_.names.name(bus::channel::kRunCommand), c);
   };
   bool stop_sent = false;
+  bool ever_acknowledged = false;
   double next_send = 0.0;
   while (!summary_) {
     const double now = bus::monotonic_seconds();
+    ever_acknowledged = ever_acknowledged || acknowledged;
     if (!acknowledged && now >= next_send) {
+      // The dynamics heard at the start ended before it took the run (another command's service,
+      // busy with that command's run and stopped by it when it ended): one is started for this run.
+      if (!ever_acknowledged && !own_dynamics_ && !any_dynamics_alive(session_.monitor, request_.dynamics_instance, now)) {
+        std::cerr << "\nrun: the wrc-dynamicsd heard at the start has ended before taking the run; starting one\n";
+        start_own_dynamics();
+        last_heard = bus::monotonic_seconds();
+      }
       send(command);
       next_send = now + kCommandRepeat;
     }
@@ -168,6 +184,10 @@ const run_summary_t& RunSession::run() {
 void RunSession::restart_own_dynamics() {
   if (!own_dynamics_ || own_dynamics_->alive()) return;
   std::cerr << "\nrun: the wrc-dynamicsd it started has ended (log: " << own_dynamics_->log() << "); starting another\n";
+  start_own_dynamics();
+}
+
+void RunSession::start_own_dynamics() {
   const StartContext context = start_context_from(options_, "run", "r" + std::to_string(::getpid()));
   std::unique_ptr<StartedService> again = ensure_service(*session_.lcm, session_.monitor, context, "dynamicsd", "",
                                                           "wrc-dynamicsd", {}, request_.dynamics_instance);

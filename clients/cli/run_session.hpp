@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/options.hpp"
+#include "cli/run_outputs.hpp"
 #include "cli/service_starter.hpp"
 #include "protocol/run/run_command_codec.hpp"
 #include "wrc/run_summary_t.hpp"
@@ -47,11 +48,13 @@ class RunSession {
   CommandBus session_;
   /// Starts the wrc-dynamicsd again when this command started it and it has ended.
   void restart_own_dynamics();
+  /// Starts a wrc-dynamicsd for this run unless one is READY (ensure_service), as its own.
+  void start_own_dynamics();
 
   std::vector<std::unique_ptr<StartedService>> started_;
   StartedService* own_dynamics_ = nullptr;  ///< the wrc-dynamicsd this command started, if any
   long resends_ = 0;                        ///< times the run was sent again to a new dynamics process
-  std::map<double, wheelset_state_t> history_;
+  StateHistory history_;
   std::optional<run_summary_t> summary_;
 };
 

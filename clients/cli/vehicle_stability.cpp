@@ -8,6 +8,7 @@
 #include "cli/in_process_contact.hpp"
 #include "cli/plot/plot_options.hpp"
 #include "cli/profile_options.hpp"
+#include "cli/run_options.hpp"
 #include "cli/stability_report.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
 #include "core/dynamics/run_parameters_file.hpp"
@@ -18,21 +19,10 @@
 namespace wrc::cli {
 namespace {
 
-// The run parameters a vehicle file gives for each of its wheelsets and bodies: on the command
-// line they would have nothing to act on.
-constexpr const char* kVehicleKeys[] = {
-    "mass",           "roll_inertia",         "yaw_inertia",       "spin_inertia",         "vertical_force",
-    "lateral_force",  "longitudinal_stiffness", "lateral_stiffness", "vertical_stiffness", "longitudinal_damping",
-    "lateral_damping", "vertical_damping",    "half_spacing"};
-
 // The run's common values (speed, material, FASTSIM grid, gravity, tolerances) from --params and
 // the parameter options; an option the vehicle file gives is refused.
 RunSpec vehicle_run_spec(const Options& o) {
-  if (o.has("--suspension")) throw UsageError("--suspension and --vehicle both give the suspension: leave one out");
-  for (const auto& p : wheelset_parameter_table())
-    for (const char* key : kVehicleKeys)
-      if (std::string(p.key) == key && o.has(p.option_name()))
-        throw UsageError(p.option_name() + ": a vehicle of several bodies takes it from its file (--vehicle)");
+  refuse_options_a_vehicle_gives(o);
   RunSpec spec;
   if (o.has("--params")) apply_run_parameter_file(o.text("--params"), spec);
   apply_parameter_options(wheelset_parameter_table(), o, spec.wheelset);

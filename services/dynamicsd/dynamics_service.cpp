@@ -124,8 +124,46 @@ void DynamicsService::add_query_instances(run_summary_t& summary) const {
   }
 }
 
+std::unique_ptr<Simulation> DynamicsService::make_wheelset_run(double nominal_radius) {
+  auto run = std::make_unique<WheelsetSimulation>(request_.spec, make_contact(request_.model), nominal_radius);
+  for (const protocol::ScheduledSwap& swap : request_.swaps) run->schedule_swap(swap.t, make_contact(swap.model));
+  const std::string run_id = request_.run_id;
+  const WheelsetParameters wheelset = request_.spec.wheelset;
+  run->on_output([this, run_id, wheelset](const WheelsetSnapshot& s) {
+    states_.add(protocol::to_state_message(s, run_id, wheelset), bus::monotonic_seconds());
+  });
+  wheelset_run_ = run.get();
+  return run;
+}
+
+std::unique_ptr<Simulation> DynamicsService::make_vehicle_run(double nominal_radius) {
+  if (!request_.swaps.empty())
+    throw std::invalid_argument("swap_times: a vehicle run takes no model swap yet (docs/vehicle.md)");
+  auto run = std::make_unique<VehicleSimulation>(VehicleRunSpec{*request_.vehicle, request_.spec},
+                                                 make_contact(request_.model), nominal_radius);
+  const std::string run_id = request_.run_id;
+  VehicleSimulation* vehicle = run.get();
+  std::vector<WheelsetParameters> parameters;
+  std::vector<double> ahead;  // [m] each wheelset's place ahead of the vehicle's reference point
+  for (size_t w = 0; w < vehicle->equations().wheelset_count(); ++w) {
+    parameters.push_back(vehicle->wheelset_parameters(w));
+    ahead.push_back(vehicle->equations().vehicle().bodies[vehicle->equations().wheelset_body(w)].position[0]);
+  }
+  run->on_output([this, run_id, vehicle, parameters, ahead](const VehicleSnapshot& s) {
+    const double now = bus::monotonic_seconds();
+    for (size_t w = 0; w < parameters.size(); ++w)
+      states_.add(protocol::to_state_message(vehicle->wheelset_snapshot(s, w), run_id, parameters[w],
+                                             static_cast<int>(w), ahead[w]),
+                  now);
+  });
+  vehicle_run_ = vehicle;
+  return run;
+}
+
 void DynamicsService::start(const run_command_t& command) {
   simulation_.reset();
+  wheelset_run_ = nullptr;
+  vehicle_run_ = nullptr;
   summary_.reset();
   status_message_.clear();
   bus_contacts_.clear();
@@ -135,21 +173,18 @@ void DynamicsService::start(const run_command_t& command) {
     geometry_key_ = geometry_key(request_.geometry);
     if (request_.in_process) geometry_ = std::make_shared<const WheelsetGeometry>(make_geometry(request_.geometry));
     const double r0 = request_.geometry.track.nominal_radius;
-    simulation_ = std::make_unique<WheelsetSimulation>(request_.spec, make_contact(request_.model), r0);
-    for (const protocol::ScheduledSwap& swap : request_.swaps) simulation_->schedule_swap(swap.t, make_contact(swap.model));
-    const std::string run_id = request_.run_id;
-    const WheelsetParameters wheelset = request_.spec.wheelset;
-    states_.start(run_id);
-    simulation_->on_output([this, run_id, wheelset](const WheelsetSnapshot& s) {
-      states_.add(protocol::to_state_message(s, run_id, wheelset), bus::monotonic_seconds());
-    });
+    states_.start(request_.run_id);
+    simulation_ = request_.vehicle ? make_vehicle_run(r0) : make_wheelset_run(r0);
     wall_start_ = bus::monotonic_seconds();
-    std::cerr << "wrc-dynamicsd: run " << bus::log_text(run_id) << " with " << request_.model
-              << (request_.in_process ? " (in-process)" : "") << " to t = " << request_.spec.integrator.t_end
-              << " s\n";
+    std::cerr << "wrc-dynamicsd: run " << bus::log_text(request_.run_id) << " with " << request_.model
+              << (request_.in_process ? " (in-process)" : "")
+              << (request_.vehicle ? " of vehicle '" + bus::log_text(request_.vehicle->name) + "'" : std::string())
+              << " to t = " << request_.spec.integrator.t_end << " s\n";
     simulation_->start();
   } catch (const std::exception& e) {
     simulation_.reset();
+    wheelset_run_ = nullptr;
+    vehicle_run_ = nullptr;
     states_.discard();
     std::cerr << "wrc-dynamicsd: run " << bus::log_text(command.run_id) << " failed to start: " << bus::log_text(e.what())
               << "\n";
@@ -193,7 +228,14 @@ void DynamicsService::apply_select() {
         return;
       }
     }
-    simulation_->request_swap(make_contact(select.model));
+    if (!wheelset_run_) {
+      status_message_ = "swap to " + select.model + " refused, keeping " + simulation_->model() +
+                        ": a vehicle run takes no model swap yet (docs/vehicle.md)";
+      std::cerr << "wrc-dynamicsd: " << bus::log_text(status_message_) << "\n";
+      publish_status(true);
+      return;
+    }
+    wheelset_run_->request_swap(make_contact(select.model));
   } catch (const std::exception& e) {
     status_message_ = "swap to " + select.model + " refused: " + e.what();
     publish_status(true);
@@ -203,7 +245,9 @@ void DynamicsService::apply_select() {
 void DynamicsService::finish() {
   states_.flush();  // every sample before the summary that ends the run
   wall_time_ = bus::monotonic_seconds() - wall_start_;
-  run_summary_t summary = protocol::to_summary_message(*simulation_, request_.run_id, request_id_, wall_time_);
+  run_summary_t summary =
+      vehicle_run_ ? protocol::to_summary_message(*vehicle_run_, request_.run_id, request_id_, wall_time_)
+                   : protocol::to_summary_message(*wheelset_run_, request_.run_id, request_id_, wall_time_);
   if (summary.message.empty()) summary.message = status_message_;
   add_query_instances(summary);
   summary_ = summary;

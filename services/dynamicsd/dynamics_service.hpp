@@ -2,7 +2,8 @@
 #pragma once
 /// @file
 /// wrc-dynamicsd's run management: START/STOP commands (RUN_COMMAND), live swaps
-/// (CONTACT_SELECT), one WheelsetSimulation at a time advanced step by step from the service loop,
+/// (CONTACT_SELECT), one simulation at a time (the lone wheelset's, or a vehicle's when the command
+/// carries one of several bodies) advanced step by step from the service loop,
 /// and what it publishes (WHEELSET_STATE: the samples of every output period in batches,
 /// dynamicsd/state_batches.hpp; RUN_STATUS and INTEGRATOR_STATS
 /// twice a second and on every change, RUN_SUMMARY at the end, repeated while idle so that a
@@ -23,7 +24,9 @@
 #include "bus/transport/channels.hpp"
 #include "bus/transport/guarded_subscription.hpp"
 #include "bus/transport/header_stamper.hpp"
+#include "core/dynamics/simulation.hpp"
 #include "core/dynamics/wheelset_simulation.hpp"
+#include "core/vehicle_dynamics/vehicle_simulation.hpp"
 #include "dynamicsd/bus_contact.hpp"
 #include "dynamicsd/contact_clients.hpp"
 #include "dynamicsd/state_batches.hpp"
@@ -70,6 +73,11 @@ class DynamicsService {
   bool discovering(const run_command_t& command) const;
   void on_select(const contact_select_t& select, std::uint64_t sender);
   void start(const run_command_t& command);
+  /// The lone wheelset's simulation of request_, its states published by output period.
+  std::unique_ptr<Simulation> make_wheelset_run(double nominal_radius);
+  /// The vehicle's simulation of request_, every wheelset's states published by output period.
+  /// @throws std::invalid_argument for scheduled swaps (a vehicle run takes none yet).
+  std::unique_ptr<Simulation> make_vehicle_run(double nominal_radius);
   /// A FAILED run_status_t for command's request, with reason as its message.
   void publish_refusal(const run_command_t& command, const std::string& reason);
   void finish();
@@ -111,7 +119,9 @@ class DynamicsService {
   std::map<std::uint64_t, SelectSender> select_senders_;
   std::int64_t selects_heard_ = 0;
 
-  std::unique_ptr<WheelsetSimulation> simulation_;
+  std::unique_ptr<Simulation> simulation_;
+  WheelsetSimulation* wheelset_run_ = nullptr;  // simulation_ when it is the lone wheelset's
+  VehicleSimulation* vehicle_run_ = nullptr;    // simulation_ when it is a vehicle's
   std::vector<std::shared_ptr<BusContact>> bus_contacts_;  // the run's contact over the bus (its start model and swaps)
   StateBatches states_;
   protocol::RunRequest request_;

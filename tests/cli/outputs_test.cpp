@@ -48,12 +48,12 @@ TEST(RunOutputs, SummaryRoundTripsThroughItsFile) {
 }
 
 TEST(RunOutputs, HistoryHasUnitsInItsHeaderAndRowsInTimeOrder) {
-  std::map<double, wheelset_state_t> history;
+  StateHistory history;
   for (double t : {0.02, 0.0, 0.01}) {
     wheelset_state_t s{};
     s.t = t;
     s.y = 1e-3 * t;
-    history[t] = s;
+    history[{t, 0}] = s;
   }
   const std::string path = temp_file("history.csv");
   write_history(path, history);

@@ -67,7 +67,7 @@ RunHistory read_log_history(const std::string& path) {
     }
     for (const wheelset_state_t& m : batch.states) {
       if (run_id.empty()) run_id = m.run_id;
-      if (m.run_id == run_id) states[m.t] = m;
+      if (m.run_id == run_id && m.wheelset == 0) states[m.t] = m;  // a vehicle's first wheelset
     }
   }
   if (states.empty()) throw std::runtime_error("'" + path + "' holds no wheelset states (WHEELSET_STATE)");
@@ -113,7 +113,8 @@ RunHistory read_run_history(const std::string& path) {
     return static_cast<int>(it - header.begin());
   };
   const int t = column("t", true), y = column("y", true), s = column("s_right", true),
-            force = column("normal_force_right", true), model = column("model", false);
+            force = column("normal_force_right", true), model = column("model", false),
+            wheelset = column("wheelset", false);
   // The force columns, all or none (a file written before they existed has none).
   const std::vector<std::pair<const char*, std::vector<double> RunHistory::Forces::*>> force_columns{
       {"distance", &RunHistory::Forces::distance},
@@ -144,6 +145,7 @@ RunHistory read_run_history(const std::string& path) {
                                  "' is not a number");
       return *v;
     };
+    if (wheelset >= 0 && value(wheelset) != 0.0) continue;  // a vehicle run: its first wheelset
     history.t.push_back(value(t));
     history.y.push_back(value(y));
     history.s_right.push_back(value(s));

@@ -32,7 +32,8 @@ struct RunHistory {
   } forces;
 };
 
-/// Reads a history file or an LCM log (the states of its first run); throws std::runtime_error
+/// Reads a history file or an LCM log (the states of its first run; of a vehicle run, its first
+/// wheelset's); throws std::runtime_error
 /// naming the file and the line for a missing column, a bad number, or no rows.
 RunHistory read_run_history(const std::string& path);
 

@@ -253,9 +253,13 @@ WheelsetParameters VehicleSimulation::wheelset_parameters(size_t w) const {
 }
 
 RunCounters VehicleSimulation::counters() const {
-  RunCounters c = integrator_.counters();
+  const RunCounters now = integrator_.counters();
+  RunCounters c = now;
   c += dae_.counters();
   c += contact_.counters();
+  c.add_evaluator(*contact_.evaluator());  // the bus's retries, timeouts and query times
+  c.last_order = now.last_order;
+  c.last_step = now.last_step;
   return c;
 }
 

@@ -4,8 +4,10 @@
 // are the benchmark's exactly, SingleWheelsetVehicle.*), so every field of the summary is equal,
 // compared with ==, but what names or times the run (run_id, wall_time). The spline model, the
 // paper's benchmark to t = 2 s, in-process (where the contact is evaluated is not what differs;
-// InProcessComparisonTest holds the bus to the in-process run). A vehicle file of several bodies
-// is refused before any run, naming the file and what it has.
+// InProcessComparisonTest holds the bus to the in-process run). The Cooperrider bogie (several
+// bodies, the vehicle's equations) runs over the bus as in-process: every wheelset's final state
+// and every counter equal, its queries on the spline lanes counted per instance, the history and
+// the summary with both wheelsets.
 #include <sys/wait.h>
 
 #include <fstream>
@@ -25,11 +27,13 @@ class VehicleRunTest : public BusTest {
  protected:
   // `wrc run` with args after the common ones; the summary (empty when none was written) and the
   // exit status.
+  // in_process false: over the bus (the services started by wrc run).
   nlohmann::json run(const std::string& name, const std::vector<std::string>& extra, int* exit_status,
-                     std::string* log_text = nullptr) {
+                     std::string* log_text = nullptr, bool in_process = true) {
     const std::string summary = temp_path(name + ".json"), log = temp_path(name + ".log");
-    std::vector<std::string> args{"run",          "--model", "spline", "--t-end", "2", "--in-process", "--summary",
-                                  summary,        "--build-dir", WRC_TEST_BUILD_DIR, "--run-id", name};
+    std::vector<std::string> args{"run",   "--model",     "spline",           "--t-end", "2",   "--summary",
+                                  summary, "--build-dir", WRC_TEST_BUILD_DIR, "--run-id", name};
+    if (in_process) args.push_back("--in-process");
     args.insert(args.end(), extra.begin(), extra.end());
     ChildProcess cli(WRC_CLI_PATH, args, log);
     int status = -1;
@@ -64,14 +68,69 @@ TEST_F(VehicleRunTest, TheSingleWheelsetFileIsTheBenchmarkBitForBit) {
   }
 }
 
-TEST_F(VehicleRunTest, AVehicleOfSeveralBodiesIsRefusedNamingTheFile) {
+TEST_F(VehicleRunTest, TheBogieOverTheBusIsTheInProcessRun) {
+  const std::string bogie = std::string(WRC_SOURCE_DIR) + "/parameters/vehicles/cooperrider-bogie.json";
+  // Released with its leading wheelset 2 mm off the centre line, on the bogie's wheel radius.
+  const std::vector<std::string> options{"--vehicle", bogie, "--r0", "0.425", "--y0", "0.002"};
+  int status = -1;
+  std::string local_log, bus_log;
+  std::vector<std::string> with_history = options;
+  with_history.insert(with_history.end(), {"--history", temp_path("bogie-bus.csv")});
+  const nlohmann::json local = run("bogie-local", options, &status, &local_log);
+  ASSERT_EQ(status, 0) << local_log;
+  const nlohmann::json bus = run("bogie-bus", with_history, &status, &bus_log, false);
+  ASSERT_EQ(status, 0) << bus_log;
+  EXPECT_NE(bus_log.find("vehicle: 'Cooperrider bogie'"), std::string::npos) << bus_log;
+  ASSERT_EQ(local.value("state", ""), "finished") << local.dump();
+  ASSERT_EQ(bus.value("state", ""), "finished") << bus.dump();
+  ASSERT_TRUE(bus.contains("vehicle")) << bus.dump();
+  const nlohmann::json& wheelsets = bus["vehicle"]["wheelsets"];
+  ASSERT_EQ(wheelsets.size(), 2u);
+  EXPECT_EQ(wheelsets[0]["name"], "wheelset_1");
+  EXPECT_EQ(wheelsets[1]["name"], "wheelset_2");
+  // The first wheelset is the summary's final state; released off the centre line, it moved.
+  EXPECT_EQ(bus["final_state"], wheelsets[0]["final_state"]);
+  EXPECT_NE(wheelsets[0]["final_state"]["y"].get<double>(), wheelsets[1]["final_state"]["y"].get<double>());
+  // Over the bus as in-process: every final state and counter but the bus's own times and misses.
+  EXPECT_EQ(local["vehicle"], bus["vehicle"]);
+  for (const auto& [key, value] : local["counters"].items()) {
+    if (key.rfind("bus_", 0) == 0 || key == "contact_retries" || key == "contact_timeouts" ||
+        key == "contact_failovers")
+      continue;
+    EXPECT_EQ(value, bus["counters"][key]) << key;
+  }
+  long counted = 0;
+  for (const auto& [instance, queries] : bus["query_instances"].items()) {
+    EXPECT_EQ(instance.rfind("spline/", 0), 0u) << instance;
+    counted += queries.get<long>();
+  }
+  EXPECT_EQ(counted, bus["counters"]["contact_queries"].get<long>());
+  // The history: both wheelsets at every output time.
+  std::ifstream history(temp_path("bogie-bus.csv"));
+  std::string header, line;
+  ASSERT_TRUE(std::getline(history, header));
+  EXPECT_NE(header.find(",wheelset [-],model [-]"), std::string::npos) << header;
+  std::map<int, int> rows;
+  while (std::getline(history, line)) {
+    const std::size_t last = line.rfind(','), before = line.rfind(',', last - 1);
+    ++rows[std::stoi(line.substr(before + 1, last - before - 1))];
+  }
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0], rows[1]);
+  EXPECT_GE(rows[0], 2000);  // 2 s of output every 1 ms
+}
+
+TEST_F(VehicleRunTest, WhatAVehicleFileGivesIsNotAnOption) {
   int status = -1;
   std::string log;
   const std::string car = std::string(WRC_SOURCE_DIR) + "/parameters/vehicles/cooperrider-car.json";
-  const nlohmann::json summary = run("car", {"--vehicle", car}, &status, &log);
+  EXPECT_TRUE(run("car-mass", {"--vehicle", car, "--mass", "1500"}, &status, &log).empty());
   EXPECT_NE(status, 0);
-  EXPECT_TRUE(summary.empty());
-  EXPECT_NE(log.find("--vehicle: " + car + ": vehicle 'Cooperrider car': bodies: 7;"), std::string::npos) << log;
+  EXPECT_NE(log.find("--mass: a vehicle of several bodies takes it from its file (--vehicle)"), std::string::npos)
+      << log;
+  EXPECT_TRUE(run("car-swap", {"--vehicle", car, "--swap-at", "1:onepoint"}, &status, &log).empty());
+  EXPECT_NE(status, 0);
+  EXPECT_NE(log.find("--swap-at: a vehicle of several bodies takes no model swap yet"), std::string::npos) << log;
 }
 
 }  // namespace

@@ -92,7 +92,11 @@ TEST(StringLimits, EveryStringOfEveryMessageIsBoundedAtDecoding) {
   command.num_scheduled_swaps = 1;
   command.scheduled_swap_times = {1.0};
   command.scheduled_swap_models = {"spline"};
-  expect_every_string_bounded(command, 11);
+  command.num_vehicle_bodies = 1;
+  command.vehicle_bodies.resize(1);
+  command.num_vehicle_elements = 1;
+  command.vehicle_elements.resize(1);
+  expect_every_string_bounded(command, 16);  // with the vehicle's name, a body's and an element's three
   expect_every_string_bounded(wrc::run_status_t{}, 5);
   wrc::run_summary_t summary{};
   summary.num_swaps = 1;
@@ -101,7 +105,9 @@ TEST(StringLimits, EveryStringOfEveryMessageIsBoundedAtDecoding) {
   summary.num_query_instances = 1;
   summary.query_instances = {"spline/a"};
   summary.instance_queries = {924};
-  expect_every_string_bounded(summary, 9);
+  summary.num_wheelsets = 1;
+  summary.wheelsets.resize(1);
+  expect_every_string_bounded(summary, 10);
   wrc::spline_model_t model{};
   model.num_functions = 1;
   model.function_names = {"z"};

@@ -95,7 +95,7 @@ TEST(SingleWheelsetVehicle, WhatTheWheelsetEquationsCannotTakeIsRefusedNamingIt)
     apply_single_wheelset(read_vehicle_file(kDir + "cooperrider-car.json"), p);
     ADD_FAILURE() << "the Cooperrider car was taken";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("bodies: 7; a run takes one wheelset"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bodies: 7; the lone wheelset's equations take one wheelset"), std::string::npos) << e.what();
   }
   const std::string base = kLoneWheelset;
   const struct {

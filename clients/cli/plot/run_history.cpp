@@ -39,13 +39,13 @@ bool is_lcm_log(const std::string& path) {
 }
 
 // The wheelset states of the first run in a log (channel WHEELSET_STATE with any prefix: batches of
-// states, or single states as logs recorded before the batches hold them), sorted by time;
-// repeated states (the same time) once.
-RunHistory read_log_history(const std::string& path) {
+// states, or single states as logs recorded before the batches hold them), by wheelset and sorted
+// by time; repeated states (the same wheelset and time) once.
+std::map<int, RunHistory> read_log_history(const std::string& path) {
   lcm::LogFile log(path, "r");
   if (!log.good()) throw std::runtime_error("cannot read the LCM log '" + path + "'");
   const std::string channel = "WHEELSET_STATE";
-  std::map<double, wheelset_state_t> states;
+  std::map<std::pair<int, double>, wheelset_state_t> states;  // by wheelset, time
   std::string run_id;
   for (const lcm::LogEvent* e = log.readNextEvent(); e != nullptr; e = log.readNextEvent()) {
     const std::string& name = e->channel;
@@ -67,15 +67,17 @@ RunHistory read_log_history(const std::string& path) {
     }
     for (const wheelset_state_t& m : batch.states) {
       if (run_id.empty()) run_id = m.run_id;
-      if (m.run_id == run_id && m.wheelset == 0) states[m.t] = m;  // a vehicle's first wheelset
+      if (m.run_id == run_id) states[{m.wheelset, m.t}] = m;
     }
   }
   if (states.empty()) throw std::runtime_error("'" + path + "' holds no wheelset states (WHEELSET_STATE)");
-  RunHistory history;
-  RunHistory::Forces& f = history.forces;
-  for (const auto& [t, m] : states) {
-    history.t.push_back(t);
+  std::map<int, RunHistory> histories;
+  for (const auto& [when, m] : states) {
+    RunHistory& history = histories[when.first];
+    RunHistory::Forces& f = history.forces;
+    history.t.push_back(m.t);
     history.y.push_back(m.y);
+    history.yaw.push_back(m.yaw);
     history.s_right.push_back(m.s_wheel[1]);
     history.normal_force_right.push_back(m.normal_force[1]);
     if (history.models.empty() || history.models.back() != m.model) history.models.push_back(m.model);
@@ -88,12 +90,12 @@ RunHistory read_log_history(const std::string& path) {
     f.wear_number_left.push_back(m.wear_number[0]);
     f.wear_number_right.push_back(m.wear_number[1]);
   }
-  return history;
+  return histories;
 }
 
 }  // namespace
 
-RunHistory read_run_history(const std::string& path) {
+std::map<int, RunHistory> read_wheelset_histories(const std::string& path) {
   if (is_lcm_log(path)) return read_log_history(path);
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read the run history '" + path + "'");
@@ -114,7 +116,7 @@ RunHistory read_run_history(const std::string& path) {
   };
   const int t = column("t", true), y = column("y", true), s = column("s_right", true),
             force = column("normal_force_right", true), model = column("model", false),
-            wheelset = column("wheelset", false);
+            wheelset = column("wheelset", false), yaw = column("yaw", false);
   // The force columns, all or none (a file written before they existed has none).
   const std::vector<std::pair<const char*, std::vector<double> RunHistory::Forces::*>> force_columns{
       {"distance", &RunHistory::Forces::distance},
@@ -129,7 +131,7 @@ RunHistory read_run_history(const std::string& path) {
   const bool has_forces = column(force_columns.front().first, false) >= 0;
   std::vector<int> force_index;
   for (const auto& [name, member] : force_columns) force_index.push_back(column(name, has_forces));
-  RunHistory history;
+  std::map<int, RunHistory> histories;
   for (int number = 2; std::getline(in, line); ++number) {
     if (line.empty()) continue;
     const std::vector<std::string> fields = split(line);
@@ -145,9 +147,10 @@ RunHistory read_run_history(const std::string& path) {
                                  "' is not a number");
       return *v;
     };
-    if (wheelset >= 0 && value(wheelset) != 0.0) continue;  // a vehicle run: its first wheelset
+    RunHistory& history = histories[wheelset >= 0 ? static_cast<int>(value(wheelset)) : 0];
     history.t.push_back(value(t));
     history.y.push_back(value(y));
+    history.yaw.push_back(yaw >= 0 ? value(yaw) : std::numeric_limits<double>::quiet_NaN());
     history.s_right.push_back(value(s));
     history.normal_force_right.push_back(value(force));
     if (has_forces)
@@ -157,8 +160,10 @@ RunHistory read_run_history(const std::string& path) {
         (history.models.empty() || history.models.back() != fields[model]))
       history.models.push_back(fields[model]);
   }
-  if (history.t.empty()) throw std::runtime_error("'" + path + "' has no rows");
-  return history;
+  if (histories.empty()) throw std::runtime_error("'" + path + "' has no rows");
+  return histories;
 }
+
+RunHistory read_run_history(const std::string& path) { return read_wheelset_histories(path).begin()->second; }
 
 }  // namespace wrc::cli::plot

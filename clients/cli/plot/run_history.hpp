@@ -6,6 +6,7 @@
 /// " [unit]" of older files are read too), or from the wheelset states in an LCM log that
 /// `wrc record` wrote during the run.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@ namespace wrc::cli::plot {
 struct RunHistory {
   std::vector<double> t;                   ///< time [s]
   std::vector<double> y;                   ///< lateral displacement of the wheelset [m]
+  std::vector<double> yaw;                 ///< yaw from its track tangent, the angle of attack [rad] (NaN: not in the file)
   std::vector<double> s_right;             ///< right contact point, wheel profile coordinate [m]
   std::vector<double> normal_force_right;  ///< right normal force [N]
   std::vector<std::string> models;         ///< the contact models of the run, in order of appearance
@@ -32,9 +34,12 @@ struct RunHistory {
   } forces;
 };
 
-/// Reads a history file or an LCM log (the states of its first run; of a vehicle run, its first
-/// wheelset's); throws std::runtime_error
-/// naming the file and the line for a missing column, a bad number, or no rows.
+/// Reads a history file or an LCM log (the states of its first run), each wheelset's rows apart, by
+/// its index (a vehicle run's `wheelset` column; the lone wheelset's run, or a file without the
+/// column: 0 alone). Throws std::runtime_error naming the file and the line for a missing column, a
+/// bad number, or no rows.
+std::map<int, RunHistory> read_wheelset_histories(const std::string& path);
+/// The first wheelset's history of read_wheelset_histories() (the lone wheelset's run: its only).
 RunHistory read_run_history(const std::string& path);
 
 }  // namespace wrc::cli::plot

@@ -70,8 +70,8 @@ void apply_single_wheelset(const VehicleDescription& vehicle, WheelsetParameters
   validate(vehicle);
   if (vehicle.bodies.size() != 1 || vehicle.bodies.front().kind != BodyKind::kWheelset)
     refuse(vehicle, "bodies: " + std::to_string(vehicle.bodies.size()) +
-                        "; a run takes one wheelset on the track so far (the equations of a vehicle of several "
-                        "bodies are not built yet, docs/vehicle.md)");
+                        "; the lone wheelset's equations take one wheelset on the track (wrc run and wrc "
+                        "stability run a vehicle of several bodies on the vehicle's, docs/vehicle.md)");
   const VehicleBody& w = vehicle.bodies.front();
   if (w.position[0] != 0.0)
     refuse(vehicle, "body '" + w.name + "': position: " + text(w.position) +

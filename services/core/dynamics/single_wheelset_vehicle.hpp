@@ -4,8 +4,10 @@
 /// A vehicle file of one wheelset tied to the track (parameters/vehicles/single-wheelset.json) as
 /// the wheelset run's parameters: its mass, inertias and loads, and its two axle boxes as the
 /// primary suspension of WheelsetParameters (docs/vehicle.md, "Running a vehicle file"). This is
-/// how `wrc run --vehicle FILE` runs such a file on today's wheelset equations; a vehicle of more
-/// bodies needs the vehicle equations and is refused, naming what it has.
+/// how `wrc run --vehicle FILE` runs such a file on the lone wheelset's equations; a vehicle of
+/// more bodies runs on the vehicle's (core/vehicle_dynamics/), and is refused here, naming what it
+/// has. apply_wheelset_body() is the one mapping of a wheelset body to the wheelset equations'
+/// parameters, for both.
 
 #include "core/dynamics/wheelset_parameters.hpp"
 #include "core/vehicle/vehicle_description.hpp"

@@ -171,13 +171,16 @@ RunCounters from_stats_message(const integrator_stats_t& m) {
 run_summary_t to_summary_message(WheelsetSimulation& sim, const std::string& run_id, std::int64_t request_id,
                                  double wall_time) {
   run_summary_t m{};
-  copy_run(sim, run_id, request_id, wall_time, m);
-  m.formulation = sim.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic";
+  // The final state first: its contact may be one more query, which the counters then hold.
+  std::string unavailable;
   try {
     copy_motion(sim.snapshot(), m);
   } catch (const std::exception& e) {
-    if (m.message.empty()) m.message = std::string("final state unavailable: ") + e.what();
+    unavailable = std::string("final state unavailable: ") + e.what();
   }
+  copy_run(sim, run_id, request_id, wall_time, m);
+  if (m.message.empty()) m.message = unavailable;
+  m.formulation = sim.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic";
   copy_extremes(sim.extremes(), sim.spec().wheelset, m);
   copy_nadal(sim.spec().wheelset, m);
   return m;
@@ -186,10 +189,9 @@ run_summary_t to_summary_message(WheelsetSimulation& sim, const std::string& run
 run_summary_t to_summary_message(VehicleSimulation& sim, const std::string& run_id, std::int64_t request_id,
                                  double wall_time) {
   run_summary_t m{};
-  copy_run(sim, run_id, request_id, wall_time, m);
-  m.formulation = sim.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic";
   const VehicleEquations& e = sim.equations();
   copy_nadal(sim.wheelset_parameters(0), m);
+  std::string unavailable;
   try {
     const VehicleSnapshot now = sim.snapshot();
     for (size_t w = 0; w < e.wheelset_count(); ++w) {
@@ -205,8 +207,12 @@ run_summary_t to_summary_message(VehicleSimulation& sim, const std::string& run_
       m.wheelsets.push_back(ws);
     }
   } catch (const std::exception& ex) {
-    if (m.message.empty()) m.message = std::string("final state unavailable: ") + ex.what();
+    unavailable = std::string("final state unavailable: ") + ex.what();
   }
+  // After the final state, whose contact may be one more query.
+  copy_run(sim, run_id, request_id, wall_time, m);
+  if (m.message.empty()) m.message = unavailable;
+  m.formulation = sim.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic";
   m.num_wheelsets = static_cast<std::int16_t>(m.wheelsets.size());
   if (!m.wheelsets.empty()) {  // the first wheelset in the lone wheelset's fields
     const wheelset_summary_t& f = m.wheelsets.front();

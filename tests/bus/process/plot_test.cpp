@@ -137,7 +137,7 @@ TEST_F(PlotTest, HelpListsTheKinds) {
   int status = -1;
   const std::string text = run_command(kCli + " plot --help", &status);
   EXPECT_EQ(status, 0);
-  for (const char* kind : {"distance", "area", "geometry", "run", "conicity", "profiles", "displacement"})
+  for (const char* kind : {"distance", "area", "geometry", "run", "conicity", "profiles", "displacement", "wheelsets"})
     EXPECT_NE(text.find(std::string("\n  ") + kind + " "), std::string::npos) << kind << " missing in\n" << text;
 }
 
@@ -218,6 +218,54 @@ TEST_F(PlotTest, RunForces) {
       run_command(kCli + " plot run " + (dir_ / "old.csv").string() + " --forces 2>&1 >/dev/null", &status);
   EXPECT_NE(status, 0);
   EXPECT_NE(text.find("has no force columns"), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+}
+
+// A vehicle run's history (two wheelsets, a row each per time, the column `wheelset`): one series
+// per wheelset of (its own distance, y, yaw) as written, each titled by its number; `plot run`
+// draws the first wheelset's rows alone. A history without yaw is refused in one line.
+TEST_F(PlotTest, Wheelsets) {
+  std::ofstream out(dir_ / "vehicle.csv");
+  out << "t [s],y [m],yaw [rad],s_right [m],normal_force_right [N],distance [m],y_over_q_left [-],y_over_q_right [-],"
+         "nadal_limit [-],track_shift_force [N],prudhomme_limit [N],wear_number_left [N],wear_number_right [N],"
+         "wheelset [-],model [-]\n";
+  auto y_of = [](int w, double t) { return 0.003 * std::exp(-t) * std::cos(8 * t - w); };
+  auto yaw_of = [](int w, double t) { return 0.002 * std::sin(8 * t + w); };
+  for (int i = 0; i <= 50; ++i) {
+    const double t = 0.02 * i;
+    for (int w = 0; w < 2; ++w)
+      out << t << "," << y_of(w, t) << "," << yaw_of(w, t) << ",0,86000," << 30 * t - 2.148 * w
+          << ",0.1,-0.1,1.3416,1000,67500,20,20," << w << ",spline\n";
+  }
+  out.close();
+  expect_png("wheelsets " + (dir_ / "vehicle.csv").string(), "wheelsets.png");
+  plot_captured("wheelsets " + (dir_ / "vehicle.csv").string(), "wheelsets2.png");
+  for (int w = 0; w < 2; ++w) {
+    const auto rows = data_rows("wheelset_" + std::to_string(w) + ".dat");
+    ASSERT_EQ(rows.size(), 51u) << w;
+    for (int i = 0; i <= 50; ++i) {
+      const double t = 0.02 * i;
+      const auto& r = rows[static_cast<size_t>(i)];
+      ASSERT_EQ(r.size(), 3u);
+      EXPECT_NEAR(r[0], 30 * t - 2.148 * w, 1e-4) << w;  // six significant digits in the file
+      EXPECT_NEAR(r[1], y_of(w, t), 1e-8) << w;
+      EXPECT_NEAR(r[2], yaw_of(w, t), 1e-8) << w;
+    }
+  }
+  EXPECT_NE(captured_script().find("wheelset 2"), std::string::npos) << captured_script();
+  // plot run: the first wheelset's 51 rows.
+  plot_captured("run " + (dir_ / "vehicle.csv").string(), "run.png");
+  const auto first = data_rows("run_0.dat");
+  ASSERT_EQ(first.size(), 51u);
+  EXPECT_NEAR(first[10][1], y_of(0, 0.2), 1e-8);
+  std::ofstream old(dir_ / "old.csv");
+  old << "t,y,s_right,normal_force_right,model\n0,0,0,86000,spline\n";
+  old.close();
+  int status = -1;
+  const std::string text =
+      run_command(kCli + " plot wheelsets " + (dir_ / "old.csv").string() + " 2>&1 >/dev/null", &status);
+  EXPECT_NE(status, 0);
+  EXPECT_NE(text.find("has no distance or yaw column"), std::string::npos) << text;
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
 }
 

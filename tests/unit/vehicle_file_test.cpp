@@ -123,6 +123,39 @@ TEST(VehicleFile, TheShippedParameterSetsReadAndHoldTheirSources) {
   EXPECT_EQ(single.bodies.size(), 1u);
   EXPECT_EQ(single.wheelsets()[0]->mass, 1813.0);
   for (const VehicleElement& e : single.elements) EXPECT_EQ(e.bodies[1], kTrackBody) << e.name;
+  // The Manchester coach: the published masses (32000 kg body, two 2615 kg frames, four 1813 kg
+  // wheelsets), pivots at +-9.5 m, wheelsets +-1.28 m from them, and the published vertical
+  // springs and dampers (docs/vehicle.md, "The Manchester coach").
+  const VehicleDescription coach = read_vehicle_file(kDir + "manchester-coach.json");
+  ASSERT_EQ(coach.wheelsets().size(), 4u);
+  ASSERT_EQ(coach.bodies.size(), 7u);
+  mass = 0;
+  for (const VehicleBody& b : coach.bodies) {
+    mass += b.mass;
+    if (b.kind == BodyKind::kCarBody) {
+      EXPECT_EQ(b.inertia[1], 1.97e6);
+    } else if (b.kind == BodyKind::kBogieFrame) {
+      EXPECT_EQ(std::abs(b.position[0]), 9.5) << b.name;
+      EXPECT_EQ(b.inertia[1], 1476.0) << b.name;
+    }
+  }
+  EXPECT_NEAR(mass, 32000 + 2 * 2615 + 4 * 1813, 1e-9);
+  int primary = 0, secondary = 0;
+  for (const VehicleElement& e : coach.elements) {
+    if (e.name.find("_primary_") != std::string::npos) {
+      ++primary;
+      EXPECT_EQ(e.stiffness[2], 1.2e6) << e.name;
+      EXPECT_EQ(e.damping[2], 4.0e3) << e.name;
+      EXPECT_EQ(std::abs(e.attachments[1][0]), 1.28) << e.name;
+    }
+    if (e.name.find("_secondary_") != std::string::npos) {
+      ++secondary;
+      EXPECT_EQ(e.stiffness[2], 4.3e5) << e.name;
+      EXPECT_EQ(e.damping[2], 2.0e4) << e.name;
+    }
+  }
+  EXPECT_EQ(primary, 8);
+  EXPECT_EQ(secondary, 4);
 }
 
 }  // namespace

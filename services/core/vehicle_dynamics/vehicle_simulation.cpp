@@ -113,7 +113,7 @@ int VehicleSimulation::jacobian(double t, double cj, const double* y, const doub
 int VehicleSimulation::roots(double, const double*, double*) { return 0; }
 
 void VehicleSimulation::message(const char* function, const char* text) {
-  last_error_ = std::string(function ? function : "IDA") + ": " + (text ? text : "");
+  last_solver_message_ = std::string(function ? function : "IDA") + ": " + (text ? text : "");
 }
 
 bool VehicleSimulation::advance() {
@@ -130,6 +130,7 @@ bool VehicleSimulation::advance() {
     std::ostringstream msg;
     msg << "the integrator failed at t = " << integrator_.current_time() << " s (IDA flag " << step.flag << ")";
     if (!last_error_.empty()) msg << ": " << last_error_;
+    if (!last_solver_message_.empty()) msg << " (" << last_solver_message_ << ")";
     fail(msg.str());
     return false;
   }

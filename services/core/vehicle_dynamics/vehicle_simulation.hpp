@@ -141,7 +141,8 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   double t_ = 0;
   RunState state_ = RunState::kRunning;
   std::string message_;
-  std::string last_error_;
+  std::string last_error_;           // what the equations last threw (the contact model's reason)
+  std::string last_solver_message_;  // IDA's last message
   bool stop_requested_ = false;
   std::vector<SwapRecord> swaps_;  // none yet
 };

@@ -20,7 +20,7 @@ constexpr double kTypicalBodyUnknown = 1e-2;
 double body_jacobian_increment(int, double v) { return kRelativeIncrement * std::max(std::abs(v), kTypicalBodyUnknown); }
 
 VehicleDae::VehicleDae(VehicleEquations& equations, VehicleContact& contact)
-    : equations_(equations), contact_(contact) {}
+    : equations_(equations), contact_(contact), groups_(jacobian_column_groups(equations.vehicle())) {}
 
 VehicleLayout VehicleDae::layout() const { return equations_.layout_of(contact_.unknowns()); }
 
@@ -67,33 +67,49 @@ void VehicleDae::jacobian(double t, double cj, const double* y, const double* yp
     contact_.fetch(states);  // one evaluation, or none when the residual fetched them
   }
   ++counters_.jacobian_evals;
-  counters_.jacobian_residual_evals += n;
   std::vector<WheelsetContactView> views;
   for (size_t w = 0; w < contact_.size(); ++w) {
     const WheelsetContact& c = contact_.wheelset(w);
     views.push_back({c.formulation(), &c.branches(), &base[w]});
   }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) jac(i, j) = 0.0;  // a column is 0 outside its body's neighbourhood
+  // Each group's bodies perturbed together, unknown k of each at once (jacobian_column_groups.hpp):
+  // their neighbourhoods share no row, so each column is what perturbing it alone gives.
   std::vector<double> state(y, y + n);
   std::vector<double> column(static_cast<size_t>(n));
-  for (size_t b = 0; b < equations_.vehicle().bodies.size(); ++b) {
-    const int off = layout.offset[b];
-    const int w = equations_.wheelset_of_body(b);
-    for (int k = 0; k < layout.size[b]; ++k) {
-      const int j = off + k;
-      const double h = w < 0 ? body_jacobian_increment(k, y[j]) : jacobian_increment(k, y[j]);
-      state[static_cast<size_t>(j)] = y[j] + h;
-      const double step = state[static_cast<size_t>(j)] - y[j];  // the increment as represented
-      ContactResult perturbed;
-      const size_t ws = static_cast<size_t>(w);
-      if (w >= 0 && enters_contact_query(contact_.wheelset(ws).formulation(),
-                                         contact_.wheelset(ws).branches().any_two_point(), k)) {
-        perturbed = contact_.wheelset(ws).at(state.data() + off);  // fetched above
-        views[ws].result = &perturbed;
+  std::vector<ContactResult> perturbed(contact_.size());
+  std::vector<double> steps(equations_.vehicle().bodies.size());
+  for (const std::vector<size_t>& group : groups_.groups) {
+    int most = 0;
+    for (size_t b : group) most = std::max(most, layout.size[b]);
+    for (int k = 0; k < most; ++k) {
+      for (size_t b : group) {
+        if (k >= layout.size[b]) continue;
+        const int j = layout.offset[b] + k;
+        const int w = equations_.wheelset_of_body(b);
+        const double h = w < 0 ? body_jacobian_increment(k, y[j]) : jacobian_increment(k, y[j]);
+        state[static_cast<size_t>(j)] = y[j] + h;
+        steps[b] = state[static_cast<size_t>(j)] - y[j];  // the increment as represented
+        const size_t ws = static_cast<size_t>(w);
+        if (w >= 0 && enters_contact_query(contact_.wheelset(ws).formulation(),
+                                           contact_.wheelset(ws).branches().any_two_point(), k)) {
+          perturbed[ws] = contact_.wheelset(ws).at(state.data() + layout.offset[b]);  // fetched above
+          views[ws].result = &perturbed[ws];
+        }
       }
       equations_.residual(layout, state.data(), yp, views, column.data());
-      for (int i = 0; i < n; ++i) jac(i, j) = (column[static_cast<size_t>(i)] - r[i]) / step;
-      if (w >= 0) views[ws].result = &base[ws];
-      state[static_cast<size_t>(j)] = y[j];
+      ++counters_.jacobian_residual_evals;
+      for (size_t b : group) {
+        if (k >= layout.size[b]) continue;
+        const int j = layout.offset[b] + k;
+        for (size_t a : groups_.neighbourhood[b])
+          for (int i = layout.offset[a]; i < layout.offset[a] + layout.size[a]; ++i)
+            jac(i, j) = (column[static_cast<size_t>(i)] - r[i]) / steps[b];
+        const int w = equations_.wheelset_of_body(b);
+        if (w >= 0) views[static_cast<size_t>(w)].result = &base[static_cast<size_t>(w)];
+        state[static_cast<size_t>(j)] = y[j];
+      }
     }
   }
   equations_.add_derivative_terms(layout, y, cj, jac);

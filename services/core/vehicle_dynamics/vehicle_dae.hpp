@@ -4,12 +4,14 @@
 /// A vehicle's equations with their contact, as IDA and the static equilibrium evaluate them: the
 /// residual F(t, y, y') with every wheelset's contact in one evaluation, and the iteration matrix
 /// dF/dy + cj dF/dy' by forward differences, the contact of every perturbed wheelset state in one
-/// evaluation too (or none, when the residual before it fetched them).
+/// evaluation too (or none, when the residual before it fetched them), the columns of bodies that
+/// share no residual row perturbed together (jacobian_column_groups.hpp).
 
 #include <vector>
 
 #include "core/dynamics/ida_integrator.hpp"
 #include "core/dynamics/run_counters.hpp"
+#include "core/vehicle_dynamics/jacobian_column_groups.hpp"
 #include "core/vehicle_dynamics/vehicle_contact.hpp"
 #include "core/vehicle_dynamics/vehicle_equations.hpp"
 
@@ -31,8 +33,8 @@ class VehicleDae {
   /// @throws what the contact and the equations throw.
   void residual(double t, const double* y, const double* yp, double* r, bool newton_matrix_expected = false);
 
-  /// The iteration matrix at (t, y, y') into jac, r = F(t, y, y'). Counts jacobian_evals and
-  /// jacobian_residual_evals.
+  /// The iteration matrix at (t, y, y') into jac (every entry written), r = F(t, y, y'). Counts
+  /// jacobian_evals and jacobian_residual_evals (one per group and unknown index).
   void jacobian(double t, double cj, const double* y, const double* yp, const double* r, DenseMatrixView jac);
 
   /// jacobian_evals and jacobian_residual_evals so far.
@@ -44,6 +46,7 @@ class VehicleDae {
                                                                           const double* y) const;
   VehicleEquations& equations_;
   VehicleContact& contact_;
+  JacobianColumnGroups groups_;
   RunCounters counters_;
 };
 

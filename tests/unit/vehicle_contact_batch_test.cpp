@@ -21,32 +21,20 @@
 #include <vector>
 
 #include "core/dynamics/contact_evaluator.hpp"
-#include "core/geometry/wheelset_geometry.hpp"
 #include "core/models/contact_model_factory.hpp"
-#include "core/profile/profile_factory.hpp"
 #include "core/vehicle/vehicle_file.hpp"
 #include "core/vehicle_dynamics/vehicle_simulation.hpp"
+#include "cone_on_circle.hpp"
 
 namespace wrc {
 namespace {
 
 constexpr double kR0 = 0.425;  // [m] the Cooperrider car's wheel radius (its axles' height)
 
-std::shared_ptr<const WheelsetGeometry> cone_on_circle() {
-  TrackParameters t;
-  t.gauge = 1.5;
-  t.gauge_depth = 0.0;
-  t.inclination = 0.0;
-  t.nominal_radius = kR0;
-  static const auto g = std::make_shared<const WheelsetGeometry>(make_profile("conic:0.05", ProfileSide::kWheel),
-                                                                 make_profile("circle:0.1", ProfileSide::kRail), t);
-  return g;
-}
-
 // The in-process one-point model, noting each batch's size.
 class NotingContact final : public ContactEvaluator {
  public:
-  NotingContact() : in_process_(std::make_shared<InProcessContact>(make_contact_model("onepoint", cone_on_circle()))) {}
+  NotingContact() : in_process_(std::make_shared<InProcessContact>(make_contact_model("onepoint", test::cone_on_circle("0.05", kR0)))) {}
   std::string model() const override { return in_process_->model(); }
   std::vector<ContactResult> evaluate(const std::vector<ContactQuery>& batch) override {
     batch_sizes.push_back(batch.size());

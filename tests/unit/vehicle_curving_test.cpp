@@ -28,6 +28,7 @@
 #include "core/vehicle/bogie_steady_curving.hpp"
 #include "core/vehicle/vehicle_file.hpp"
 #include "core/vehicle_dynamics/vehicle_simulation.hpp"
+#include "cone_on_circle.hpp"
 
 namespace wrc {
 namespace {
@@ -39,13 +40,7 @@ constexpr double kFriction = 10.0;
 constexpr size_t kFrame = 0, kLeading = 1, kTrailing = 2;
 
 std::shared_ptr<const WheelsetGeometry> cone_on_circle() {
-  TrackParameters t;
-  t.gauge = 1.5;
-  t.gauge_depth = 0.0;
-  t.inclination = 0.0;
-  t.nominal_radius = kR0;
-  static const auto g = std::make_shared<const WheelsetGeometry>(make_profile("conic:0.05", ProfileSide::kWheel),
-                                                                 make_profile("circle:0.1", ProfileSide::kRail), t);
+  static const auto g = test::cone_on_circle("0.05", kR0);
   return g;
 }
 

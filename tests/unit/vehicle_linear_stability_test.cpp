@@ -14,10 +14,9 @@
 #include <vector>
 
 #include "core/dynamics/single_wheelset_vehicle.hpp"
-#include "core/geometry/wheelset_geometry.hpp"
 #include "core/models/contact_model_factory.hpp"
-#include "core/profile/profile_factory.hpp"
 #include "core/vehicle/vehicle_file.hpp"
+#include "cone_on_circle.hpp"
 #include "expect_invalid.hpp"
 
 namespace wrc {
@@ -25,14 +24,7 @@ namespace {
 
 // A cone of conicity 0.05 on a 0.1 m circular rail head, gauge 1.5 m, with radius r0 [m].
 std::shared_ptr<ContactEvaluator> cone_contact(const std::string& model, double r0) {
-  TrackParameters t;
-  t.gauge = 1.5;
-  t.gauge_depth = 0.0;
-  t.inclination = 0.0;
-  t.nominal_radius = r0;
-  const auto g = std::make_shared<const WheelsetGeometry>(make_profile("conic:0.05", ProfileSide::kWheel),
-                                                          make_profile("circle:0.1", ProfileSide::kRail), t);
-  return std::make_shared<InProcessContact>(make_contact_model(model, g));
+  return std::make_shared<InProcessContact>(make_contact_model(model, test::cone_on_circle("0.05", r0)));
 }
 
 VehicleDescription shipped(const std::string& name) {
@@ -118,14 +110,7 @@ TEST(VehicleLinearStability, TheBogieGrowsAtTheRateOfItsLeastDampedMode) {
   VehicleRunSpec spec;
   spec.vehicle = shipped("cooperrider-bogie");
   spec.run.wheelset.material.friction = 10.0;
-  TrackParameters t;
-  t.gauge = 1.5;
-  t.gauge_depth = 0.0;
-  t.inclination = 0.0;
-  t.nominal_radius = kR0;
-  const auto geometry = std::make_shared<const WheelsetGeometry>(make_profile("conic:0.2", ProfileSide::kWheel),
-                                                                 make_profile("circle:0.1", ProfileSide::kRail), t);
-  const auto contact = std::make_shared<InProcessContact>(make_contact_model("onepoint", geometry));
+  const auto contact = std::make_shared<InProcessContact>(make_contact_model("onepoint", test::cone_on_circle("0.2", kR0)));
   VehicleLinearStability stability(spec, contact, kR0);
   std::vector<LinearisedVehicle> scan;
   for (double v : stability_speeds(70.0, 100.0, 10.0)) scan.push_back(stability.linearise(v));

@@ -111,8 +111,10 @@ nlohmann::json run_quantities_json(const run_summary_t& s, double friction) {
   return j;
 }
 
-// A vehicle run's vehicle and each of its wheelsets' final state and run quantities, in the order
-// of the vehicle file (the summary's final_state and run_quantities are its first wheelset's).
+// A vehicle run's vehicle, each of its wheelsets' final state and run quantities, and each car
+// body's and frame's largest accelerations (gravity not included, in its track frame), in the
+// order of the vehicle file (the summary's final_state and run_quantities are its first
+// wheelset's).
 nlohmann::json vehicle_json(const run_summary_t& s, const VehicleDescription& vehicle, double friction) {
   nlohmann::json wheelsets = nlohmann::json::array();
   for (const wheelset_summary_t& w : s.wheelsets) {
@@ -131,10 +133,18 @@ nlohmann::json vehicle_json(const run_summary_t& s, const VehicleDescription& ve
                          {"final_state", final_state_json(w)},
                          {"run_quantities", run_quantities_json(one, friction)}});
   }
+  // Each car body's and frame's largest accelerations.
+  nlohmann::json accelerations = nlohmann::json::array();
+  for (const body_summary_t& b : s.bodies)
+    accelerations.push_back({{"name", b.name},
+                             {"lateral", maximum_json(b.max_lateral_acceleration)},
+                             {"vertical", maximum_json(b.max_vertical_acceleration)}});
   return {{"name", vehicle.name},
           {"bodies", vehicle.bodies.size()},
           {"elements", vehicle.elements.size()},
-          {"wheelsets", wheelsets}};
+          {"wheelsets", wheelsets},
+          {"accelerations", accelerations},
+          {"units", {{"accelerations", "m/s^2"}, {"t", "s"}, {"distance", "m"}}}};
 }
 
 // One column of the history CSV: its name, unit and value in a state message.

@@ -132,6 +132,7 @@ struct CurveOutcome {
   VehicleSnapshot first_sample, last_sample;
   BogieCurvingResult theory;
   double wheel_load = 0;  // [N] static
+  BodyAccelerationMaxima frame_maxima, wheelset_maxima;
 };
 
 CurveOutcome run_curve(double radius, const std::string& model) {
@@ -146,6 +147,8 @@ CurveOutcome run_curve(double radius, const std::string& model) {
   o.run_end = displacements(run.snapshot());
   o.steady = displacements(run.steady_state(run.time()));
   o.wheel_load = run.wheel_loads()[0];
+  o.frame_maxima = run.acceleration_maxima(kFrame);
+  o.wheelset_maxima = run.acceleration_maxima(kLeading);
   o.theory = theory(radius, o.wheel_load);
   o.linear = displacements(o.theory);
   o.y_scale = std::max(std::abs(o.linear[2]), std::abs(o.linear[4]));
@@ -208,7 +211,8 @@ TEST(VehicleCurving, ARightCurveMirrorsALeftOne) {
 //    springs and m a_y); within 3 % of the larger, the displacements' tolerance (the forces follow
 //    from the angles of attack and offsets the tolerance holds);
 //  - the frame's absolute lateral acceleration is the curve's centripetal V^2 / R (to 1e-3: its
-//    offset y_f changes the radius by 2 mm of 3000 m), its vertical 0.
+//    offset y_f changes the radius by 2 mm of 3000 m), its vertical 0; the run's maxima of them
+//    (the summary's) are at least that, in the curve.
 TEST(VehicleCurving, TheWheelsForcesBalanceTheBogie) {
   const double radius = 3000.0;
   const CurveOutcome o = run_curve(radius, "onepoint");
@@ -239,6 +243,16 @@ TEST(VehicleCurving, TheWheelsForcesBalanceTheBogie) {
   const std::array<double, 2>& frame = o.last_sample.accelerations[kFrame];
   EXPECT_NEAR(frame[0], kSpeed * kSpeed / radius, 1e-3 * kSpeed * kSpeed / radius);
   EXPECT_NEAR(frame[1], 0.0, 1e-4);
+  // The run's largest lateral acceleration of the frame (its summary's): at least the settled
+  // V^2 / R, reached in the curve (the transition ends at 50 m; the frame at x = 0 of the bogie);
+  // its vertical one stays small; a wheelset's are not kept.
+  const RunMaximum& lateral = o.frame_maxima.lateral;
+  EXPECT_GE(lateral.value, (1.0 - 1e-3) * kSpeed * kSpeed / radius);
+  EXPECT_LE(lateral.value, 1.2 * kSpeed * kSpeed / radius);
+  EXPECT_GE(lateral.distance, 50.0);
+  EXPECT_NEAR(lateral.distance, kSpeed * lateral.t, 1e-9);
+  EXPECT_LT(o.frame_maxima.vertical.value, 1e-3);
+  EXPECT_EQ(o.wheelset_maxima.lateral.value, 0.0);
 }
 
 }  // namespace

@@ -162,6 +162,7 @@ void visit_strings(wrc::run_summary_t& m, const StringVisitor& f) {
   visit_all("swap_models[]", m.swap_models, kMaxNameBytes, f);
   visit_all("query_instances[]", m.query_instances, kMaxIdBytes, f);
   for (wrc::wheelset_summary_t& w : m.wheelsets) f("wheelsets[].name", w.name, kMaxIdBytes, kId);
+  for (wrc::body_summary_t& b : m.bodies) f("bodies[].name", b.name, kMaxIdBytes, kId);
 }
 
 void visit_strings(wrc::spline_model_t& m, const StringVisitor& f) {

@@ -66,6 +66,7 @@ VehicleSimulation::VehicleSimulation(VehicleRunSpec spec, std::shared_ptr<Contac
   const IntegratorSettings& s = spec_.run.integrator;
   for (size_t w = 0; w < equations_.wheelset_count(); ++w)
     samplers_.emplace_back(s.output_period, s.t_end, spec_.run.wheelset.speed);
+  acceleration_maxima_.resize(spec_.vehicle.bodies.size());
 }
 
 VehicleSimulation::~VehicleSimulation() = default;
@@ -83,6 +84,7 @@ void VehicleSimulation::start() {
   started_ = true;
   t_ = 0.0;
   for (OutputSampler& sampler : samplers_) sampler.restart();
+  acceleration_maxima_.assign(spec_.vehicle.bodies.size(), BodyAccelerationMaxima{});
   record_step_contact(true);
   emit_outputs_until(0.0);
 }
@@ -221,8 +223,14 @@ void VehicleSimulation::emit_outputs_until(double t) {
         });
   }
   for (auto& [t_out, y] : states) {
-    if (!on_output_) break;
     VehicleSnapshot s = snapshot_of(t_out, y);
+    for (size_t b = 0; b < s.accelerations.size(); ++b) {
+      if (equations_.wheelset_of_body(b) >= 0) continue;
+      const double distance = spec_.run.wheelset.speed * t_out + spec_.vehicle.bodies[b].position[0];
+      acceleration_maxima_[b].lateral.observe(std::abs(s.accelerations[b][0]), t_out, distance);
+      acceleration_maxima_[b].vertical.observe(std::abs(s.accelerations[b][1]), t_out, distance);
+    }
+    if (!on_output_) continue;
     s.wheels = std::move(wheels[t_out]);
     on_output_(s);
   }

@@ -60,6 +60,15 @@ struct VehicleSnapshot {
   std::vector<std::array<double, 2>> accelerations;
 };
 
+/// The largest absolute accelerations of a car body or a frame over a run, along y and z of its
+/// track frame, gravity not included [m/s^2], over the output samples, with the time and the
+/// body's distance along the track where they occurred (what ride comfort and the running
+/// behaviour are judged from).
+struct BodyAccelerationMaxima {
+  RunMaximum lateral;
+  RunMaximum vertical;
+};
+
 class VehicleSimulation : public Simulation, private DaeSystem {
  public:
   /// @param nominal_radius r0 of the wheel profile [m]
@@ -111,6 +120,9 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   /// The largest |Y/Q|, |sum Y|, T gamma and p_max of wheelset w so far, over every accepted step
   /// and output sample (its distance: V t), as the lone wheelset's run takes them.
   const RunExtremes& extremes(size_t w) const { return samplers_[w].extremes(); }
+  /// Body b's largest accelerations so far (b in the order of the vehicle's bodies; a wheelset's
+  /// stay 0).
+  const BodyAccelerationMaxima& acceleration_maxima(size_t b) const { return acceleration_maxima_[b]; }
   /// Wheelset w's wheels at the last accepted step.
   const std::array<WheelOutput, 2>& last_step_wheels(size_t w) const { return samplers_[w].last_step().wheels; }
   /// The formulation of the model's contact (every wheelset's).
@@ -137,6 +149,7 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   IdaIntegrator integrator_;
   std::function<void(const VehicleSnapshot&)> on_output_;
   std::vector<OutputSampler> samplers_;  // one per wheelset
+  std::vector<BodyAccelerationMaxima> acceleration_maxima_;  // one per body
   bool started_ = false;
   double t_ = 0;
   RunState state_ = RunState::kRunning;

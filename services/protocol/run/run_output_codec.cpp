@@ -214,6 +214,15 @@ run_summary_t to_summary_message(VehicleSimulation& sim, const std::string& run_
   if (m.message.empty()) m.message = unavailable;
   m.formulation = sim.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic";
   m.num_wheelsets = static_cast<std::int16_t>(m.wheelsets.size());
+  for (size_t b = 0; b < e.vehicle().bodies.size(); ++b) {
+    if (e.wheelset_of_body(b) >= 0) continue;
+    body_summary_t body{};
+    body.name = e.vehicle().bodies[b].name;
+    body.max_lateral_acceleration = to_message(sim.acceleration_maxima(b).lateral);
+    body.max_vertical_acceleration = to_message(sim.acceleration_maxima(b).vertical);
+    m.bodies.push_back(body);
+  }
+  m.num_bodies = static_cast<std::int16_t>(m.bodies.size());
   if (!m.wheelsets.empty()) {  // the first wheelset in the lone wheelset's fields
     const wheelset_summary_t& f = m.wheelsets.front();
     m.y = f.y, m.z = f.z, m.roll = f.roll, m.yaw = f.yaw;

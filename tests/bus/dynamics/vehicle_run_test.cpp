@@ -91,6 +91,10 @@ TEST_F(VehicleRunTest, TheBogieOverTheBusIsTheInProcessRun) {
   // The first wheelset is the summary's final state; released off the centre line, it moved.
   EXPECT_EQ(bus["final_state"], wheelsets[0]["final_state"]);
   EXPECT_NE(wheelsets[0]["final_state"]["y"].get<double>(), wheelsets[1]["final_state"]["y"].get<double>());
+  // The frame's largest accelerations: it moves (a few mm at a few Hz: well above 1e-3 m/s^2).
+  ASSERT_EQ(bus["vehicle"]["accelerations"].size(), 1u);
+  EXPECT_EQ(bus["vehicle"]["accelerations"][0]["name"], "frame");
+  EXPECT_GT(bus["vehicle"]["accelerations"][0]["lateral"]["max"].get<double>(), 1e-3);
   // Over the bus as in-process: every final state and counter but the bus's own times and misses.
   EXPECT_EQ(local["vehicle"], bus["vehicle"]);
   for (const auto& [key, value] : local["counters"].items()) {

@@ -107,7 +107,9 @@ TEST(StringLimits, EveryStringOfEveryMessageIsBoundedAtDecoding) {
   summary.instance_queries = {924};
   summary.num_wheelsets = 1;
   summary.wheelsets.resize(1);
-  expect_every_string_bounded(summary, 10);
+  summary.num_bodies = 1;
+  summary.bodies.resize(1);
+  expect_every_string_bounded(summary, 11);
   wrc::spline_model_t model{};
   model.num_functions = 1;
   model.function_names = {"z"};

@@ -125,6 +125,26 @@ if [ "$ready" = 1 ]; then
       echo "$model: curve run failed:"; tail -3 "$report_dir/curve-$model.log"
     fi
   done
+  section "A vehicle on the curve: the Manchester coach (wrc run --vehicle; docs/vehicle.md)"
+  echo "parameters/vehicles/manchester-coach.json: a car body on two bogies of two wheelsets each, every"
+  echo "wheelset's contact from the spline service in one batch per evaluation; the same track and"
+  echo "irregularities, 30 m/s, 4 s = 120 m, into the transition (further on, the stiff bogies' leading"
+  echo "wheelsets run towards flange contact, outside the spline model's box: docs/vehicle.md). Per"
+  echo "wheelset, and the car body's largest accelerations:"
+  summary="$report_dir/coach.json"
+  if wrc run --model spline --vehicle parameters/vehicles/manchester-coach.json --t-end 4 \
+      --track parameters/track-curve-R600.json --irregularities "$report_dir/irregularities.csv" \
+      --summary "$summary" --history "$report_dir/coach.csv" --output-period 0.005 2>"$report_dir/coach.log"; then
+    printf '%-18s %9s %12s %9s %11s\n' wheelset y[mm] attack[mrad] Y/Q_max sumY[kN]
+    jq -r '.vehicle.wheelsets[] | .run_quantities as $q | [.name, .final_state.y * 1e3, .final_state.yaw * 1e3,
+        ([$q.y_over_q.left.max, $q.y_over_q.right.max] | max), $q.track_shift_force.max / 1e3] | @tsv' "$summary" |
+      awk -F'\t' '{ printf "%-18s %9.3f %12.3f %9.3f %11.1f\n", $1, $2, $3, $4, $5 }'
+    jq -r '.vehicle.accelerations[] | select(.name == "car_body") |
+        "car body: largest lateral acceleration \(.lateral.max * 1000 | round / 1000) m/s^2, vertical \(.vertical.max * 1000 | round / 1000) m/s^2"' "$summary"
+    jq -r '"wall time \(.wall_time * 100 | round / 100) s for \(.t_end) s simulated; \(.counters.contact_queries) contact batches of \(.counters.contact_configurations) configurations"' "$summary"
+  else
+    echo "coach run failed:"; tail -3 "$report_dir/coach.log"
+  fi
 else
   echo "the contact services did not report READY; launcher log:"; cat "$log"
 fi
@@ -179,6 +199,7 @@ if [ "${#curves[@]}" -gt 0 ]; then
   plot curve-forces run --forces "${curves[@]}"
 fi
 [ -s "$report_dir/irregularities.csv" ] && plot irregularities irregularities "$report_dir/irregularities.csv"
+[ -s "$report_dir/coach.csv" ] && plot coach-wheelsets wheelsets "$report_dir/coach.csv"
 plot geometry geometry --y-from -0.008 --y-to 0.008
 plot conicity conicity --a-to 0.008
 plot profiles profiles --y 0.005

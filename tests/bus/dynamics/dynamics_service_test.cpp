@@ -410,6 +410,42 @@ TEST_F(DynamicsServiceTest, LossyBusKillsNoServiceAndRunsEndTheSame) {
   launcher->wait(20.0);
 }
 
+// A live swap during a vehicle run (the Manchester coach, spline, over the bus, the demo's track) is
+// refused: the run keeps its model to the end, lists no swap, and its summary says why.
+TEST_F(DynamicsServiceTest, ALiveSwapOfAVehicleRunIsRefusedWithTheReason) {
+  const std::string log = temp_path("launch.log");
+  auto launcher = launch({"geometry", "contact-onepoint", "contact-spline", "dynamics"}, log);
+  for (const char* model : {"onepoint", "spline", "dynamicsd"})
+    ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
+  // On the demo's irregular track (4 s take seconds over the bus: time to swap).
+  int made = -1;
+  const std::string irregularities = temp_path("irregularities.csv");
+  const std::string made_out = run_command(std::string(WRC_CLI_PATH) +
+                                               " irregularities --spectrum erri-low --length 300 --wavelengths 3:70 "
+                                               "--seed 1 --out " + irregularities + " 2>&1",
+                                           &made);
+  ASSERT_EQ(made, 0) << made_out;
+  std::vector<std::string> args = run_args("spline", 4.0, temp_path("coach.json"));
+  args.insert(args.end(), {"--vehicle", std::string(WRC_SOURCE_DIR) + "/parameters/vehicles/manchester-coach.json",
+                           "--track", std::string(WRC_SOURCE_DIR) + "/parameters/track-curve-R600.json",
+                           "--irregularities", irregularities});
+  ChildProcess cli(WRC_CLI_PATH, args, temp_path("coach.log"));
+  ASSERT_TRUE(wait_running_past(run_id(temp_path("coach.json")), 0.2, 120.0)) << read_text(temp_path("coach.log"));
+  int status = -1;
+  const std::string out = run_command(std::string(WRC_CLI_PATH) + " swap onepoint 2>&1", &status);
+  ASSERT_EQ(status, 0) << out;
+  ASSERT_TRUE(handle_until([&] { return cli.wait(0.0); }, kRunDeadline)) << read_text(temp_path("coach.log"));
+  const nlohmann::json coach = summary(args);
+  ASSERT_EQ(coach["state"], "finished") << coach.dump();
+  EXPECT_EQ(coach["model"], "spline");
+  EXPECT_TRUE(coach["swaps"].empty()) << coach["swaps"];
+  EXPECT_NE(coach["message"].get<std::string>().find("swap to onepoint refused, keeping spline: a vehicle run takes no "
+                                                       "model swap yet"),
+            std::string::npos)
+      << coach["message"];
+  EXPECT_EQ(coach["vehicle"]["wheelsets"].size(), 4u);
+}
+
 // A swap to a model whose service is not on the bus is refused: the run keeps its model and its
 // summary says why (also after another sender's selection numbered INT64_MAX).
 TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {

@@ -90,10 +90,14 @@ a_rejoined=$(status_of a 8)
 b_rejoined=$(status_of b 8)
 on h3 "$cli" run --model onepoint --t-end 0.2 --summary "$work/after.json" --build-dir "$build" \
   >"$work/after.log" 2>&1 || { echo "link cut: the run after the cut failed:"; tail -5 "$work/after.log"; exit 1; }
-status
-a_after=$(status_of a 8)
-b_after=$(status_of b 8)
-if ! [ "$a_after" -gt "$a_rejoined" ] || ! [ "$b_after" -gt "$b_rejoined" ]; then
+# The counts come with each instance's next heartbeats, and a 0.5 s status may miss one instance's:
+# polled until both are read and have grown, or 20 polls.
+answered_after() {
+  a_after=$(status_of a 8)
+  b_after=$(status_of b 8)
+  [ -n "$a_after" ] && [ -n "$b_after" ] && [ "$a_after" -gt "$a_rejoined" ] && [ "$b_after" -gt "$b_rejoined" ]
+}
+if ! until_status answered_after 20; then
   echo "link cut: after the rejoin a answered $((a_after - a_rejoined)) and b $((b_after - b_rejoined)) queries" \
     "of one run (both should)"
   cat "$work/status.csv"

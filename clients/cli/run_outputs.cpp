@@ -80,9 +80,11 @@ nlohmann::json per_wheel_json(const run_maximum_t (&m)[2]) {
   return {{"left", maximum_json(m[0])}, {"right", maximum_json(m[1])}};
 }
 
-// The maxima of what engineers read off the run, where they occurred and their limits
-// (docs/run-quantities.md), with the unit of every key.
-nlohmann::json run_quantities_json(const run_summary_t& s, double friction) {
+// The maxima of what engineers read off a wheelset's run (wheelset: run_summary_t's or
+// wheelset_summary_t's fields), where they occurred and their limits (docs/run-quantities.md;
+// Nadal's from the run, the same for every wheelset), with the unit of every key.
+template <class Wheelset>
+nlohmann::json run_quantities_json(const Wheelset& s, const run_summary_t& run, double friction) {
   nlohmann::json j;
   j["units"] = {{"t", "s"},
                 {"distance", "m"},
@@ -99,8 +101,8 @@ nlohmann::json run_quantities_json(const run_summary_t& s, double friction) {
                 {"max_pressure", "Pa"}};
   j["y_over_q"] = per_wheel_json(s.max_y_over_q);
   j["y_over_q_2m"] = per_wheel_json(s.max_y_over_q_2m);
-  j["nadal_limit"] = s.nadal_limit;
-  j["flange_angle"] = s.flange_angle;
+  j["nadal_limit"] = run.nadal_limit;
+  j["flange_angle"] = run.flange_angle;
   j["friction"] = friction;
   j["track_shift_force"] = maximum_json(s.max_track_shift_force);
   j["track_shift_force_2m"] = maximum_json(s.max_track_shift_force_2m);
@@ -117,22 +119,10 @@ nlohmann::json run_quantities_json(const run_summary_t& s, double friction) {
 // wheelset's).
 nlohmann::json vehicle_json(const run_summary_t& s, const VehicleDescription& vehicle, double friction) {
   nlohmann::json wheelsets = nlohmann::json::array();
-  for (const wheelset_summary_t& w : s.wheelsets) {
-    run_summary_t one{};  // the wheelset's fields where the lone wheelset's run has them
-    one.max_y_over_q[0] = w.max_y_over_q[0], one.max_y_over_q[1] = w.max_y_over_q[1];
-    one.max_y_over_q_2m[0] = w.max_y_over_q_2m[0], one.max_y_over_q_2m[1] = w.max_y_over_q_2m[1];
-    one.max_wear_number[0] = w.max_wear_number[0], one.max_wear_number[1] = w.max_wear_number[1];
-    one.max_pressure[0] = w.max_pressure[0], one.max_pressure[1] = w.max_pressure[1];
-    one.max_track_shift_force = w.max_track_shift_force;
-    one.max_track_shift_force_2m = w.max_track_shift_force_2m;
-    one.nadal_limit = s.nadal_limit;
-    one.flange_angle = s.flange_angle;
-    one.axle_load = w.axle_load;
-    one.prudhomme_limit = w.prudhomme_limit;
+  for (const wheelset_summary_t& w : s.wheelsets)
     wheelsets.push_back({{"name", w.name},
                          {"final_state", final_state_json(w)},
-                         {"run_quantities", run_quantities_json(one, friction)}});
-  }
+                         {"run_quantities", run_quantities_json(w, s, friction)}});
   // Each car body's and frame's largest accelerations.
   nlohmann::json accelerations = nlohmann::json::array();
   for (const body_summary_t& b : s.bodies)
@@ -222,7 +212,7 @@ nlohmann::json summary_json(const run_summary_t& s, const protocol::RunRequest& 
     instances[s.query_instances[k]] = s.instance_queries[k];
   j["query_instances"] = instances;
   j["parameters"] = table_json(run_parameter_table(), request.spec);
-  j["run_quantities"] = run_quantities_json(s, request.spec.wheelset.material.friction);
+  j["run_quantities"] = run_quantities_json(s, s, request.spec.wheelset.material.friction);
   j["track_layout"] = layout_json(request.spec.track, request.spec.wheelset.speed, request.spec.wheelset.gravity,
                                   s.t_end);
   j["irregularities"] = irregularity_json(request.spec.irregularity);

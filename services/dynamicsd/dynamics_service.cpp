@@ -24,16 +24,6 @@ namespace {
 
 constexpr double kStatusPeriod = 0.5;  // [s] wall time between RUN_STATUS / INTEGRATOR_STATS
 
-std::int8_t status_code(RunState s) {
-  switch (s) {
-    case RunState::kRunning: return run_status_t::RUNNING;
-    case RunState::kFinished: return run_status_t::FINISHED;
-    case RunState::kFailed: return run_status_t::FAILED;
-    case RunState::kStopped: return run_status_t::STOPPED;
-  }
-  return run_status_t::FAILED;
-}
-
 }  // namespace
 
 DynamicsService::DynamicsService(lcm::LCM& lcm, const std::string& lcm_url, const bus::ChannelNames& names,
@@ -269,7 +259,7 @@ void DynamicsService::publish_status(bool force) {
   run_status_t status{};
   status.request_id = request_id_;
   status.run_id = request_.run_id;
-  status.state = status_code(simulation_->state());
+  status.state = protocol::run_state_code(simulation_->state());
   status.t = simulation_->time();
   status.t_end = request_.spec.integrator.t_end;
   status.model = simulation_->model();
@@ -301,7 +291,7 @@ void DynamicsService::publish_progress(double wall) {
   std::ostringstream message;
   message << std::setprecision(4) << "t = " << t << " of " << t_end << " s, " << c.steps << " steps, " << c.restarts
           << " restarts";
-  if (!running()) message << "; " << protocol::run_state_name(status_code(simulation_->state()));
+  if (!running()) message << "; " << protocol::run_state_name(protocol::run_state_code(simulation_->state()));
   p.message = message.str();
   publish(bus::channel::kProgress, p);
 }
@@ -315,7 +305,7 @@ std::string DynamicsService::activity() const {
     out << "run " << request_.run_id << ": " << simulation_->model() << ", t = " << simulation_->time() << " of "
         << request_.spec.integrator.t_end << " s, " << c.steps << " steps, " << c.restarts << " restarts";
   } else {
-    out << "idle; last run " << request_.run_id << " " << protocol::run_state_name(status_code(simulation_->state())) << " at t = "
+    out << "idle; last run " << request_.run_id << " " << protocol::run_state_name(protocol::run_state_code(simulation_->state())) << " at t = "
         << simulation_->time() << " s after " << wall_time_ << " s";
   }
   return out.str();

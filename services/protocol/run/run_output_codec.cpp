@@ -64,12 +64,7 @@ void copy_run(const Simulation& sim, const std::string& run_id, std::int64_t req
               run_summary_t& m) {
   m.request_id = request_id;
   m.run_id = run_id;
-  switch (sim.state()) {
-    case RunState::kFinished: m.state = run_status_t::FINISHED; break;
-    case RunState::kStopped: m.state = run_status_t::STOPPED; break;
-    case RunState::kFailed: m.state = run_status_t::FAILED; break;
-    case RunState::kRunning: m.state = run_status_t::RUNNING; break;
-  }
+  m.state = run_state_code(sim.state());
   m.message = sim.message();
   m.model = sim.model();
   m.t_end = sim.time();
@@ -126,6 +121,16 @@ const std::vector<MessageField<integrator_stats_t>>& stats_fields() {
 }
 
 }  // namespace
+
+std::int8_t run_state_code(RunState state) {
+  switch (state) {
+    case RunState::kRunning: return run_status_t::RUNNING;
+    case RunState::kFinished: return run_status_t::FINISHED;
+    case RunState::kFailed: return run_status_t::FAILED;
+    case RunState::kStopped: return run_status_t::STOPPED;
+  }
+  return run_status_t::FAILED;
+}
 
 wheelset_state_t to_state_message(const WheelsetSnapshot& s, const std::string& run_id, const WheelsetParameters& w,
                                   int wheelset, double ahead) {
@@ -195,16 +200,17 @@ run_summary_t to_summary_message(VehicleSimulation& sim, const std::string& run_
   try {
     const VehicleSnapshot now = sim.snapshot();
     for (size_t w = 0; w < e.wheelset_count(); ++w) {
+      WheelsetSnapshot final_state = sim.wheelset_snapshot(now, w);
+      final_state.wheels = sim.last_step_wheels(w);  // the snapshot has no wheels: the last accepted step's
       wheelset_summary_t ws{};
       ws.name = e.vehicle().bodies[e.wheelset_body(w)].name;
-      copy_motion(sim.wheelset_snapshot(now, w), ws);
-      // The final normal forces from the last accepted step (the snapshot has no wheels).
-      for (std::size_t i = 0; i < 2; ++i) {
-        ws.normal_force[i] = sim.last_step_wheels(w)[i].normal_force;
-        ws.s_wheel[i] = sim.last_step_wheels(w)[i].s_wheel;
-      }
+      copy_motion(final_state, ws);
       copy_extremes(sim.extremes(w), sim.wheelset_parameters(w), ws);
       m.wheelsets.push_back(ws);
+      if (w == 0) {  // the first wheelset also in the lone wheelset's fields
+        copy_motion(final_state, m);
+        copy_extremes(sim.extremes(0), sim.wheelset_parameters(0), m);
+      }
     }
   } catch (const std::exception& ex) {
     unavailable = std::string("final state unavailable: ") + ex.what();
@@ -223,16 +229,6 @@ run_summary_t to_summary_message(VehicleSimulation& sim, const std::string& run_
     m.bodies.push_back(body);
   }
   m.num_bodies = static_cast<std::int16_t>(m.bodies.size());
-  if (!m.wheelsets.empty()) {  // the first wheelset in the lone wheelset's fields
-    const wheelset_summary_t& f = m.wheelsets.front();
-    m.y = f.y, m.z = f.z, m.roll = f.roll, m.yaw = f.yaw;
-    m.y_dot = f.y_dot, m.z_dot = f.z_dot, m.roll_dot = f.roll_dot, m.yaw_dot = f.yaw_dot, m.spin_rate = f.spin_rate;
-    for (std::size_t i = 0; i < 2; ++i) {
-      m.normal_force[i] = f.normal_force[i];
-      m.s_wheel[i] = f.s_wheel[i];
-    }
-    copy_extremes(sim.extremes(0), sim.wheelset_parameters(0), m);
-  }
   return m;
 }
 

@@ -15,6 +15,9 @@
 
 namespace wrc::protocol {
 
+/// The run_status_t state code of a run's state (RUNNING, FINISHED, FAILED, STOPPED).
+std::int8_t run_state_code(RunState state);
+
 /// The state message of a snapshot of a run of wheelset w (x = V t + ahead [m], its place ahead of
 /// a vehicle's reference point; Nadal's and Prud'homme's limits from its flange angle, friction and
 /// load); wheelset: its index in a vehicle run.

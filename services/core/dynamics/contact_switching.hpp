@@ -29,6 +29,10 @@ struct SwitchRecord {
 /// second point's normal force L, R.
 constexpr int kEventFunctionCount = 6;
 
+/// The direction IDA watches each event function in (IdaSegment::root_direction): a switch
+/// function or a normal force falling through 0; a second point's normal force both ways.
+inline constexpr std::array<int, kEventFunctionCount> kEventDirections{-1, -1, -1, -1, 0, 0};
+
 /// [m] how far a followed point may lie above the lowest minimum at an accepted step (root finding
 /// stops within ~1e-15 m of the crossing); more is a switch the root finding did not see.
 constexpr double kBranchTolerance = 1e-9;

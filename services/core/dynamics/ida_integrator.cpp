@@ -105,7 +105,7 @@ void IdaIntegrator::Impl::set_up(const IdaSegment& s) {
   if (!s.index2) return;
   check_sundials(IDASetSuppressAlg(mem, SUNTRUE), "IDASetSuppressAlg");
   check_sundials(IDASetMaxNonlinIters(mem, s.max_newton_iterations), "IDASetMaxNonlinIters");
-  if (s.root_direction.empty()) return;  // no event functions (a vehicle's run so far)
+  if (s.root_direction.empty()) return;  // no event functions (elastic contact)
   std::vector<int> direction = s.root_direction;
   check_sundials(IDARootInit(mem, static_cast<int>(direction.size()), ida_roots), "IDARootInit");
   check_sundials(IDASetRootDirection(mem, direction.data()), "IDASetRootDirection");

@@ -1,13 +1,22 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/dynamics/wheelset_equations.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "core/model_interface/query_validation.hpp"
 #include "core/models/wheel_constraint.hpp"
 
 namespace wrc {
+namespace {
+
+// A trial normal load [N] of a Newton iterate as the contact query takes it: within [0,
+// kMaxNormalLoad].
+double trial_normal_load(double load) { return std::clamp(load, 0.0, kMaxNormalLoad); }
+
+}  // namespace
 
 WheelsetEquations::WheelsetEquations(WheelsetParameters parameters, double z_reference, double nominal_radius)
     : parameters_(parameters),
@@ -50,13 +59,14 @@ ContactQuery WheelsetEquations::query(ContactFormulation f, const double* y, con
   q.speed = v * (1.0 - track_.curvature * y[kUnknownY]);
   q.formulation = f;
   if (f == ContactFormulation::kRigid) {
-    // A negative trial value inside a Newton iteration loads the wheel with nothing.
-    q.normal_load = {std::max(0.0, y[kUnknownNormalLeft] * force_scale_),
-                     std::max(0.0, y[kUnknownNormalRight] * force_scale_)};
+    // A negative trial value inside a Newton iteration loads the wheel with nothing, one beyond
+    // the query's limit (a diverging iterate) with the limit.
+    q.normal_load = {trial_normal_load(y[kUnknownNormalLeft] * force_scale_),
+                     trial_normal_load(y[kUnknownNormalRight] * force_scale_)};
     for (int i = 0; i < 2; ++i) {
       if (!branches.two_point(i)) continue;
       q.second_tracked_s_wheel[static_cast<size_t>(i)] = branches.second_s[static_cast<size_t>(i)];
-      q.second_normal_load[static_cast<size_t>(i)] = std::max(0.0, y[kUnknownSecondNormalLeft + i] * force_scale_);
+      q.second_normal_load[static_cast<size_t>(i)] = trial_normal_load(y[kUnknownSecondNormalLeft + i] * force_scale_);
     }
   }
   q.material = parameters_.material;

@@ -42,9 +42,7 @@ IdaSegment segment_settings(const IntegratorSettings& s, ContactFormulation f, l
   const bool rigid = f == ContactFormulation::kRigid;
   IdaSegment segment = segment_settings_without_unknowns(s, rigid);
   append_wheelset_unknowns(segment, s, static_cast<int>(n));
-  // Events where a switch function or a normal force falls through 0; a second point's normal
-  // force both ways.
-  if (rigid) segment.root_direction = {-1, -1, -1, -1, 0, 0};
+  if (rigid) segment.root_direction.assign(kEventDirections.begin(), kEventDirections.end());
   return segment;
 }
 

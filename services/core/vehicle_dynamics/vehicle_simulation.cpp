@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/vehicle_dynamics/vehicle_simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -12,9 +13,14 @@
 #include "core/model_interface/contact_model.hpp"
 #include "core/numerics/number_text.hpp"
 #include "core/vehicle_dynamics/vehicle_equilibrium.hpp"
+#include "core/vehicle_dynamics/vehicle_restart.hpp"
 
 namespace wrc {
 namespace {
+
+// Corrector failures in a row after which a rigid run fails instead of restarting, as the lone
+// wheelset's (wheelset_simulation.cpp).
+constexpr int kMaxConvergenceRestartsInARow = 3;
 
 const VehicleRunSpec& checked(const VehicleRunSpec& spec) {
   validate(spec.vehicle);
@@ -28,14 +34,15 @@ const VehicleRunSpec& checked(const VehicleRunSpec& spec) {
 }
 
 // The segment settings of the layout: every car body's and frame's displacements and rates
-// differential with the position and velocity tolerances, each wheelset's unknowns as the lone
-// wheelset's.
+// differential with the position and velocity tolerances, each wheelset's unknowns and (rigid)
+// event functions as the lone wheelset's.
 IdaSegment vehicle_segment(const IntegratorSettings& s, const VehicleEquations& e, const VehicleLayout& layout,
                            bool rigid) {
   IdaSegment segment = segment_settings_without_unknowns(s, rigid);
   for (size_t b = 0; b < e.vehicle().bodies.size(); ++b) {
     if (e.wheelset_of_body(b) >= 0) {
       append_wheelset_unknowns(segment, s, layout.size[b]);
+      if (rigid) segment.root_direction.insert(segment.root_direction.end(), kEventDirections.begin(), kEventDirections.end());
       continue;
     }
     for (size_t k = 0; k < kBodyCoordinates; ++k) append_unknown(segment, s.position_tolerance, true);
@@ -112,7 +119,127 @@ int VehicleSimulation::jacobian(double t, double cj, const double* y, const doub
   return ida_callback_status(last_error_, [&] { dae_.jacobian(t, cj, y, yp, r, jac); });
 }
 
-int VehicleSimulation::roots(double, const double*, double*) { return 0; }
+int VehicleSimulation::roots(double t, const double* y, double* g) {
+  return ida_callback_status(last_error_, [&] {
+    equations_.place(t);
+    const VehicleLayout layout = dae_.layout();
+    const std::vector<WheelsetContactView> views = contact_.at(layout, y);
+    for (size_t w = 0; w < views.size(); ++w)
+      event_functions(*views[w].result, y + layout.offset[equations_.wheelset_body(w)], *views[w].branches,
+                      g + kEventFunctionCount * w);
+  });
+}
+
+InitialisationContext VehicleSimulation::initialisation(size_t w) {
+  WheelsetContact& c = contact_.wheelset(w);
+  InitialisationContext context{equations_.wheelset(w), c.formulation(), c.branches(),
+                                [&c](const double* y) -> const ContactResult& { return c.at(y); },
+                                [&c](const std::vector<ContactQuery>& batch) { return c.evaluate(batch); },
+                                {}};
+  if (!spec_.run.irregularity.empty()) {
+    context.contact_later = [this, w, &c](const double* y, double dt) {
+      equations_.place(t_ + dt);
+      try {
+        ContactResult later = c.evaluate({equations_.wheelset(w).query(c.formulation(), y, c.branches())}).front();
+        equations_.place(t_);
+        return later;
+      } catch (...) {
+        equations_.place(t_);
+        throw;
+      }
+    };
+  }
+  return context;
+}
+
+SwitchingContext VehicleSimulation::switching(size_t w) {
+  return SwitchingContext{contact_.wheelset(w), [this, w] { return initialisation(w); },
+                          spec_.run.integrator.two_point_sliding, t_, switch_log_, own_};
+}
+
+void VehicleSimulation::name_switches(size_t first, size_t w) {
+  for (size_t i = first; i < switch_log_.size(); ++i) switch_wheelsets_.push_back(w);
+}
+
+void VehicleSimulation::restart(std::vector<std::vector<double>> blocks) {
+  equations_.place(t_);
+  for (size_t w = 0; w < equations_.wheelset_count(); ++w) {
+    const size_t first = switch_log_.size();
+    settle_on_lowest_branches(switching(w), blocks[equations_.wheelset_body(w)]);
+    name_switches(first, w);
+  }
+  std::vector<double> y = join_bodies(blocks);
+  const std::vector<double> yp =
+      vehicle_consistent_derivatives(dae_, t_, y, [this](size_t w) { return initialisation(w); });
+  accumulated_ += integrator_.counters();
+  ++own_.restarts;
+  integrator_.begin(t_, y, yp, vehicle_segment(spec_.run.integrator, equations_, dae_.layout(), true));
+  contact_.clear_cache();
+  record_step_contact(true);
+}
+
+void VehicleSimulation::handle_roots() {
+  const std::vector<int> info =
+      integrator_.root_info(kEventFunctionCount * static_cast<int>(equations_.wheelset_count()));
+  ++own_.root_returns;
+  equations_.place(t_);
+  std::vector<std::vector<double>> blocks = split_by_body(dae_.layout(), integrator_.state());
+  for (size_t w = 0; w < equations_.wheelset_count(); ++w) {
+    const std::vector<int> own(info.begin() + kEventFunctionCount * w, info.begin() + kEventFunctionCount * (w + 1));
+    if (std::none_of(own.begin(), own.end(), [](int flag) { return flag != 0; })) continue;
+    const int lifted = wheel_lifting_off(own, contact_.wheelset(w).branches());
+    if (lifted >= 0) {
+      fail("wheelset '" + spec_.vehicle.bodies[equations_.wheelset_body(w)].name + "': the " +
+           (lifted == 0 ? "left" : "right") + " wheel lifts off its rail at t = " + exact_number_text(t_) +
+           " s (its normal force falls to 0): the rigid formulation keeps both wheels on their rails; use an "
+           "elastic model (multipoint)");
+      return;
+    }
+    const size_t first = switch_log_.size();
+    switch_at_events(switching(w), own, blocks[equations_.wheelset_body(w)]);
+    name_switches(first, w);
+  }
+  restart(std::move(blocks));
+}
+
+void VehicleSimulation::restart_after_convergence_failure() {
+  // As the lone wheelset's run (wheelset_simulation.cpp): a wheel sliding in two-point contact
+  // between two nearly equally low minima whose corrector fails at every step size goes on in
+  // one-point contact on its more loaded point.
+  ++convergence_restarts_in_a_row_;
+  ++own_.convergence_restarts;
+  equations_.place(t_);
+  std::vector<std::vector<double>> blocks = split_by_body(dae_.layout(), integrator_.state());
+  for (size_t w = 0; w < equations_.wheelset_count(); ++w) {
+    const size_t first = switch_log_.size();
+    keep_more_loaded_points(switching(w), blocks[equations_.wheelset_body(w)]);
+    name_switches(first, w);
+  }
+  restart(std::move(blocks));
+}
+
+void VehicleSimulation::check_branches() {
+  // As the lone wheelset's run: follow the points of the accepted step, or take a switch the
+  // root finding did not see (without two-point sliding it is recorded, not corrected).
+  equations_.place(t_);
+  const VehicleLayout layout = dae_.layout();
+  const std::vector<WheelsetContactView> views = contact_.at(layout, integrator_.state_data());
+  std::vector<ContactResult> results;
+  for (const WheelsetContactView& v : views) results.push_back(*v.result);  // at() may move the cache
+  bool missed = false;
+  for (const ContactResult& c : results)
+    for (double excess : branch_excess(c)) {
+      own_.max_branch_excess = std::max(own_.max_branch_excess, excess);
+      missed = missed || excess > kBranchTolerance;
+    }
+  if (missed && spec_.run.integrator.two_point_sliding) {
+    ++own_.missed_switches;
+    ++own_.root_returns;
+    restart(split_by_body(layout, integrator_.state()));
+    return;
+  }
+  for (size_t w = 0; w < results.size(); ++w) contact_.wheelset(w).follow(results[w]);
+}
 
 void VehicleSimulation::message(const char* function, const char* text) {
   last_solver_message_ = std::string(function ? function : "IDA") + ": " + (text ? text : "");
@@ -127,7 +254,19 @@ bool VehicleSimulation::advance() {
     return false;
   }
   const double t_end = spec_.run.integrator.t_end;
+  last_error_.clear();
+  last_solver_message_.clear();
   const IdaStep step = integrator_.step(t_end);
+  const bool rigid = formulation() == ContactFormulation::kRigid;
+  try {
+    if (step.convergence_failure && rigid && convergence_restarts_in_a_row_ < kMaxConvergenceRestartsInARow) {
+      restart_after_convergence_failure();
+      return state_ == RunState::kRunning;
+    }
+  } catch (const std::exception& e) {
+    fail("at t = " + exact_number_text(t_) + " s: the restart after the corrector failed: " + e.what());
+    return false;
+  }
   if (step.flag < 0) {
     std::ostringstream msg;
     msg << "the integrator failed at t = " << integrator_.current_time() << " s (IDA flag " << step.flag << ")";
@@ -136,6 +275,10 @@ bool VehicleSimulation::advance() {
     fail(msg.str());
     return false;
   }
+  for (size_t w = 0; w < equations_.wheelset_count(); ++w)
+    for (int i = 0; i < 2; ++i)
+      if (contact_.wheelset(w).branches().two_point(i)) own_.two_point_time += step.t - t_;
+  if (step.t > t_) convergence_restarts_in_a_row_ = 0;
   t_ = step.t;
   try {
     record_step_contact(false);
@@ -144,12 +287,21 @@ bool VehicleSimulation::advance() {
     return false;
   }
   emit_outputs_until(t_);
-  const RunCounters c = integrator_.counters();
-  if (c.steps >= spec_.run.integrator.max_steps) {
+  try {
+    if (step.root)
+      handle_roots();
+    else if (rigid)
+      check_branches();
+  } catch (const std::exception& e) {
+    fail("at t = " + exact_number_text(t_) + " s: the contact-point switch: " + e.what());
+    return false;
+  }
+  if (state_ != RunState::kRunning) return false;
+  if (counters().steps >= spec_.run.integrator.max_steps) {
     fail("the run took max_steps = " + std::to_string(spec_.run.integrator.max_steps) + " steps before t_end");
     return false;
   }
-  if (t_ >= t_end) {
+  if (step.stop_time && t_ >= t_end) {
     state_ = RunState::kFinished;
     return false;
   }
@@ -263,9 +415,12 @@ WheelsetParameters VehicleSimulation::wheelset_parameters(size_t w) const {
 
 RunCounters VehicleSimulation::counters() const {
   const RunCounters now = integrator_.counters();
-  RunCounters c = now;
+  RunCounters c = accumulated_;
+  c += now;
+  c += own_;
   c += dae_.counters();
   c += contact_.counters();
+  for (size_t w = 0; w < contact_.size(); ++w) c += contact_.wheelset(w).counters();  // restarts' own queries
   c.add_evaluator(*contact_.evaluator());  // the bus's retries, timeouts and query times
   c.last_order = now.last_order;
   c.last_step = now.last_step;

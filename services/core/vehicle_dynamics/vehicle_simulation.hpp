@@ -6,11 +6,13 @@
 /// wheelset's contact from one contact evaluator in one batch per evaluation
 /// (vehicle_contact.hpp), output samples every output period.
 ///
+/// Rigid contact follows each wheel's point as the lone wheelset's run does (docs/vehicle.md,
+/// "Contact-point switches per wheelset"): every wheelset's event functions, its switches and
+/// two-point sliding (core/dynamics/contact_switching.hpp) at its events, and the vehicle restarted
+/// from consistent values (vehicle_restart.hpp).
+///
 /// What the lone wheelset's run has and this one does not have yet (docs/vehicle.md, "Running a
-/// vehicle"): the one-point contact's events and switches per wheelset (a rigid run follows each
-/// wheel's lowest point at every evaluation, so a jump of the contact point is a discontinuity the
-/// integrator steps through with smaller steps), two-point sliding, model swaps, the states sent
-/// ahead with the accepted step.
+/// vehicle"): model swaps, the states sent ahead with the accepted step.
 
 #include <array>
 #include <functional>
@@ -19,6 +21,7 @@
 #include <vector>
 
 #include "core/dynamics/contact_evaluator.hpp"
+#include "core/dynamics/contact_switching.hpp"
 #include "core/dynamics/ida_integrator.hpp"
 #include "core/dynamics/output_sampler.hpp"
 #include "core/dynamics/run_extremes.hpp"
@@ -114,7 +117,13 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   /// The state vector now and its layout (vehicle_equations.hpp).
   std::vector<double> state_vector() const;
   VehicleLayout layout() const { return dae_.layout(); }
-  /// Counters summed over the run: IDA's, the Jacobians and the contact batches.
+  /// Every contact-point switch so far, of every wheelset (SwitchRecord::wheel is the wheel of
+  /// the wheelset switch_wheelsets() names at the same index).
+  const std::vector<SwitchRecord>& switches() const { return switch_log_; }
+  /// The wheelset index of each entry of switches() [-].
+  const std::vector<size_t>& switch_wheelsets() const { return switch_wheelsets_; }
+  /// Counters summed over the run: IDA's over every segment, the Jacobians, the contact batches,
+  /// the switches and restarts.
   RunCounters counters() const override;
   const VehicleEquations& equations() const { return equations_; }
   /// The largest |Y/Q|, |sum Y|, T gamma and p_max of wheelset w so far, over every accepted step
@@ -140,6 +149,22 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   void record_step_contact(bool restart);
   void emit_outputs_until(double t);
   void fail(const std::string& why);
+  /// Wheelset w's consistent initialisation and switching, on its block of the state.
+  InitialisationContext initialisation(size_t w);
+  SwitchingContext switching(size_t w);
+  /// The switches of the events the last step found, then a restart.
+  void handle_roots();
+  /// After the corrector failed at every step size: every wheel in two-point contact keeps its
+  /// more loaded point, then a restart.
+  void restart_after_convergence_failure();
+  /// Follows every wheelset's points at the accepted step, or restarts where a followed point is
+  /// not the lowest (a switch the root finding did not see).
+  void check_branches();
+  /// A new segment from the blocks (per body): every wheelset settled on its lowest branches,
+  /// derivatives consistent, the step's contact recorded anew.
+  void restart(std::vector<std::vector<double>> blocks);
+  /// Each wheelset's switches of the blocks' time (log entries from first on) named by wheelset.
+  void name_switches(size_t first, size_t w);
 
   VehicleRunSpec spec_;
   std::vector<double> wheel_loads_;
@@ -158,6 +183,11 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   std::string last_solver_message_;  // IDA's last message
   bool stop_requested_ = false;
   std::vector<SwapRecord> swaps_;  // none yet
+  RunCounters accumulated_;  // IDA's counters of the segments before the current one
+  RunCounters own_;          // the switches and restarts
+  std::vector<SwitchRecord> switch_log_;
+  std::vector<size_t> switch_wheelsets_;
+  int convergence_restarts_in_a_row_ = 0;
 };
 
 /// Each wheelset's static wheel load on level track [N]: the vehicle's weight and vertical

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
-// wrc bifurcation: the hunting bifurcation diagram of the wheelset on straight track by time
-// simulation (core/dynamics/hunting_continuation.hpp, docs/bifurcation.md), in-process with the
-// chosen contact model: the centred branch from a small disturbance, the stable limit-cycle branch
+// wrc bifurcation: the hunting bifurcation diagram of the wheelset, or with --vehicle FILE of
+// several bodies the vehicle's (core/vehicle_dynamics/vehicle_hunting_run.hpp, docs/vehicle.md), on
+// straight track by time simulation (core/dynamics/hunting_continuation.hpp, docs/bifurcation.md),
+// in-process with the chosen contact model: the centred branch from a small disturbance, the stable limit-cycle branch
 // by ramp-down continuation, the nonlinear critical speed by bisection, the linear critical speed
 // (core/dynamics/linear_stability.hpp) for comparison, a CSV of every run and the diagram.
 
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <functional>
 #include <memory>
+#include <optional>
 
 #include "cli/centred_run_options.hpp"
 #include "cli/run_options.hpp"
@@ -29,6 +32,9 @@
 #include "core/dynamics/run_parameters_file.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/numerics/number_text.hpp"
+#include "core/vehicle_dynamics/vehicle_hunting_run.hpp"
+#include "core/vehicle_dynamics/vehicle_linear_stability.hpp"
+#include "cli/vehicle_stability.hpp"
 #include "cli/sweep/sweep_table.hpp"
 #include "options/parameter_options.hpp"
 
@@ -134,12 +140,12 @@ void print_run_row(const char* branch, const char* state, const HuntingRun& r, d
 
 // Where the small start decayed and the ramp-down's cycle persisted, both are stable: an unstable
 // cycle separates them, estimated by bisection on y0 with short runs; a row per such speed.
-void add_unstable_cycles(const HuntingDiagram& d, const RunSpec& spec, const std::shared_ptr<ContactEvaluator>& contact,
-                         double r0, const ContinuationSettings& settings, sweep::CsvTable& table) {
+void add_unstable_cycles(const HuntingDiagram& d, const std::function<HuntingRunner(const HuntingSettings&)>& runner,
+                         const ContinuationSettings& settings, sweep::CsvTable& table) {
   HuntingSettings short_runs = settings.run;
   short_runs.settle_time = short_runs.window = short_runs.max_time = 2.0;
   short_runs.centred_amplitude = 1e-9;
-  const HuntingRunner probe = hunting_runner(spec, contact, r0, short_runs);
+  const HuntingRunner probe = runner(short_runs);
   for (const HuntingRun& cycle : d.ramp_down) {
     if (!cycle.persists()) continue;
     bool decayed = false;
@@ -212,12 +218,19 @@ int run_bifurcation(const std::vector<std::string>& args) {
                  "limit-cycle branch) until the cycle collapses; the nonlinear critical speed (the lowest speed\n"
                  "with a persisting cycle) by bisection; the linear critical speed for comparison. Every run goes\n"
                  "until its oscillation has settled (constant amplitude, or centred) or --max-time. The lateral\n"
-                 "load is set to 0. docs/bifurcation.md.\n";
+                 "load is set to 0. docs/bifurcation.md.\n"
+                 "With --vehicle FILE of several bodies: the vehicle's diagram, each run judged by its first\n"
+                 "wheelset; a fresh run holds that wheelset at y0 with the vehicle at rest about it, the\n"
+                 "ramp-down continues the whole vehicle's state. docs/vehicle.md.\n";
     return 0;
   }
   const std::string model = o.choice("--model", contact_model_names());
   if (model.empty()) throw UsageError("--model is required (onepoint, interp, multipoint or spline)");
-  RunSpec spec = centred_run_spec(o, "hunting about the centred state on straight track");
+  RunSpec spec;
+  std::optional<VehicleDescription> vehicle;  // a vehicle of several bodies
+  apply_wheelset_sources(o, spec, std::cout, &vehicle);
+  apply_parameter_options(wheelset_parameter_table(), o, spec.wheelset);
+  if (!vehicle) zero_lateral_load_unless_given(o, spec.wheelset, "hunting about the centred state on straight track", std::cout);
   for (const auto& p : integrator_settings_table())
     if (is_integrator_option(p.key) && o.has(p.option_name()))
       p.set(spec.integrator, parameter_option_value(p, o.text(p.option_name())));
@@ -236,18 +249,35 @@ int run_bifurcation(const std::vector<std::string>& args) {
     std::cerr << "fitting the spline model (in-process, as wrc run --in-process does) ...\n";
   const auto contact = in_process_contact(model, geometry, fit_options_from(o));
 
-  // The linear critical speed over the same speeds (docs/stability.md).
-  LinearStability stability(spec.wheelset, contact, r0);
-  std::vector<LinearisedWheelset> scan;
-  for (double v : speeds) scan.push_back(stability.linearise(v));
-  const CriticalSpeed linear = stability.critical_speed(scan);
+  // The runs' runner, and the linear critical speed over the same speeds (docs/stability.md).
+  std::function<HuntingRunner(const HuntingSettings&)> runner_with;
+  CriticalSpeed linear;
+  std::string subject = "the wheelset";
+  if (vehicle) {
+    const VehicleRunSpec vehicle_spec{*vehicle, spec, std::nullopt};
+    VehicleLinearStability stability(vehicle_spec, contact, r0);
+    std::vector<LinearisedVehicle> scan;
+    for (double v : speeds) scan.push_back(stability.linearise(v));
+    linear = critical_speed_of(stability.critical_speed(scan));
+    runner_with = [vehicle_spec, contact, r0](const HuntingSettings& s) {
+      return vehicle_hunting_runner(vehicle_spec, contact, r0, s);
+    };
+    subject = vehicle->name + ", judged by its first wheelset";
+  } else {
+    LinearStability stability(spec.wheelset, contact, r0);
+    std::vector<LinearisedWheelset> scan;
+    for (double v : speeds) scan.push_back(stability.linearise(v));
+    linear = stability.critical_speed(scan);
+    runner_with = [spec, contact, r0](const HuntingSettings& s) { return hunting_runner(spec, contact, r0, s); };
+  }
 
-  std::printf("hunting bifurcation, %s contact, %s\n", model.c_str(), plot::geometry_title(geometry_spec).c_str());
+  std::printf("hunting bifurcation of %s, %s contact, %s\n", subject.c_str(), model.c_str(),
+              plot::geometry_title(geometry_spec).c_str());
   print_table_header();
   sweep::CsvTable table;
   table.header = plot::bifurcation_csv_header();
   auto last = std::chrono::steady_clock::now();
-  const HuntingRunner runner = hunting_runner(spec, contact, r0, settings.run);
+  const HuntingRunner runner = runner_with(settings.run);
   const HuntingDiagram d = trace_hunting(speeds, runner, settings, [&](const char* branch, const HuntingRun& r) {
     const auto now = std::chrono::steady_clock::now();
     const double wall = std::chrono::duration<double>(now - last).count();
@@ -255,13 +285,14 @@ int run_bifurcation(const std::vector<std::string>& args) {
     print_run_row(branch, hunting_state_name(r.state), r, wall, r.message);
     table.rows.push_back(csv_row(branch, r, wall));
   });
-  if (o.has("--unstable")) add_unstable_cycles(d, spec, contact, r0, settings, table);
+  if (o.has("--unstable")) add_unstable_cycles(d, runner_with, settings, table);
   report_linear_critical_speed(linear, speeds, table);
   report_nonlinear_critical_speed(d, speeds, settings, table);
   sweep::write_csv_file(csv, table);
   std::cout << "wrote " << csv << "\n";
   plot::draw_bifurcation(table, plot::image_request(picture, 1200, 800),
-                         "wrc bifurcation: " + model + " contact, " + plot::geometry_title(geometry_spec));
+                         "wrc bifurcation: " + (vehicle ? vehicle->name + ", " : std::string()) + model + " contact, " +
+                             plot::geometry_title(geometry_spec));
   std::cout << "wrote " << picture << "\n";
   return 0;
 }

@@ -129,7 +129,7 @@ std::unique_ptr<Simulation> DynamicsService::make_wheelset_run(double nominal_ra
 std::unique_ptr<Simulation> DynamicsService::make_vehicle_run(double nominal_radius) {
   if (!request_.swaps.empty())
     throw std::invalid_argument("swap_times: a vehicle run takes no model swap yet (docs/vehicle.md)");
-  auto run = std::make_unique<VehicleSimulation>(VehicleRunSpec{*request_.vehicle, request_.spec},
+  auto run = std::make_unique<VehicleSimulation>(VehicleRunSpec{*request_.vehicle, request_.spec, std::nullopt},
                                                  make_contact(request_.model), nominal_radius);
   const std::string run_id = request_.run_id;
   VehicleSimulation* vehicle = run.get();

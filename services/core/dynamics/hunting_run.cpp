@@ -17,11 +17,6 @@ void require(bool ok, const char* name, double value, const char* range) {
                                 ", must be " + range);
 }
 
-// The samples of one run, and the judgement of its last window.
-struct Samples {
-  std::vector<double> t, y, yaw, angle;
-};
-
 HuntingState judge(const CycleMeasurement& c, const HuntingSettings& s) {
   if (c.largest < s.centred_amplitude) return HuntingState::kCentred;
   if (c.cycles < 2) return HuntingState::kDecaying;  // no oscillation to measure yet (an aperiodic decay)
@@ -55,31 +50,9 @@ const char* hunting_state_name(HuntingState state) {
   return "?";
 }
 
-HuntingRun run_hunting(const RunSpec& base, double speed, const InitialState& start,
-                       std::shared_ptr<ContactEvaluator> contact, double nominal_radius,
-                       const HuntingSettings& settings) {
+bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const HuntingSettings& settings,
+                    HuntingRun& result) {
   settings.validate();
-  if (!(std::isfinite(speed) && speed > 0))
-    throw std::invalid_argument("run_hunting: speed = " + std::to_string(speed) + " m/s, must be > 0");
-  RunSpec spec = base;
-  spec.wheelset.speed = speed;
-  spec.initial = start;
-  spec.track = TrackLayout{};
-  spec.irregularity = TrackIrregularity{};
-  spec.integrator.t_end = settings.max_time;
-  spec.integrator.output_period = 1e-3;
-
-  HuntingRun result;
-  result.speed = speed;
-  result.start = start;
-  Samples s;
-  WheelsetSimulation simulation(spec, std::move(contact), nominal_radius);
-  simulation.on_output([&](const WheelsetSnapshot& w) {
-    s.t.push_back(w.t);
-    s.y.push_back(w.y);
-    s.yaw.push_back(w.yaw);
-    s.angle.push_back(std::max(std::abs(w.wheels[0].contact_angle), std::abs(w.wheels[1].contact_angle)));
-  });
   // The last window; when it holds fewer than 3 cycles (a slow oscillation: at low speed the
   // kinematic wavelength of some 5 m takes seconds) and the run is longer than twice the window,
   // the second half of the run instead, if that holds more.
@@ -105,7 +78,7 @@ HuntingRun run_hunting(const RunSpec& base, double speed, const InitialState& st
   } catch (const std::exception& e) {
     result.state = HuntingState::kFailed;
     result.message = std::string("no consistent initial state: ") + e.what();
-    return result;
+    return false;
   }
   // Settled: centred, or a constant amplitude at two successive judgements whose amplitudes agree
   // within the growth tolerance (a slow decay or growth of less than the tolerance per cycle
@@ -140,6 +113,35 @@ HuntingRun run_hunting(const RunSpec& base, double speed, const InitialState& st
   } else if (!settled) {
     measure();
   }
+  return true;
+}
+
+HuntingRun run_hunting(const RunSpec& base, double speed, const InitialState& start,
+                       std::shared_ptr<ContactEvaluator> contact, double nominal_radius,
+                       const HuntingSettings& settings) {
+  settings.validate();
+  if (!(std::isfinite(speed) && speed > 0))
+    throw std::invalid_argument("run_hunting: speed = " + std::to_string(speed) + " m/s, must be > 0");
+  RunSpec spec = base;
+  spec.wheelset.speed = speed;
+  spec.initial = start;
+  spec.track = TrackLayout{};
+  spec.irregularity = TrackIrregularity{};
+  spec.integrator.t_end = settings.max_time;
+  spec.integrator.output_period = 1e-3;
+
+  HuntingRun result;
+  result.speed = speed;
+  result.start = start;
+  HuntingSamples s;
+  WheelsetSimulation simulation(spec, std::move(contact), nominal_radius);
+  simulation.on_output([&](const WheelsetSnapshot& w) {
+    s.t.push_back(w.t);
+    s.y.push_back(w.y);
+    s.yaw.push_back(w.yaw);
+    s.angle.push_back(std::max(std::abs(w.wheels[0].contact_angle), std::abs(w.wheels[1].contact_angle)));
+  });
+  if (!follow_hunting(simulation, s, settings, result)) return result;
   const WheelsetSnapshot w = simulation.snapshot();
   result.end.y = w.y;
   result.end.yaw = w.yaw;

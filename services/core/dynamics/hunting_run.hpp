@@ -8,9 +8,11 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/dynamics/contact_evaluator.hpp"
 #include "core/dynamics/limit_cycle.hpp"
+#include "core/dynamics/simulation.hpp"
 #include "core/dynamics/wheelset_parameters.hpp"
 
 namespace wrc {
@@ -61,6 +63,20 @@ struct HuntingRun {
   /// A hunting oscillation that does not die out: a limit cycle or still growing.
   bool persists() const { return state == HuntingState::kLimitCycle || state == HuntingState::kGrowing; }
 };
+
+/// The output samples a hunting run is judged by: the observed wheelset's lateral shift y [m],
+/// yaw [rad] and the larger contact angle of its wheels [rad] at the times t [s].
+struct HuntingSamples {
+  std::vector<double> t, y, yaw, angle;
+};
+
+/// Starts simulation and advances it until the oscillation of samples (which its output fills)
+/// has settled (run_hunting's judgement) or its end time; sets result's state, cycle, yaw
+/// amplitude, contact angle, flange contact, simulated time and message (not start, end, speed).
+/// The one loop of the lone wheelset's hunting run and a vehicle's. Returns false when the run
+/// found no consistent initial state (result kFailed, the message says why).
+bool follow_hunting(Simulation& simulation, const HuntingSamples& samples, const HuntingSettings& settings,
+                    HuntingRun& result);
 
 /// Runs the wheelset of base (its track, irregularities and initial state ignored: straight
 /// track, start given) at speed [m/s] from start, with contact and the nominal rolling radius

@@ -26,6 +26,18 @@ const VehicleRunSpec& checked(const VehicleRunSpec& spec) {
   validate(spec.vehicle);
   spec.run.validate();
   const InitialState& i = spec.run.initial;
+  if (spec.start) {
+    const size_t wheelsets = spec.vehicle.wheelsets().size();
+    if (spec.start->bodies.size() != spec.vehicle.bodies.size() || spec.start->spin_rate_offsets.size() != wheelsets)
+      throw std::invalid_argument("start: " + std::to_string(spec.start->bodies.size()) + " bodies and " +
+                                  std::to_string(spec.start->spin_rate_offsets.size()) + " spin rates for a vehicle of " +
+                                  std::to_string(spec.vehicle.bodies.size()) + " bodies and " +
+                                  std::to_string(wheelsets) + " wheelsets");
+    if (!spec.run.track.straight() || !spec.run.irregularity.empty())
+      throw std::invalid_argument("start: a run continued from another's state runs on straight track without irregularities");
+    if (i.y != 0.0 || i.yaw != 0.0 || i.y_dot != 0.0 || i.yaw_dot != 0.0 || i.spin_rate_offset != 0.0)
+      throw std::invalid_argument("initial state: a run continued from another's state takes no initial state");
+  }
   if (i.y_dot != 0.0 || i.yaw_dot != 0.0 || i.spin_rate_offset != 0.0)
     throw std::invalid_argument(
         "initial state: a vehicle run starts at rest (y_dot0, yaw_dot0 and spin_rate_offset 0; y0 and yaw0 hold its "
@@ -81,19 +93,71 @@ VehicleSimulation::~VehicleSimulation() = default;
 void VehicleSimulation::start() {
   const IntegratorSettings& s = spec_.run.integrator;
   const ContactFormulation own = formulation_of(*contact_.evaluator());
-  std::vector<HeldWheelset> held;
-  if (spec_.run.initial.y != 0.0 || spec_.run.initial.yaw != 0.0)
-    held.push_back({0, spec_.run.initial.y, spec_.run.initial.yaw});
-  const std::vector<double> y = vehicle_rest_state(dae_, own, 0.0, s.position_tolerance, s.velocity_tolerance, held);
-  const std::vector<double> yp(y.size(), 0.0);
+  t_ = 0.0;
+  std::vector<double> y, yp;
+  if (spec_.start) {
+    y = continued_state();
+    yp = vehicle_consistent_derivatives(dae_, 0.0, y, [this](size_t w) { return initialisation(w); });
+  } else {
+    std::vector<HeldWheelset> held;
+    if (spec_.run.initial.y != 0.0 || spec_.run.initial.yaw != 0.0)
+      held.push_back({0, spec_.run.initial.y, spec_.run.initial.yaw});
+    y = vehicle_rest_state(dae_, own, 0.0, s.position_tolerance, s.velocity_tolerance, held);
+    yp.assign(y.size(), 0.0);
+  }
   integrator_.begin(0.0, y, yp, vehicle_segment(s, equations_, dae_.layout(), own == ContactFormulation::kRigid));
   contact_.clear_cache();
   started_ = true;
-  t_ = 0.0;
   for (OutputSampler& sampler : samplers_) sampler.restart();
   acceleration_maxima_.assign(spec_.vehicle.bodies.size(), BodyAccelerationMaxima{});
   record_step_contact(true);
   emit_outputs_until(0.0);
+}
+
+std::vector<double> VehicleSimulation::continued_state() {
+  const VehicleStart& start = *spec_.start;
+  equations_.place(0.0);
+  const VehicleLayout layout = dae_.layout();
+  std::vector<std::vector<double>> blocks;
+  for (size_t b = 0; b < start.bodies.size(); ++b) {
+    const BodyState& body = start.bodies[b];
+    const int w = equations_.wheelset_of_body(b);
+    if (w < 0) {
+      std::vector<double> block(body.displacement.begin(), body.displacement.end());
+      block.insert(block.end(), body.rate.begin(), body.rate.end());
+      blocks.push_back(std::move(block));
+      continue;
+    }
+    // A wheelset's z is its height above the rails (body_states(): less its position's z).
+    std::vector<double> block(static_cast<size_t>(layout.size[b]), 0.0);
+    block[kUnknownY] = body.displacement[kBodyLateral];
+    block[kUnknownZ] = body.displacement[kBodyVertical] + spec_.vehicle.bodies[b].position[2];
+    block[kUnknownRoll] = body.displacement[kBodyRoll];
+    block[kUnknownYaw] = body.displacement[kBodyYaw];
+    block[kUnknownYDot] = body.rate[kBodyLateral];
+    block[kUnknownZDot] = body.rate[kBodyVertical];
+    block[kUnknownRollDot] = body.rate[kBodyRoll];
+    block[kUnknownYawDot] = body.rate[kBodyYaw];
+    const WheelsetEquations& e = equations_.wheelset(static_cast<size_t>(w));
+    block[kUnknownSpinRate] = equations_.speed() / e.nominal_radius() + start.spin_rate_offsets[static_cast<size_t>(w)];
+    if (contact_.wheelset(static_cast<size_t>(w)).formulation() == ContactFormulation::kRigid) {
+      block[kUnknownNormalLeft] = block[kUnknownNormalRight] = 1.0;  // the static wheel load each
+      const size_t first = switch_log_.size();
+      settle_on_lowest_branches(switching(static_cast<size_t>(w)), block);
+      name_switches(first, static_cast<size_t>(w));
+    }
+    blocks.push_back(std::move(block));
+  }
+  return join_bodies(blocks);
+}
+
+VehicleStart VehicleSimulation::continuation() {
+  const VehicleSnapshot s = snapshot();
+  VehicleStart start;
+  start.bodies = s.bodies;
+  for (size_t w = 0; w < s.spin_rates.size(); ++w)
+    start.spin_rate_offsets.push_back(s.spin_rates[w] - equations_.speed() / equations_.wheelset(w).nominal_radius());
+  return start;
 }
 
 void VehicleSimulation::record_step_contact(bool restart) {

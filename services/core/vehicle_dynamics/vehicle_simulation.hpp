@@ -17,6 +17,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,14 @@
 
 namespace wrc {
 
+/// A vehicle's state to start a run from instead of its rest: the end of a run at another speed
+/// (a continuation, core/dynamics/hunting_continuation.hpp).
+struct VehicleStart {
+  /// Each body's displacement and rates in its track frame, as VehicleSnapshot::bodies has them
+  std::vector<BodyState> bodies;
+  std::vector<double> spin_rate_offsets;  ///< each wheelset's spin rate minus V / r0 [rad/s]
+};
+
 /// A whole vehicle run.
 struct VehicleRunSpec {
   VehicleDescription vehicle;
@@ -45,6 +54,9 @@ struct VehicleRunSpec {
   /// y and yaw hold its first wheelset at that lateral shift and yaw there (the rest of the vehicle
   /// in equilibrium about it), released at t = 0; its rates must be 0.
   RunSpec run;
+  /// Where the run starts instead (run.initial then all 0): on straight track, each wheelset
+  /// projected onto its contact constraints (rigid), the derivatives consistent with the state.
+  std::optional<VehicleStart> start;
 };
 
 /// The vehicle at one time.
@@ -109,6 +121,8 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   std::string model() const override { return contact_.evaluator()->model(); }
   /// The vehicle now (after the last step).
   VehicleSnapshot snapshot();
+  /// The vehicle now as a start of another run (VehicleRunSpec::start).
+  VehicleStart continuation();
   /// The vehicle at rest in its track frames where time t places it: F(t, y, 0) = 0 solved from the
   /// state now (vehicle_equilibrium.hpp). In a curve of constant radius and cant, the steady
   /// curving state a run settles on; the run itself is not changed.
@@ -163,6 +177,8 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   /// A new segment from the blocks (per body): every wheelset settled on its lowest branches,
   /// derivatives consistent, the step's contact recorded anew.
   void restart(std::vector<std::vector<double>> blocks);
+  /// The state of spec_.start (every wheelset in its own formulation, projected when rigid).
+  std::vector<double> continued_state();
   /// Each wheelset's switches of the blocks' time (log entries from first on) named by wheelset.
   void name_switches(size_t first, size_t w);
 

@@ -52,6 +52,11 @@ TEST(EarlyErrors, EachMistakeIsRefusedNamingTheOptionAndTheValue) {
       {"bifurcation", {"--model", "spline", "--speeds", "30:30:5"}, "--speeds: give at least 2 speeds"},
       {"bifurcation", {"--model", "spline", "--max-time", "0"}, "--max-time: 0 is outside [0.001, 10000]"},
       {"bifurcation", {"--model", "onepoint", "--out", "/nonexistent-folder/b.csv"}, "the folder /nonexistent-folder does not exist"},
+      {"bifurcation", {"--model", "onepoint", "--vehicle", car, "--yaw-inertia", "900", "--out", out},
+       "--yaw-inertia: a vehicle of several bodies takes it from its file (--vehicle)"},
+      {"bifurcation", {"--model", "onepoint", "--vehicle", car, "--out", out},
+       "body 'front_wheelset_1': position: z = 0.425 m is the axle's height above the rails, the wheel's nominal "
+       "radius is 0.46 m"},
       {"sweep", {"--grid"}, "--grid needs KEY=VALUES"},
       {"sweep", {"--grid", "speed=1:2:0", "--out", out}, "range 1:2:0: the step must be positive"},
       {"sweep", {"--grid", "speed=10,10", "--out", out}, "the value 10 is given twice"},

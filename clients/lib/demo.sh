@@ -161,6 +161,17 @@ wrc stability --model onepoint --speeds 10:120:10 --longitudinal-stiffness 1e6 \
   --out "$report_dir/stability.csv" --plot "$report_dir/figures/stability.png" 2>&1 |
   sed -n '/V \[m\/s\]/,/linear critical speed/p' | sed 's/^/  /'
 
+section "A bogie's hunting diagram (wrc bifurcation --vehicle; docs/vehicle.md, \"Hunting of a vehicle\")"
+echo "The Cooperrider bogie (parameters/vehicles/cooperrider-bogie.json) on a cone of conicity 0.2 on a"
+echo "circular rail head with friction 10: a geometry whose hunting is linear, so the nonlinear critical"
+echo "speed the ramp-down and its bisection find must be the linear one of the bogie's eigenvalues"
+echo "(docs/vehicle.md has the diagram on S1002/UIC60):"
+wrc bifurcation --model onepoint --vehicle parameters/vehicles/cooperrider-bogie.json --wheel conic:0.2 \
+  --rail circle:0.1 --gauge 1.5 --gauge-depth 0 --inclination none --r0 0.425 --friction 10 --speeds 75:90:5 \
+  --start-amplitude 1e-6 --disturbance 1e-6 --centred-amplitude 1e-8 --settle-time 2 --window 1 --max-time 2 \
+  --speed-tolerance 0.25 --out "$report_dir/bogie-bifurcation.csv" \
+  --plot "$report_dir/figures/bogie-bifurcation.png" 2>&1 | sed -n '/critical speed/p' | sed 's/^/  /'
+
 section "A small sweep on both cores (wrc sweep; docs/sweep.md)"
 echo "The benchmark (Fy = 20 kN) at four speeds with the one-point and the spline model, 1 s each, every"
 echo "run a process of its own, two at a time: the same lateral balance at every speed, the spline model"

@@ -237,7 +237,9 @@ void VehicleSimulation::restart(std::vector<std::vector<double>> blocks) {
       vehicle_consistent_derivatives(dae_, t_, y, [this](size_t w) { return initialisation(w); });
   accumulated_ += integrator_.counters();
   ++own_.restarts;
-  integrator_.begin(t_, y, yp, vehicle_segment(spec_.run.integrator, equations_, dae_.layout(), true));
+  integrator_.begin(t_, y, yp,
+                    vehicle_segment(spec_.run.integrator, equations_, dae_.layout(),
+                                    formulation() == ContactFormulation::kRigid));
   contact_.clear_cache();
   record_step_contact(true);
 }

@@ -171,6 +171,10 @@ void DynamicsService::start(const run_command_t& command) {
               << (request_.vehicle ? " of vehicle '" + bus::log_text(request_.vehicle->name) + "'" : std::string())
               << " to t = " << request_.spec.integrator.t_end << " s\n";
     simulation_->start();
+    if (vehicle_run_ && !vehicle_run_->start_note().empty()) {
+      status_message_ = vehicle_run_->start_note();
+      std::cerr << "wrc-dynamicsd: " << bus::log_text(status_message_) << "\n";
+    }
   } catch (const std::exception& e) {
     simulation_.reset();
     wheelset_run_ = nullptr;

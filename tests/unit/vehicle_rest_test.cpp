@@ -16,12 +16,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/dynamics/contact_evaluator.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/vehicle/vehicle_file.hpp"
+#include "core/track/irregularity_spectrum.hpp"
+#include "core/track/track_layout_file.hpp"
+#include "core/vehicle_dynamics/vehicle_equilibrium.hpp"
 #include "core/vehicle_dynamics/vehicle_simulation.hpp"
 #include "spline_test_model.hpp"
 
@@ -68,6 +73,70 @@ TEST(VehicleRest, TheManchesterCoachRestsOnItsSpringsAsItsStaticsSay) {
     EXPECT_NEAR(s.displacement[kBodyRoll], 0.0, 1e-9) << names[b].name;
     EXPECT_NEAR(s.displacement[kBodyYaw], 0.0, 1e-9) << names[b].name;
   }
+}
+
+// ERRI low-level irregularities (3 to 70 m, 1050 m) of the given seed, as `wrc irregularities
+// --spectrum erri-low --length 1050 --wavelengths 3:70 --seed N` writes them.
+TrackIrregularity erri_low(std::uint64_t seed) {
+  IrregularityGeneration g;
+  g.length = 1050.0;
+  g.min_wavelength = 3.0;
+  g.max_wavelength = 70.0;
+  g.seed = seed;
+  return generate_irregularity(g);
+}
+
+// The coach on the R600 layout with irregularities, its common run values.
+VehicleRunSpec coach_on_irregular_track(std::uint64_t seed) {
+  VehicleRunSpec spec;
+  spec.vehicle = read_vehicle_file(std::string(WRC_PARAMETERS_DIR) + "/vehicles/manchester-coach.json");
+  spec.run.wheelset.speed = 30.0;
+  spec.run.wheelset.lateral_force = 0.0;
+  spec.run.track = read_track_layout_file(std::string(WRC_PARAMETERS_DIR) + "/track-curve-R600-1km.json");
+  spec.run.irregularity = erri_low(seed);
+  return spec;
+}
+
+// On irregular rails a model's Newton iteration from the nominal positions may not find the rest
+// (the multipoint model on these, seed 2: the elastic stage's first steps sink a wheel 50 mm into
+// its rail, which Hertz's theory refuses). The rest is then continued from the nominal rails, the
+// irregularities' share raised from 0 to 1. What comes out must be the equilibrium on the whole
+// irregularities: Newton started there converges at once (one iteration, a step below 1e-3 of the
+// tolerances), not one on a share of them (a share of 0.9 moves the wheelsets by tenths of a
+// millimetre, thousands of tolerances).
+TEST(VehicleRest, OnIrregularRailsTheRestIsContinuedFromTheNominalRails) {
+  const VehicleRunSpec spec = coach_on_irregular_track(2);
+  const std::vector<double> loads = static_wheel_loads(spec.vehicle, spec.run.wheelset.gravity);
+  VehicleEquations equations(spec.vehicle, spec.run.wheelset, spec.run.track, spec.run.irregularity, kR0, loads);
+  VehicleContact contact(std::make_shared<InProcessContact>(make_contact_model("multipoint", test::s1002_uic60_geometry())),
+                         equations, true);
+  VehicleDae dae(equations, contact);
+  const std::vector<double> rest = vehicle_rest_state(dae, ContactFormulation::kElastic, 0.0, 1e-8, 1e-6);
+  const VehicleEquilibrium again = vehicle_equilibrium(dae, 0.0, rest, equilibrium_weights(dae, 1e-8, 1e-6));
+  EXPECT_LE(again.iterations, 1);
+  EXPECT_LT(again.last_step, 1e-3);
+  // Each front wheelset stands where the irregularities (faded in over the first 20 m) put its rails.
+  const std::vector<BodyState> bodies = equations.body_states(dae.layout(), rest.data());
+  const IrregularityPoint at_leading = spec.run.irregularity.at(spec.vehicle.bodies[equations.wheelset_body(0)].position[0]);
+  EXPECT_NEAR(bodies[equations.wheelset_body(0)].displacement[kBodyLateral], at_leading.alignment, 3e-3);
+}
+
+// A rigid one-point model may have no rest at all on irregular rails: a wheel at rest where its
+// contact point jumps (the coach on these, seed 1: the continuation stops at a quarter of the
+// irregularities). The run then starts from the rest on the nominal rails with each wheelset
+// placed onto its rails (positions and velocities projected, derivatives consistent), says so,
+// and runs: every wheel loaded at the start, the run to 0.2 s.
+TEST(VehicleRest, ARigidRunWithNoRestOnItsRailsStartsPlacedOnThemAndSaysSo) {
+  VehicleRunSpec spec = coach_on_irregular_track(1);
+  spec.run.integrator.t_end = 0.2;
+  VehicleSimulation sim(spec, std::make_shared<InProcessContact>(make_contact_model("onepoint", test::s1002_uic60_geometry())),
+                        kR0);
+  sim.start();
+  EXPECT_NE(sim.start_note().find("started off its equilibrium"), std::string::npos) << sim.start_note();
+  for (size_t w = 0; w < 4; ++w)
+    for (const WheelOutput& wheel : sim.last_step_wheels(w)) EXPECT_GT(wheel.normal_force, 0.0) << "wheelset " << w;
+  sim.run();
+  EXPECT_EQ(sim.state(), RunState::kFinished) << sim.message();
 }
 
 }  // namespace

@@ -85,9 +85,20 @@ void VehicleEquations::place(double t) {
   for (size_t w = 0; w < wheelsets_.size(); ++w) {
     const double s = s_ref_ + vehicle_.bodies[wheelset_bodies_[w]].position[0];
     if (!layout_.straight()) wheelsets_[w].set_track(layout_.at(s));
-    if (!irregularity_.empty())
-      wheelsets_[w].set_rails(rail_offsets_at(irregularity_.at(s), layout_.cant_base(), speed_));
+    if (irregularity_.empty()) continue;
+    IrregularityPoint p = irregularity_.at(s);
+    if (irregularity_share_ != 1.0) {
+      for (double* v : {&p.alignment, &p.vertical_level, &p.cross_level, &p.gauge}) *v *= irregularity_share_;
+      for (double& slope : p.slope) slope *= irregularity_share_;
+    }
+    wheelsets_[w].set_rails(rail_offsets_at(p, layout_.cant_base(), speed_));
   }
+}
+
+void VehicleEquations::set_irregularity_share(double share) {
+  if (!(share >= 0.0 && share <= 1.0))
+    throw std::invalid_argument("irregularity share = " + std::to_string(share) + ", must be in [0, 1]");
+  irregularity_share_ = share;
 }
 
 std::vector<BodyState> VehicleEquations::body_states(const VehicleLayout& layout, const double* y) const {

@@ -77,6 +77,12 @@ class VehicleEquations {
   /// s_ref = V t (its track point, and with irregularities its rails).
   void place(double t);
   double reference_distance() const { return s_ref_; }  ///< s_ref of the last place() [m]
+  /// Whether the track has irregularities.
+  bool has_irregularities() const { return !irregularity_.empty(); }
+  /// The share of the irregularities the rails take from the next place() on [-], in [0, 1]: 1 the
+  /// track as given (the default), 0 the nominal rails; the rest state's continuation
+  /// (vehicle_equilibrium.hpp) goes from 0 to 1. @throws std::invalid_argument outside [0, 1].
+  void set_irregularity_share(double share);
 
   /// Each body's displacement from its nominal position and rates at state y (a wheelset's z is
   /// its height minus its position's z; its pitch 0: the axle boxes do not spin).
@@ -101,6 +107,7 @@ class VehicleEquations {
   VehicleDescription vehicle_;
   TrackLayout layout_;
   TrackIrregularity irregularity_;
+  double irregularity_share_ = 1.0;
   double speed_;
   double gravity_;
   std::vector<WheelsetEquations> wheelsets_;

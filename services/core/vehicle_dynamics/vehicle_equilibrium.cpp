@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/vehicle_dynamics/vehicle_equilibrium.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "core/dynamics/consistent_initialisation.hpp"
 #include "core/dynamics/segment_settings.hpp"
 #include "core/dynamics/wheelset_equations.hpp"
+#include "core/numerics/number_text.hpp"
 
 namespace wrc {
 namespace {
@@ -19,6 +21,10 @@ namespace {
 constexpr double kConvergedStep = 1e-3;
 // [-] the smallest damping factor of a Newton step.
 constexpr double kSmallestDamping = 1.0 / 64.0;
+// [-] the first and largest step of the irregularities' share in the rest state's continuation,
+// and the smallest before it gives up.
+constexpr double kFirstShareStep = 0.25;
+constexpr double kSmallestShareStep = 1.0 / 256.0;
 
 double weighted_rms(const Eigen::VectorXd& v, const std::vector<double>& w) {
   double sum = 0.0;
@@ -129,8 +135,11 @@ VehicleEquilibrium vehicle_equilibrium(VehicleDae& dae, double t, std::vector<do
   throw std::runtime_error(msg.str());
 }
 
-std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, double t, double position_tolerance,
-                                       double velocity_tolerance, const std::vector<HeldWheelset>& held) {
+namespace {
+
+// The rest state on the rails as the equations place them now.
+std::vector<double> rest_state_on_rails(VehicleDae& dae, ContactFormulation own, double t, double position_tolerance,
+                                        double velocity_tolerance, const std::vector<HeldWheelset>& held) {
   VehicleEquations& e = dae.equations();
   VehicleContact& contact = dae.contact();
   for (size_t w = 0; w < contact.size(); ++w) contact.wheelset(w).set_formulation(ContactFormulation::kRigid);
@@ -157,6 +166,47 @@ std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, 
   return vehicle_equilibrium(dae, t, std::move(elastic),
                              equilibrium_weights(dae, position_tolerance, velocity_tolerance), held)
       .state;
+}
+
+}  // namespace
+
+std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, double t, double position_tolerance,
+                                       double velocity_tolerance, const std::vector<HeldWheelset>& held) {
+  VehicleEquations& e = dae.equations();
+  try {
+    return rest_state_on_rails(dae, own, t, position_tolerance, velocity_tolerance, held);
+  } catch (const std::runtime_error& direct) {
+    if (!e.has_irregularities()) throw;
+    // Continued from the nominal rails: the irregularities' share raised from 0 to 1, each
+    // equilibrium the next one's guess, the share's step halved where Newton does not converge.
+    std::string reached = "0";
+    try {
+      e.set_irregularity_share(0.0);
+      std::vector<double> y = rest_state_on_rails(dae, own, t, position_tolerance, velocity_tolerance, held);
+      double share = 0.0;
+      double step = kFirstShareStep;
+      while (share < 1.0) {
+        const double next = std::min(1.0, share + step);
+        e.set_irregularity_share(next);
+        try {
+          y = vehicle_equilibrium(dae, t, y, equilibrium_weights(dae, position_tolerance, velocity_tolerance), held)
+                  .state;
+          share = next;
+          reached = number_text(share);
+          step = std::min(2.0 * step, kFirstShareStep);
+        } catch (const std::runtime_error&) {
+          step *= 0.5;
+          if (step < kSmallestShareStep) throw;
+        }
+      }
+      e.set_irregularity_share(1.0);
+      return y;
+    } catch (const std::exception& continued) {
+      e.set_irregularity_share(1.0);
+      throw std::runtime_error(std::string(direct.what()) + "; continued from the rails without irregularities, " +
+                               "the equilibrium reached " + reached + " of them: " + continued.what());
+    }
+  }
 }
 
 }  // namespace wrc

@@ -102,8 +102,16 @@ void VehicleSimulation::start() {
     std::vector<HeldWheelset> held;
     if (spec_.run.initial.y != 0.0 || spec_.run.initial.yaw != 0.0)
       held.push_back({0, spec_.run.initial.y, spec_.run.initial.yaw});
-    y = vehicle_rest_state(dae_, own, 0.0, s.position_tolerance, s.velocity_tolerance, held);
-    yp.assign(y.size(), 0.0);
+    try {
+      y = vehicle_rest_state(dae_, own, 0.0, s.position_tolerance, s.velocity_tolerance, held);
+      yp.assign(y.size(), 0.0);
+    } catch (const std::runtime_error& no_rest) {
+      if (own != ContactFormulation::kRigid || !equations_.has_irregularities()) throw;
+      y = placed_on_rails(held);
+      yp = vehicle_consistent_derivatives(dae_, 0.0, y, [this](size_t w) { return initialisation(w); });
+      start_note_ = std::string("started off its equilibrium: ") + no_rest.what() +
+                    "; the vehicle at rest on the nominal rails, each wheelset placed onto its rails at t = 0";
+    }
   }
   integrator_.begin(0.0, y, yp, vehicle_segment(s, equations_, dae_.layout(), own == ContactFormulation::kRigid));
   contact_.clear_cache();
@@ -147,6 +155,27 @@ std::vector<double> VehicleSimulation::continued_state() {
       name_switches(first, static_cast<size_t>(w));
     }
     blocks.push_back(std::move(block));
+  }
+  return join_bodies(blocks);
+}
+
+std::vector<double> VehicleSimulation::placed_on_rails(const std::vector<HeldWheelset>& held) {
+  const IntegratorSettings& s = spec_.run.integrator;
+  equations_.set_irregularity_share(0.0);
+  std::vector<double> y;
+  try {
+    y = vehicle_rest_state(dae_, ContactFormulation::kRigid, 0.0, s.position_tolerance, s.velocity_tolerance, held);
+  } catch (...) {
+    equations_.set_irregularity_share(1.0);
+    throw;
+  }
+  equations_.set_irregularity_share(1.0);
+  equations_.place(0.0);
+  std::vector<std::vector<double>> blocks = split_by_body(dae_.layout(), y);
+  for (size_t w = 0; w < equations_.wheelset_count(); ++w) {
+    const size_t first = switch_log_.size();
+    settle_on_lowest_branches(switching(w), blocks[equations_.wheelset_body(w)]);
+    name_switches(first, w);
   }
   return join_bodies(blocks);
 }

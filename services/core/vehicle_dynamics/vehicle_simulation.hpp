@@ -34,6 +34,7 @@
 #include "core/vehicle_dynamics/vehicle_contact.hpp"
 #include "core/vehicle_dynamics/vehicle_dae.hpp"
 #include "core/vehicle_dynamics/vehicle_equations.hpp"
+#include "core/vehicle_dynamics/vehicle_equilibrium.hpp"
 
 namespace wrc {
 
@@ -97,8 +98,13 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   void on_output(std::function<void(const VehicleSnapshot&)> callback) { on_output_ = std::move(callback); }
 
   /// The equilibrium at t = 0 (rigid contact first, then the model's own formulation) and the
-  /// first output. @throws std::runtime_error when there is none (the message says why).
+  /// first output. A rigid model with no equilibrium on irregular rails (a wheel at rest where its
+  /// contact point jumps) starts from the equilibrium on the nominal rails with each wheelset
+  /// placed onto its rails and consistent derivatives, and says so in start_note().
+  /// @throws std::runtime_error when there is no start (the message says why).
   void start() override;
+  /// How the run started when not from its equilibrium on its rails; empty otherwise.
+  const std::string& start_note() const { return start_note_; }
   /// One integrator step with the outputs it passes; false once the run is over (state()).
   bool advance() override;
   /// start() if not started, then advance() to the end.
@@ -179,6 +185,9 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   void restart(std::vector<std::vector<double>> blocks);
   /// The state of spec_.start (every wheelset in its own formulation, projected when rigid).
   std::vector<double> continued_state();
+  /// Rigid: the rest state on the nominal rails (the held wheelsets held), each wheelset then
+  /// settled on its lowest branches of the irregular rails at t = 0.
+  std::vector<double> placed_on_rails(const std::vector<HeldWheelset>& held);
   /// Each wheelset's switches of the blocks' time (log entries from first on) named by wheelset.
   void name_switches(size_t first, size_t w);
 
@@ -195,6 +204,7 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   double t_ = 0;
   RunState state_ = RunState::kRunning;
   std::string message_;
+  std::string start_note_;
   std::string last_error_;           // what the equations last threw (the contact model's reason)
   std::string last_solver_message_;  // IDA's last message
   bool stop_requested_ = false;

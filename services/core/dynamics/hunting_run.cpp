@@ -50,6 +50,13 @@ const char* hunting_state_name(HuntingState state) {
   return "?";
 }
 
+void HuntingSamples::add(const WheelsetSnapshot& w) {
+  t.push_back(w.t);
+  y.push_back(w.y);
+  yaw.push_back(w.yaw);
+  angle.push_back(std::max(std::abs(w.wheels[0].contact_angle), std::abs(w.wheels[1].contact_angle)));
+}
+
 bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const HuntingSettings& settings,
                     HuntingRun& result) {
   settings.validate();
@@ -135,12 +142,7 @@ HuntingRun run_hunting(const RunSpec& base, double speed, const InitialState& st
   result.start = start;
   HuntingSamples s;
   WheelsetSimulation simulation(spec, std::move(contact), nominal_radius);
-  simulation.on_output([&](const WheelsetSnapshot& w) {
-    s.t.push_back(w.t);
-    s.y.push_back(w.y);
-    s.yaw.push_back(w.yaw);
-    s.angle.push_back(std::max(std::abs(w.wheels[0].contact_angle), std::abs(w.wheels[1].contact_angle)));
-  });
+  simulation.on_output([&](const WheelsetSnapshot& w) { s.add(w); });
   if (!follow_hunting(simulation, s, settings, result)) return result;
   const WheelsetSnapshot w = simulation.snapshot();
   result.end.y = w.y;

@@ -13,6 +13,7 @@
 #include "core/dynamics/contact_evaluator.hpp"
 #include "core/dynamics/limit_cycle.hpp"
 #include "core/dynamics/simulation.hpp"
+#include "core/dynamics/wheelset_simulation.hpp"
 #include "core/dynamics/wheelset_parameters.hpp"
 
 namespace wrc {
@@ -68,6 +69,8 @@ struct HuntingRun {
 /// yaw [rad] and the larger contact angle of its wheels [rad] at the times t [s].
 struct HuntingSamples {
   std::vector<double> t, y, yaw, angle;
+  /// Appends the output sample w.
+  void add(const WheelsetSnapshot& w);
 };
 
 /// Starts simulation and advances it until the oscillation of samples (which its output fills)

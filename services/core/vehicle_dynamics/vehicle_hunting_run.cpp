@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "core/vehicle_dynamics/vehicle_hunting_run.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -53,13 +52,7 @@ HuntingRun run_vehicle_hunting(const VehicleRunSpec& base, double speed, const I
   result.start = start;
   HuntingSamples s;
   VehicleSimulation simulation(spec, contact, nominal_radius);
-  simulation.on_output([&](const VehicleSnapshot& v) {
-    const WheelsetSnapshot w = simulation.wheelset_snapshot(v, 0);
-    s.t.push_back(w.t);
-    s.y.push_back(w.y);
-    s.yaw.push_back(w.yaw);
-    s.angle.push_back(std::max(std::abs(w.wheels[0].contact_angle), std::abs(w.wheels[1].contact_angle)));
-  });
+  simulation.on_output([&](const VehicleSnapshot& v) { s.add(simulation.wheelset_snapshot(v, 0)); });
   if (!follow_hunting(simulation, s, settings, result)) return result;
   VehicleStart whole = simulation.continuation();
   const WheelsetSnapshot w = simulation.wheelset_snapshot(simulation.snapshot(), 0);

@@ -47,10 +47,11 @@ const VehicleRunSpec& checked(const VehicleRunSpec& spec) {
 
 // The segment settings of the layout: every car body's and frame's displacements and rates
 // differential with the position and velocity tolerances, each wheelset's unknowns and (rigid)
-// event functions as the lone wheelset's.
+// event functions as the lone wheelset's, the Newton matrix rebuilt as a vehicle's is.
 IdaSegment vehicle_segment(const IntegratorSettings& s, const VehicleEquations& e, const VehicleLayout& layout,
                            bool rigid) {
   IdaSegment segment = segment_settings_without_unknowns(s, rigid);
+  segment.newton_matrix_cj_change = kVehicleNewtonMatrixCjChange;
   for (size_t b = 0; b < e.vehicle().bodies.size(); ++b) {
     if (e.wheelset_of_body(b) >= 0) {
       append_wheelset_unknowns(segment, s, layout.size[b]);

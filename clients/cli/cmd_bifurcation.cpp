@@ -258,7 +258,7 @@ int run_bifurcation(const std::vector<std::string>& args) {
     VehicleLinearStability stability(vehicle_spec, contact, r0);
     std::vector<LinearisedVehicle> scan;
     for (double v : speeds) scan.push_back(stability.linearise(v));
-    linear = critical_speed_of(stability.critical_speed(scan));
+    linear = critical_speed_from(stability.critical_speed(scan));
     runner_with = [vehicle_spec, contact, r0](const HuntingSettings& s) {
       return vehicle_hunting_runner(vehicle_spec, contact, r0, s);
     };

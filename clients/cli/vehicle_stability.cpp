@@ -41,7 +41,7 @@ StabilityScanRow row_of(const LinearisedVehicle& l, const VehicleDescription& ve
 
 }  // namespace
 
-CriticalSpeed critical_speed_of(const VehicleCriticalSpeed& found) {
+CriticalSpeed critical_speed_from(const VehicleCriticalSpeed& found) {
   CriticalSpeed critical;
   critical.found = found.found;
   critical.speed = found.speed;
@@ -78,7 +78,7 @@ int run_vehicle_stability(const Options& o, const VehicleDescription& vehicle, c
                 m.damping_ratio(), mode_kind_name(m.kind), vehicle.bodies[m.body].name.c_str(), 100.0 * m.body_share);
   }
   const VehicleCriticalSpeed found = stability.critical_speed(scan);
-  const CriticalSpeed critical = critical_speed_of(found);
+  const CriticalSpeed critical = critical_speed_from(found);
   if (found.found)
     std::printf("linear critical speed: %.4f m/s (%.1f km/h), frequency %.4f Hz (%s mode, mostly %s)\n", found.speed,
                 found.speed * 3.6, found.mode.frequency(), mode_kind_name(found.mode.kind),

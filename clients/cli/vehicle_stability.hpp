@@ -16,7 +16,7 @@ namespace wrc::cli {
 
 /// The vehicle's linear critical speed found in a scan, in the lone wheelset's terms (speed,
 /// frequency and kind of the mode crossing).
-CriticalSpeed critical_speed_of(const VehicleCriticalSpeed& found);
+CriticalSpeed critical_speed_from(const VehicleCriticalSpeed& found);
 
 /// Prints the least damped mode per speed and the critical speed, writes csv and picture.
 /// @throws UsageError for a parameter option that belongs to the vehicle file (masses, loads,

@@ -3,7 +3,8 @@
 /// @file
 /// A run of `wrc run`'s request in this process, without the bus: the geometry, the contact model
 /// evaluated here (the spline model fitted here, as `wrc run --in-process` has wrc-dynamicsd do),
-/// the scheduled swaps, and the simulation to its end, summarised as wrc-dynamicsd summarises it.
+/// the scheduled swaps, and the simulation to its end (the lone wheelset's, or with a vehicle of
+/// several bodies the vehicle's), summarised as wrc-dynamicsd summarises it.
 /// What a sweep's runs are: independent processes that share no bus and no service, so any number
 /// run side by side on one machine or on a cluster's nodes.
 

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <chrono>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "cli/options.hpp"
@@ -14,6 +15,7 @@
 #include "cli/run_session.hpp"
 #include "cli/speed_scan_option.hpp"
 #include "cli/sweep/in_process_run.hpp"
+#include "cli/vehicle_stability.hpp"
 #include "core/dynamics/linear_stability.hpp"
 #include "core/dynamics/run_counter_table.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
@@ -142,16 +144,27 @@ std::string leaf_text(const nlohmann::json& v) {
 }
 
 // The critical speed and its frequency of the run's wheelset (its lateral load set to 0: a centred
-// steady state has none, as `wrc stability` does) over speeds "FROM:TO:STEP" [m/s].
+// steady state has none, as `wrc stability` does), or of its vehicle of several bodies, over
+// speeds "FROM:TO:STEP" [m/s].
 std::pair<std::string, std::string> critical_speed_of(const protocol::RunRequest& request, const std::string& speeds) {
   const std::vector<double> scan_speeds = critical_speed_scan(speeds);
-  WheelsetParameters wheelset = request.spec.wheelset;
-  wheelset.lateral_force = 0.0;
   const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(request.geometry));
-  LinearStability stability(wheelset, in_process_contact(request.model, geometry), request.geometry.track.nominal_radius);
-  std::vector<LinearisedWheelset> scan;
-  for (double v : scan_speeds) scan.push_back(stability.linearise(v));
-  const CriticalSpeed c = stability.critical_speed(scan);
+  const auto contact = in_process_contact(request.model, geometry);
+  const double r0 = request.geometry.track.nominal_radius;
+  CriticalSpeed c;
+  if (request.vehicle) {  // a vehicle of several bodies: its own (its loads are its file's)
+    VehicleLinearStability stability(VehicleRunSpec{*request.vehicle, request.spec, std::nullopt}, contact, r0);
+    std::vector<LinearisedVehicle> scan;
+    for (double v : scan_speeds) scan.push_back(stability.linearise(v));
+    c = critical_speed_from(stability.critical_speed(scan));
+  } else {
+    WheelsetParameters wheelset = request.spec.wheelset;
+    wheelset.lateral_force = 0.0;
+    LinearStability stability(wheelset, contact, r0);
+    std::vector<LinearisedWheelset> scan;
+    for (double v : scan_speeds) scan.push_back(stability.linearise(v));
+    c = stability.critical_speed(scan);
+  }
   if (!c.found) return {"", ""};
   return {number_text(c.speed), number_text(c.frequency)};
 }

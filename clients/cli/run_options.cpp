@@ -151,7 +151,6 @@ protocol::RunRequest run_request_from(const Options& o, std::ostream& notes) {
   }
   if (o.has("--irregularities")) spec.irregularity = read_track_irregularity_file(o.text("--irregularities"));
   if (o.has("--swap-at")) {
-    if (request.vehicle) throw UsageError("--swap-at: a vehicle of several bodies takes no model swap yet");
     request.swaps = parse_swaps(o.text("--swap-at"), spec.integrator.t_end);
   }
   request.in_process = o.has("--in-process");

@@ -127,10 +127,9 @@ std::unique_ptr<Simulation> DynamicsService::make_wheelset_run(double nominal_ra
 }
 
 std::unique_ptr<Simulation> DynamicsService::make_vehicle_run(double nominal_radius) {
-  if (!request_.swaps.empty())
-    throw std::invalid_argument("swap_times: a vehicle run takes no model swap yet (docs/vehicle.md)");
   auto run = std::make_unique<VehicleSimulation>(VehicleRunSpec{*request_.vehicle, request_.spec, std::nullopt},
                                                  make_contact(request_.model), nominal_radius);
+  for (const protocol::ScheduledSwap& swap : request_.swaps) run->schedule_swap(swap.t, make_contact(swap.model));
   const std::string run_id = request_.run_id;
   VehicleSimulation* vehicle = run.get();
   std::vector<WheelsetParameters> parameters;
@@ -222,14 +221,7 @@ void DynamicsService::apply_select() {
         return;
       }
     }
-    if (!wheelset_run_) {
-      status_message_ = "swap to " + select.model + " refused, keeping " + simulation_->model() +
-                        ": a vehicle run takes no model swap yet (docs/vehicle.md)";
-      std::cerr << "wrc-dynamicsd: " << bus::log_text(status_message_) << "\n";
-      publish_status(true);
-      return;
-    }
-    wheelset_run_->request_swap(make_contact(select.model));
+    simulation_->request_swap(make_contact(select.model));
   } catch (const std::exception& e) {
     status_message_ = "swap to " + select.model + " refused: " + e.what();
     publish_status(true);

@@ -14,33 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "core/dynamics/single_wheelset_vehicle.hpp"
-#include "core/dynamics/wheelset_simulation.hpp"
-#include "core/models/contact_model_factory.hpp"
-#include "core/profile/profile_factory.hpp"
-#include "core/vehicle/vehicle_file.hpp"
-#include "core/vehicle_dynamics/vehicle_simulation.hpp"
-#include "spline_test_model.hpp"
+#include "single_wheelset_vehicle_run.hpp"
 
 namespace wrc {
 namespace {
 
-VehicleDescription shipped(const std::string& name) {
-  return read_vehicle_file(std::string(WRC_PARAMETERS_DIR) + "/vehicles/" + name + ".json");
-}
+using test::s1002_uic60;
 
-// S1002 of nominal radius r0 [m] on UIC60 1:40, standard gauge.
-std::shared_ptr<const WheelsetGeometry> s1002_uic60(double r0) {
-  if (r0 == 0.46) return test::s1002_uic60_geometry();
-  TrackParameters track;
-  track.nominal_radius = r0;
-  return std::make_shared<const WheelsetGeometry>(make_profile("S1002", ProfileSide::kWheel),
-                                                  make_profile("UIC60", ProfileSide::kRail), track);
-}
-
-std::shared_ptr<ContactEvaluator> onepoint(double r0) {
-  return std::make_shared<InProcessContact>(make_contact_model("onepoint", s1002_uic60(r0)));
-}
+std::shared_ptr<ContactEvaluator> onepoint(double r0) { return test::s1002_contact("onepoint", r0); }
 
 // The benchmark's wheelset without its lateral load, at 50 m/s, released 5 mm off the centre
 // line: its left wheel's point jumps twice on the way to the centre (from the flange to the
@@ -50,46 +31,24 @@ constexpr double kTEnd = 1.0;
 constexpr double kR0 = 0.46;
 constexpr double kSpeed = 50.0;
 
-// The single-wheelset file's run, its axle boxes relaxed at the height where the centred
-// wheelset stands (as the lone wheelset's suspension is).
-VehicleRunSpec single_wheelset_run() {
-  VehicleRunSpec spec;
-  spec.vehicle = shipped("single-wheelset");
-  spec.vehicle.bodies[0].external_force[1] = 0.0;
-  spec.run.integrator.t_end = kTEnd;
-  spec.run.wheelset.speed = kSpeed;
-  VehicleSimulation centred(spec, onepoint(kR0), kR0);
-  centred.start();
-  const WheelsetSnapshot rest = centred.wheelset_snapshot(centred.snapshot(), 0);
-  spec.vehicle.bodies[0].position[2] = rest.z;
-  for (VehicleElement& e : spec.vehicle.elements) e.attachments[1][2] = rest.z;
-  spec.run.initial.y = kY0;
-  return spec;
-}
-
 // The file of one wheelset and the lone wheelset's run, started from the same state (the vehicle
 // rests with its wheelset held at y0, the spin where its creep torques balance; the lone run from
 // y0 with that spin): the same equations (VehicleLinearStability's test: the same eigenvalues)
-// integrated with the same settings, so the same switches at the same times. What differs is the
-// Newton matrix (the vehicle's forward differences of the whole residual, the wheelset's own), so
-// the corrector's iterates, within the integrator's tolerances: rtol 1e-6 of y (5 mm) is 5 nm a
+// integrated with the same tolerances, so the same switches at the same times. What differs is
+// the Newton matrix (the vehicle's forward differences of the whole residual, rebuilt when cj
+// changes by 25 %; the wheelset's own, at every change), so the corrector's iterates, within the integrator's tolerances: rtol 1e-6 of y (5 mm) is 5 nm a
 // step, some tens of nm over the run's steps (measured: 5e-8 m, and 1.5e-6 s between the switch
 // times). Tolerances 5e-7 m of y over the run, 1e-5 s per switch time; a lost switch, or a
 // restart from inconsistent values (a velocity not projected, a wrong normal force), moves the
 // run by micrometres within milliseconds.
 TEST(VehicleSwitching, TheSingleWheelsetFileSwitchesAsTheLoneWheelset) {
-  const VehicleRunSpec spec = single_wheelset_run();
+  const VehicleRunSpec spec = test::single_wheelset_run(kSpeed, kY0, kTEnd);
   VehicleSimulation vehicle(spec, onepoint(kR0), kR0);
   std::vector<WheelsetSnapshot> vehicle_out;
   vehicle.on_output([&](const VehicleSnapshot& s) { vehicle_out.push_back(vehicle.wheelset_snapshot(s, 0)); });
   vehicle.start();
   ASSERT_FALSE(vehicle_out.empty());
-  RunSpec lone;
-  lone.wheelset = spec.run.wheelset;
-  apply_single_wheelset(spec.vehicle, lone.wheelset);
-  lone.integrator = spec.run.integrator;
-  lone.initial.y = kY0;
-  lone.initial.spin_rate_offset = vehicle_out.front().spin_rate - lone.wheelset.speed / kR0;
+  const RunSpec lone = test::lone_run_of(spec, vehicle_out.front().spin_rate);
   vehicle.run();
   ASSERT_EQ(vehicle.state(), RunState::kFinished) << vehicle.message();
 
@@ -153,7 +112,7 @@ double excess_over_lowest(const WheelsetGeometry& geometry, const WheelsetSnapsh
 TEST(VehicleSwitching, EveryWheelOfTheBogieFollowsTheLowestMinimum) {
   constexpr double r0 = 0.425;
   VehicleRunSpec spec;
-  spec.vehicle = shipped("cooperrider-bogie");
+  spec.vehicle = test::shipped_vehicle("cooperrider-bogie");
   spec.run.wheelset.material.friction = 0.15;
   spec.run.wheelset.speed = 60.0;
   spec.run.initial.y = 1e-3;

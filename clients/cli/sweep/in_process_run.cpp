@@ -14,9 +14,11 @@ run_summary_t run_in_process(const protocol::RunRequest& request) {
   const auto start = std::chrono::steady_clock::now();
   const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(request.geometry));
   const auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  if (request.vehicle) {  // a vehicle of several bodies: no swaps (run_request_from refuses them)
+  if (request.vehicle) {  // a vehicle of several bodies
     VehicleSimulation simulation(VehicleRunSpec{*request.vehicle, request.spec, std::nullopt},
                                  in_process_contact(request.model, geometry), request.geometry.track.nominal_radius);
+    for (const protocol::ScheduledSwap& swap : request.swaps)
+      simulation.schedule_swap(swap.t, in_process_contact(swap.model, geometry));
     simulation.start();
     simulation.run();
     run_summary_t summary = protocol::to_summary_message(simulation, request.run_id, 0, wall());

@@ -157,6 +157,23 @@ void settle_elastic(const InitialisationContext& context, std::vector<double>& y
   throw std::runtime_error(msg.str());
 }
 
+void adapt_to_formulation(const InitialisationContext& context, ContactFormulation from, std::vector<double>& y,
+                          const std::array<double, 2>& normal_forces, double z_acceleration,
+                          double roll_acceleration) {
+  if (context.formulation == ContactFormulation::kRigid) {
+    if (from == ContactFormulation::kElastic) {
+      y.resize(kRigidUnknowns, 0.0);
+      y[kUnknownNormalLeft] = normal_forces[0] / context.equations.force_scale();
+      y[kUnknownNormalRight] = normal_forces[1] / context.equations.force_scale();
+    }
+    project_positions(context, y);
+    project_velocities(context, y);
+  } else if (from == ContactFormulation::kRigid) {
+    y.resize(kElasticUnknowns);
+    settle_elastic(context, y, z_acceleration, roll_acceleration);
+  }
+}
+
 void consistent_derivatives(const InitialisationContext& context, std::vector<double>& y, std::vector<double>& yp) {
   const WheelsetEquations& equations = context.equations;
   const ContactFormulation formulation = context.formulation;

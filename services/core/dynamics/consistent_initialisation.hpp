@@ -6,6 +6,7 @@
 /// the derivatives (rigid: also the normal forces) consistent with a state. WheelsetSimulation
 /// uses them at its start, at every restart after an event and at every model swap.
 
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -64,6 +65,15 @@ void project_velocities(const InitialisationContext& context, std::vector<double
 /// finite-difference Jacobian and step halving. @throws std::runtime_error when none is found.
 void settle_elastic(const InitialisationContext& context, std::vector<double>& y, double z_acceleration,
                     double roll_acceleration);
+
+/// The state y of formulation `from` made one of the context's formulation (a model swap): to
+/// rigid, its normal forces from normal_forces [N] (from elastic; from rigid y keeps its own), then
+/// positions and velocities projected onto the constraints; rigid to elastic, settled on the
+/// elastic contact at the vertical and roll accelerations z_acceleration [m/s^2] and
+/// roll_acceleration [rad/s^2] it had. @throws what the projections and settle_elastic throw.
+void adapt_to_formulation(const InitialisationContext& context, ContactFormulation from, std::vector<double>& y,
+                          const std::array<double, 2>& normal_forces, double z_acceleration,
+                          double roll_acceleration);
 
 /// y' consistent with y; rigid: also the normal forces in y (from the constraints on the
 /// acceleration level), the multipliers set to 0.

@@ -5,9 +5,11 @@
 /// (wheelset_simulation.hpp) or a vehicle's (core/vehicle_dynamics/vehicle_simulation.hpp). Started
 /// once, then advanced one integrator step at a time until it is over.
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/dynamics/contact_evaluator.hpp"
 #include "core/dynamics/run_counters.hpp"
 
 namespace wrc {
@@ -31,6 +33,10 @@ class Simulation {
   virtual bool advance() = 0;
   /// Ends the run at the next step boundary with RunState::kStopped.
   virtual void request_stop() = 0;
+  /// A live swap to next at the next step boundary (the model of every wheelset).
+  virtual void request_swap(std::shared_ptr<ContactEvaluator> next) = 0;
+  /// A swap to next at the first step boundary at or after time t [s].
+  virtual void schedule_swap(double t, std::shared_ptr<ContactEvaluator> next) = 0;
   virtual RunState state() const = 0;
   /// Why the run failed or stopped (empty while it runs or when it finished).
   virtual const std::string& message() const = 0;

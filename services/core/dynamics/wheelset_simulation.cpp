@@ -273,30 +273,10 @@ void WheelsetSimulation::fail(const std::string& why) {
   message_ = why;
 }
 
-void WheelsetSimulation::request_swap(std::shared_ptr<ContactEvaluator> next) { pending_swap_ = std::move(next); }
+void WheelsetSimulation::request_swap(std::shared_ptr<ContactEvaluator> next) { swap_queue_.request(std::move(next)); }
 
 void WheelsetSimulation::schedule_swap(double t, std::shared_ptr<ContactEvaluator> next) {
-  const auto later = std::upper_bound(scheduled_swaps_.begin(), scheduled_swaps_.end(), t,
-                                      [](double time, const ScheduledSwap& s) { return time < s.t; });
-  scheduled_swaps_.insert(later, ScheduledSwap{t, std::move(next)});
-}
-
-void WheelsetSimulation::adapt_to_swap(ContactFormulation from, std::vector<double>& y,
-                                       const std::array<double, 2>& normal_forces, double z_acceleration,
-                                       double roll_acceleration) {
-  const ContactFormulation to = contact_.formulation();
-  if (to == ContactFormulation::kRigid) {
-    if (from == ContactFormulation::kElastic) {
-      y.resize(kRigidUnknowns, 0.0);
-      y[kUnknownNormalLeft] = normal_forces[0] / equations_.force_scale();
-      y[kUnknownNormalRight] = normal_forces[1] / equations_.force_scale();
-    }
-    project_positions(initialisation(), y);
-    project_velocities(initialisation(), y);
-  } else if (from == ContactFormulation::kRigid) {
-    y.resize(kElasticUnknowns);
-    settle_elastic(initialisation(), y, z_acceleration, roll_acceleration);
-  }
+  swap_queue_.schedule(t, std::move(next));
 }
 
 void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
@@ -321,7 +301,7 @@ void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
       y.resize(kRigidUnknowns);
     }
     contact_.replace(next, to, FollowedBranches{});
-    adapt_to_swap(from, y, normal_forces, z_acceleration, roll_acceleration);
+    adapt_to_formulation(initialisation(), from, y, normal_forces, z_acceleration, roll_acceleration);
     begin_segment(y, false);
     record_step_contact(true);
     swaps_.push_back({t_, previous->model(), next->model()});
@@ -436,11 +416,7 @@ bool WheelsetSimulation::after_step(const IdaStep& step) {
   }
   // A scheduled swap acts at the first step boundary at or after its time, as a live one does
   // at the first boundary after it arrived (no stop time: the steps stay those of the live run).
-  while (!scheduled_swaps_.empty() && t_ >= scheduled_swaps_.front().t) {
-    std::shared_ptr<ContactEvaluator> next = std::move(scheduled_swaps_.front().next);
-    scheduled_swaps_.pop_front();
-    perform_swap(std::move(next));
-  }
+  while (std::shared_ptr<ContactEvaluator> next = swap_queue_.take_due(t_)) perform_swap(std::move(next));
   if (counters().steps >= spec_.integrator.max_steps) {
     fail("more than " + std::to_string(spec_.integrator.max_steps) + " steps before t_end");
     return false;
@@ -460,7 +436,7 @@ bool WheelsetSimulation::advance() {
     return false;
   }
   try {
-    if (pending_swap_) perform_swap(std::exchange(pending_swap_, nullptr));
+    if (std::shared_ptr<ContactEvaluator> next = swap_queue_.take_requested()) perform_swap(std::move(next));
     last_contact_error_.clear();
     last_solver_message_.clear();
     return after_step(integrator_.step(spec_.integrator.t_end));

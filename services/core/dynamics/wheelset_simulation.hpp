@@ -17,6 +17,7 @@
 
 #include "core/dynamics/consistent_initialisation.hpp"
 #include "core/dynamics/contact_evaluator.hpp"
+#include "core/dynamics/swap_queue.hpp"
 #include "core/dynamics/contact_switching.hpp"
 #include "core/dynamics/ida_integrator.hpp"
 #include "core/dynamics/output_sampler.hpp"
@@ -70,12 +71,12 @@ class WheelsetSimulation : public Simulation, private DaeSystem {
   void run();
 
   /// Takes effect at the next step boundary (the next advance()).
-  void request_swap(std::shared_ptr<ContactEvaluator> next);
+  void request_swap(std::shared_ptr<ContactEvaluator> next) override;
   /// A swap to next at the first step boundary at or after time t [s]: reproduces, bit for bit, a
   /// live swap recorded at t (which took effect at a step boundary). Every scheduled swap takes
   /// effect, in the order of their times (of equal times, in the order scheduled); several due at
   /// one boundary are performed there one after the other.
-  void schedule_swap(double t, std::shared_ptr<ContactEvaluator> next);
+  void schedule_swap(double t, std::shared_ptr<ContactEvaluator> next) override;
   /// Ends the run at the next step boundary with RunState::kStopped.
   void request_stop() override { stop_requested_ = true; }
 
@@ -121,9 +122,6 @@ class WheelsetSimulation : public Simulation, private DaeSystem {
   std::vector<double> initial_state();
   void begin_segment(std::vector<double> y, bool first);
   void perform_swap(std::shared_ptr<ContactEvaluator> next);
-  /// The state after a swap from formulation from to the current one.
-  void adapt_to_swap(ContactFormulation from, std::vector<double>& y, const std::array<double, 2>& normal_forces,
-                     double z_acceleration, double roll_acceleration);
   /// One IDASolve step's aftermath; false once the run is over.
   bool after_step(const IdaStep& step);
   void handle_roots();
@@ -157,12 +155,7 @@ class WheelsetSimulation : public Simulation, private DaeSystem {
   std::string last_contact_error_;
   std::string last_solver_message_;  // IDA's last error or warning text, for a failure's message
   bool stop_requested_ = false;
-  std::shared_ptr<ContactEvaluator> pending_swap_;
-  struct ScheduledSwap {
-    double t = 0;  // [s]
-    std::shared_ptr<ContactEvaluator> next;
-  };
-  std::deque<ScheduledSwap> scheduled_swaps_;  // in the order of their times
+  SwapQueue swap_queue_;
   RunCounters accumulated_;  // finished segments
   RunCounters own_;          // counted here, not by IDA (Jacobians, restarts, switches)
   std::vector<SwapRecord> swaps_;

@@ -16,6 +16,23 @@ VehicleContact::VehicleContact(std::shared_ptr<ContactEvaluator> evaluator, cons
     wheelsets_.emplace_back(evaluator_, equations.wheelset(w), rails_move);
 }
 
+void VehicleContact::replace(std::shared_ptr<ContactEvaluator> evaluator, ContactFormulation f,
+                             const std::vector<FollowedBranches>& branches) {
+  if (!evaluator) throw std::invalid_argument("VehicleContact::replace: no contact evaluator");
+  if (!branches.empty() && branches.size() != wheelsets_.size())
+    throw std::invalid_argument("VehicleContact::replace: branches of " + std::to_string(branches.size()) +
+                                " wheelsets for " + std::to_string(wheelsets_.size()));
+  evaluator_ = std::move(evaluator);
+  for (size_t w = 0; w < wheelsets_.size(); ++w)
+    wheelsets_[w].replace(evaluator_, f, branches.empty() ? FollowedBranches{} : branches[w]);
+}
+
+std::vector<FollowedBranches> VehicleContact::branches() const {
+  std::vector<FollowedBranches> b;
+  for (const WheelsetContact& c : wheelsets_) b.push_back(c.branches());
+  return b;
+}
+
 std::vector<int> VehicleContact::unknowns() const {
   std::vector<int> n;
   for (const WheelsetContact& c : wheelsets_) n.push_back(c.unknowns());

@@ -37,6 +37,13 @@ class VehicleContact {
   std::vector<WheelsetContactView> at(const VehicleLayout& layout, const double* y);
 
   void clear_cache();
+  /// Another evaluator for every wheelset (a model swap, or its undoing), each in formulation f on
+  /// the branches of branches (one per wheelset; empty: none followed); the caches cleared.
+  /// @throws std::invalid_argument for a null evaluator or branches of another count.
+  void replace(std::shared_ptr<ContactEvaluator> evaluator, ContactFormulation f,
+               const std::vector<FollowedBranches>& branches = {});
+  /// Each wheelset's followed branches.
+  std::vector<FollowedBranches> branches() const;
   /// contact_queries (batches) and contact_configurations so far; every other counter 0.
   const RunCounters& counters() const { return counters_; }
 

@@ -257,7 +257,8 @@ void VehicleSimulation::name_switches(size_t first, size_t w) {
 
 void VehicleSimulation::restart(std::vector<std::vector<double>> blocks) {
   equations_.place(t_);
-  for (size_t w = 0; w < equations_.wheelset_count(); ++w) {
+  const bool rigid = formulation() == ContactFormulation::kRigid;
+  for (size_t w = 0; w < equations_.wheelset_count() && rigid; ++w) {
     const size_t first = switch_log_.size();
     settle_on_lowest_branches(switching(w), blocks[equations_.wheelset_body(w)]);
     name_switches(first, w);
@@ -267,11 +268,56 @@ void VehicleSimulation::restart(std::vector<std::vector<double>> blocks) {
       vehicle_consistent_derivatives(dae_, t_, y, [this](size_t w) { return initialisation(w); });
   accumulated_ += integrator_.counters();
   ++own_.restarts;
-  integrator_.begin(t_, y, yp,
-                    vehicle_segment(spec_.run.integrator, equations_, dae_.layout(),
-                                    formulation() == ContactFormulation::kRigid));
+  integrator_.begin(t_, y, yp, vehicle_segment(spec_.run.integrator, equations_, dae_.layout(), rigid));
   contact_.clear_cache();
   record_step_contact(true);
+}
+
+void VehicleSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
+  if (!next) return;
+  const ContactFormulation from = formulation();
+  const ContactFormulation to = formulation_of(*next);
+  const std::shared_ptr<ContactEvaluator> previous = contact_.evaluator();
+  const std::vector<FollowedBranches> previous_branches = contact_.branches();
+  equations_.place(t_);
+  const VehicleLayout layout = dae_.layout();
+  const std::vector<double> y = integrator_.state();
+  const double* yp = integrator_.derivative_data();
+  std::vector<std::vector<double>> blocks = split_by_body(layout, y);
+  // Before the swap, in the old formulation: each wheelset's normal forces (elastic to rigid) and
+  // vertical and roll accelerations (rigid to elastic); a wheel in two-point contact carries its
+  // load on its first point.
+  const size_t wheelsets = equations_.wheelset_count();
+  std::vector<std::array<double, 2>> normal_forces(wheelsets, {0.0, 0.0});
+  std::vector<std::array<double, 2>> accelerations(wheelsets);
+  const std::vector<WheelsetContactView> views = contact_.at(layout, y.data());
+  for (size_t w = 0; w < wheelsets; ++w) {
+    const size_t b = equations_.wheelset_body(w);
+    const int offset = layout.offset[b];
+    accelerations[w] = {yp[offset + kUnknownZDot], yp[offset + kUnknownRollDot]};
+    std::vector<double>& block = blocks[b];
+    if (from == ContactFormulation::kElastic && to == ContactFormulation::kRigid)
+      for (int i = 0; i < 2; ++i)
+        normal_forces[w][static_cast<size_t>(i)] =
+            equations_.wheelset(w).normal_force(from, block.data(), *views[w].result, i);
+    if (from == ContactFormulation::kRigid && previous_branches[w].any_two_point()) {
+      for (int i = 0; i < 2; ++i) block[static_cast<size_t>(kUnknownNormalLeft + i)] += block[static_cast<size_t>(kUnknownSecondNormalLeft + i)];
+      block.resize(kRigidUnknowns);
+    }
+  }
+  try {
+    contact_.replace(next, to);
+    for (size_t w = 0; w < wheelsets; ++w)
+      adapt_to_formulation(initialisation(w), from, blocks[equations_.wheelset_body(w)], normal_forces[w],
+                           accelerations[w][0], accelerations[w][1]);
+    restart(std::move(blocks));
+    swaps_.push_back({t_, previous->model(), next->model()});
+    own_.add_evaluator(*previous);
+  } catch (const std::exception& e) {
+    contact_.replace(previous, from, previous_branches);
+    message_ = "swap to " + next->model() + " at t = " + exact_number_text(t_) + " s failed, keeping " +
+               previous->model() + ": " + e.what();
+  }
 }
 
 void VehicleSimulation::handle_roots() {
@@ -350,6 +396,7 @@ bool VehicleSimulation::advance() {
     return false;
   }
   const double t_end = spec_.run.integrator.t_end;
+  if (std::shared_ptr<ContactEvaluator> next = swap_queue_.take_requested()) perform_swap(std::move(next));
   last_error_.clear();
   last_solver_message_.clear();
   const IdaStep step = integrator_.step(t_end);
@@ -401,6 +448,9 @@ bool VehicleSimulation::advance() {
     state_ = RunState::kFinished;
     return false;
   }
+  // A scheduled swap acts at the first step boundary at or after its time, as a live one does at
+  // the first boundary after it arrived.
+  while (std::shared_ptr<ContactEvaluator> next = swap_queue_.take_due(t_)) perform_swap(std::move(next));
   return true;
 }
 

@@ -11,8 +11,8 @@
 /// two-point sliding (core/dynamics/contact_switching.hpp) at its events, and the vehicle restarted
 /// from consistent values (vehicle_restart.hpp).
 ///
-/// What the lone wheelset's run has and this one does not have yet (docs/vehicle.md, "Running a
-/// vehicle"): model swaps, the states sent ahead with the accepted step.
+/// Model swaps change every wheelset's model at a step boundary. What the lone wheelset's run has
+/// and this one does not have yet (docs/vehicle.md): the states sent ahead with the accepted step.
 
 #include <array>
 #include <functional>
@@ -23,6 +23,7 @@
 
 #include "core/dynamics/contact_evaluator.hpp"
 #include "core/dynamics/contact_switching.hpp"
+#include "core/dynamics/swap_queue.hpp"
 #include "core/dynamics/ida_integrator.hpp"
 #include "core/dynamics/output_sampler.hpp"
 #include "core/dynamics/run_extremes.hpp"
@@ -111,7 +112,12 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   void run();
   /// Ends the run at the next step boundary with RunState::kStopped.
   void request_stop() override { stop_requested_ = true; }
-  /// None: a vehicle run takes no model swap yet.
+  /// A live swap of every wheelset's model at the next step boundary.
+  void request_swap(std::shared_ptr<ContactEvaluator> next) override { swap_queue_.request(std::move(next)); }
+  /// A swap at the first step boundary at or after time t [s].
+  void schedule_swap(double t, std::shared_ptr<ContactEvaluator> next) override {
+    swap_queue_.schedule(t, std::move(next));
+  }
   const std::vector<SwapRecord>& swaps() const override { return swaps_; }
   /// Wheelset w at the output sample s in the lone wheelset's terms (z: the centre's height above
   /// the rails), with the contact model in use.
@@ -183,6 +189,10 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   /// A new segment from the blocks (per body): every wheelset settled on its lowest branches,
   /// derivatives consistent, the step's contact recorded anew.
   void restart(std::vector<std::vector<double>> blocks);
+  /// Every wheelset's model swapped to next: each wheelset's block made one of next's formulation
+  /// (as the lone wheelset's swap makes it), the vehicle restarted there. A swap that fails keeps
+  /// the model and says why in message() without ending the run.
+  void perform_swap(std::shared_ptr<ContactEvaluator> next);
   /// The state of spec_.start (every wheelset in its own formulation, projected when rigid).
   std::vector<double> continued_state();
   /// Rigid: the rest state on the nominal rails (the held wheelsets held), each wheelset then
@@ -208,7 +218,8 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   std::string last_error_;           // what the equations last threw (the contact model's reason)
   std::string last_solver_message_;  // IDA's last message
   bool stop_requested_ = false;
-  std::vector<SwapRecord> swaps_;  // none yet
+  std::vector<SwapRecord> swaps_;
+  SwapQueue swap_queue_;
   RunCounters accumulated_;  // IDA's counters of the segments before the current one
   RunCounters own_;          // the switches and restarts
   std::vector<SwitchRecord> switch_log_;

@@ -410,9 +410,10 @@ TEST_F(DynamicsServiceTest, LossyBusKillsNoServiceAndRunsEndTheSame) {
   launcher->wait(20.0);
 }
 
-// A live swap during a vehicle run (the Manchester coach, spline, over the bus, the demo's track) is
-// refused: the run keeps its model to the end, lists no swap, and its summary says why.
-TEST_F(DynamicsServiceTest, ALiveSwapOfAVehicleRunIsRefusedWithTheReason) {
+// A live swap during a vehicle run (the Manchester coach, spline, over the bus, the demo's track)
+// changes every wheelset's model at the next step: the run goes on with the one-point service to
+// its end, lists the swap and ends with the new model, with all four wheelsets in its summary.
+TEST_F(DynamicsServiceTest, ALiveSwapOfAVehicleRunChangesEveryWheelsetsModel) {
   const std::string log = temp_path("launch.log");
   auto launcher = launch({"geometry", "contact-onepoint", "contact-spline", "dynamics"}, log);
   for (const char* model : {"onepoint", "spline", "dynamicsd"})
@@ -437,12 +438,10 @@ TEST_F(DynamicsServiceTest, ALiveSwapOfAVehicleRunIsRefusedWithTheReason) {
   ASSERT_TRUE(handle_until([&] { return cli.wait(0.0); }, kRunDeadline)) << read_text(temp_path("coach.log"));
   const nlohmann::json coach = summary(args);
   ASSERT_EQ(coach["state"], "finished") << coach.dump();
-  EXPECT_EQ(coach["model"], "spline");
-  EXPECT_TRUE(coach["swaps"].empty()) << coach["swaps"];
-  EXPECT_NE(coach["message"].get<std::string>().find("swap to onepoint refused, keeping spline: a vehicle run takes no "
-                                                       "model swap yet"),
-            std::string::npos)
-      << coach["message"];
+  EXPECT_EQ(coach["model"], "onepoint");
+  ASSERT_EQ(coach["swaps"].size(), 1u) << coach["swaps"];
+  EXPECT_EQ(coach["swaps"][0]["model"], "onepoint") << coach["swaps"];
+  EXPECT_GT(coach["swaps"][0]["t"].get<double>(), 0.2) << coach["swaps"];
   EXPECT_EQ(coach["vehicle"]["wheelsets"].size(), 4u);
 }
 

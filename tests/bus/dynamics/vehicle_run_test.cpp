@@ -132,9 +132,6 @@ TEST_F(VehicleRunTest, WhatAVehicleFileGivesIsNotAnOption) {
   EXPECT_NE(status, 0);
   EXPECT_NE(log.find("--mass: a vehicle of several bodies takes it from its file (--vehicle)"), std::string::npos)
       << log;
-  EXPECT_TRUE(run("car-swap", {"--vehicle", car, "--swap-at", "1:onepoint"}, &status, &log).empty());
-  EXPECT_NE(status, 0);
-  EXPECT_NE(log.find("--swap-at: a vehicle of several bodies takes no model swap yet"), std::string::npos) << log;
 }
 
 }  // namespace

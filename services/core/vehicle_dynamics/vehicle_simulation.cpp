@@ -290,13 +290,15 @@ void VehicleSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
   const size_t wheelsets = equations_.wheelset_count();
   std::vector<std::array<double, 2>> normal_forces(wheelsets, {0.0, 0.0});
   std::vector<std::array<double, 2>> accelerations(wheelsets);
-  const std::vector<WheelsetContactView> views = contact_.at(layout, y.data());
+  const bool to_rigid = from == ContactFormulation::kElastic && to == ContactFormulation::kRigid;
+  const std::vector<WheelsetContactView> views =
+      to_rigid ? contact_.at(layout, y.data()) : std::vector<WheelsetContactView>{};
   for (size_t w = 0; w < wheelsets; ++w) {
     const size_t b = equations_.wheelset_body(w);
     const int offset = layout.offset[b];
     accelerations[w] = {yp[offset + kUnknownZDot], yp[offset + kUnknownRollDot]};
     std::vector<double>& block = blocks[b];
-    if (from == ContactFormulation::kElastic && to == ContactFormulation::kRigid)
+    if (to_rigid)
       for (int i = 0; i < 2; ++i)
         normal_forces[w][static_cast<size_t>(i)] =
             equations_.wheelset(w).normal_force(from, block.data(), *views[w].result, i);
@@ -396,7 +398,12 @@ bool VehicleSimulation::advance() {
     return false;
   }
   const double t_end = spec_.run.integrator.t_end;
-  if (std::shared_ptr<ContactEvaluator> next = swap_queue_.take_requested()) perform_swap(std::move(next));
+  try {
+    if (std::shared_ptr<ContactEvaluator> next = swap_queue_.take_requested()) perform_swap(std::move(next));
+  } catch (const std::exception& e) {
+    fail("at t = " + exact_number_text(t_) + " s: the model swap: " + e.what());
+    return false;
+  }
   last_error_.clear();
   last_solver_message_.clear();
   const IdaStep step = integrator_.step(t_end);
@@ -450,7 +457,12 @@ bool VehicleSimulation::advance() {
   }
   // A scheduled swap acts at the first step boundary at or after its time, as a live one does at
   // the first boundary after it arrived.
-  while (std::shared_ptr<ContactEvaluator> next = swap_queue_.take_due(t_)) perform_swap(std::move(next));
+  try {
+    while (std::shared_ptr<ContactEvaluator> next = swap_queue_.take_due(t_)) perform_swap(std::move(next));
+  } catch (const std::exception& e) {
+    fail("at t = " + exact_number_text(t_) + " s: the model swap: " + e.what());
+    return false;
+  }
   return true;
 }
 

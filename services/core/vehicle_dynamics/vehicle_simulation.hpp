@@ -198,7 +198,7 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   /// Rigid: the rest state on the nominal rails (the held wheelsets held), each wheelset then
   /// settled on its lowest branches of the irregular rails at t = 0.
   std::vector<double> placed_on_rails(const std::vector<HeldWheelset>& held);
-  /// Each wheelset's switches of the blocks' time (log entries from first on) named by wheelset.
+  /// Names wheelset w the wheelset of the switches logged from entry first on.
   void name_switches(size_t first, size_t w);
 
   VehicleRunSpec spec_;

@@ -97,10 +97,7 @@ std::vector<OptionSpec> bifurcation_option_specs() {
   for (const auto& p : integrator_settings_table())
     if (is_integrator_option(p.key)) specs.push_back(parameter_option_spec(p, p.get(IntegratorSettings{})));
   for (auto& spec : profile_option_specs()) specs.push_back(spec);
-  for (auto& spec : fit_option_specs()) {
-    spec.help = "spline model only: " + spec.help;
-    specs.push_back(spec);
-  }
+  for (auto& spec : spline_model_fit_option_specs()) specs.push_back(spec);
   return specs;
 }
 

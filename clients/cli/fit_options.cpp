@@ -43,6 +43,18 @@ std::vector<OptionSpec> fit_option_specs() {
   return specs;
 }
 
+std::vector<OptionSpec> spline_model_fit_option_specs() {
+  std::vector<OptionSpec> specs = fit_option_specs();
+  for (OptionSpec& spec : specs) spec.help = "spline model only: " + spec.help;
+  return specs;
+}
+
+std::string first_fit_option(const Options& options) {
+  for (const OptionSpec& spec : fit_option_specs())
+    if (options.has(spec.name)) return spec.name;
+  return "";
+}
+
 SplineFitOptions fit_options_from(const Options& options) {
   SplineFitOptions o = options.has("--paper-variant") ? SplineFitOptions::paper_benchmark() : SplineFitOptions{};
   try {

@@ -11,11 +11,18 @@
 namespace wrc::cli {
 
 /// --knots, --degree, --box, --knot-placement, --samples, --sample-step, --jump-weight,
-/// --jump-band, --flange-angle, --paper-variant, --threads.
+/// --jump-band, --flange-region-angle, --paper-variant, --threads.
 std::vector<OptionSpec> fit_option_specs();
 
 /// SplineFitOptions from parsed options (defaults of SplineFitOptions; --paper-variant starts from
 /// SplineFitOptions::paper_benchmark()). Throws UsageError naming the option.
 SplineFitOptions fit_options_from(const Options& options);
+
+/// fit_option_specs() for a command whose contact model may be the spline model (run, sweep,
+/// bifurcation), each help beginning "spline model only: ".
+std::vector<OptionSpec> spline_model_fit_option_specs();
+
+/// The first fit option given in options ("--box", ...), or empty when none is.
+std::string first_fit_option(const Options& options);
 
 }  // namespace wrc::cli

@@ -83,7 +83,7 @@ std::shared_ptr<ContactEvaluator> DynamicsService::make_contact(const std::strin
     ContactModelData data;
     if (contact_model_entry(model).needs_data) {
       // The fit takes about a second: the heartbeat goes on from its progress reports.
-      data.splines = fit_spline_geometry(*geometry_, {}, [this](long, long, const std::string&) {
+      data.splines = fit_spline_geometry(*geometry_, request_.spline_fit, [this](long, long, const std::string&) {
                        if (keepalive_) keepalive_();
                      }).model;
     }

@@ -149,7 +149,7 @@ std::string leaf_text(const nlohmann::json& v) {
 std::pair<std::string, std::string> critical_speed_of(const protocol::RunRequest& request, const std::string& speeds) {
   const std::vector<double> scan_speeds = critical_speed_scan(speeds);
   const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(request.geometry));
-  const auto contact = in_process_contact(request.model, geometry);
+  const auto contact = in_process_contact(request.model, geometry, request.spline_fit);
   const double r0 = request.geometry.track.nominal_radius;
   CriticalSpeed c;
   if (request.vehicle) {  // a vehicle of several bodies: its own (its loads are its file's)

@@ -37,7 +37,7 @@ const std::vector<Parameter<SplineFitOptions>>& spline_fit_table() {
       member_parameter<O>({"transition_load", nullptr, "N",
                            "normal load per wheel whose Hertz approach sets the blend's half-width",
                            kNumber, closed(kMinTransitionLoad, kMaxTransitionLoad)}, &O::transition_load),
-      member_parameter<O>({"flange_angle", nullptr, "rad", "profile slope angle that starts the flange region",
+      member_parameter<O>({"flange_angle", "--flange-region-angle", "rad", "profile slope angle that starts the flange region",
                            kNumber, {0.1, Bound::kOpen, 1.5, Bound::kOpen}}, &O::flange_angle),
       member_parameter<O>({"clearance_cap", "", "m", "cap of the fitted flange clearance", kNumber, kPositive},
                           &O::clearance_cap),

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/models/contact_model_factory.hpp"
+#include "protocol/geometry/fit_options_codec.hpp"
 #include "protocol/geometry/track_codec.hpp"
 #include "protocol/message_fields.hpp"
 #include "protocol/run/run_request_table.hpp"
@@ -70,6 +71,7 @@ run_command_t to_message(const RunRequest& r) {
     m.scheduled_swap_times.push_back(swap.t);
     m.scheduled_swap_models.push_back(swap.model);
   }
+  m.spline_fit = to_message(r.spline_fit);
   return m;
 }
 
@@ -109,6 +111,11 @@ RunRequest from_message(const run_command_t& m) {
     contact_model_entry(m.scheduled_swap_models[k]);
     r.swaps.push_back({t, m.scheduled_swap_models[k]});
     last = t;
+  }
+  try {
+    r.spline_fit = from_message(m.spline_fit);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("spline_fit: ") + e.what());
   }
   return r;
 }

@@ -13,6 +13,7 @@
 
 #include "core/dynamics/wheelset_simulation.hpp"
 #include "core/geometry/geometry_spec.hpp"
+#include "core/spline/spline_fit_options.hpp"
 #include "core/vehicle/vehicle_description.hpp"
 #include "wrc/run_command_t.hpp"
 
@@ -43,6 +44,9 @@ struct RunRequest {
   /// A vehicle of several bodies (docs/vehicle.md), run on the vehicle's equations: its masses,
   /// loads and elements replace spec.wheelset's and its suspension; none: the lone wheelset.
   std::optional<VehicleDescription> vehicle;
+  /// The fit of the spline model when the dynamics evaluates it itself (in_process); the spline
+  /// services fit with their own.
+  SplineFitOptions spline_fit;
 };
 
 /// Name of a run_status_t state code, as the summary JSON and the logs write it ("idle",

@@ -145,6 +145,25 @@ if [ "$ready" = 1 ]; then
   else
     echo "coach run failed:"; tail -3 "$report_dir/coach.log"
   fi
+  echo "The whole 1 km curve (parameters/track-curve-R600-1km.json, 1050 m of the same spectrum, seed 1):"
+  echo "the spline model fitted over flange contact too (--box -0.012:0.012,0.004,0.005 --knots 20x2x2),"
+  echo "in-process (the spline services fit the tread's box), at a track run's tolerances (docs/track.md):"
+  wrc irregularities --spectrum erri-low --length 1050 --wavelengths 3:70 --seed 1 \
+    --out "$report_dir/irregularities-1km.csv" 2>&1 | sed 's/^/  /'
+  summary="$report_dir/coach-1km.json"
+  if wrc run --model spline --in-process --vehicle parameters/vehicles/manchester-coach.json --t-end 33.7 \
+      --track parameters/track-curve-R600-1km.json --irregularities "$report_dir/irregularities-1km.csv" \
+      --box -0.012:0.012,0.004,0.005 --knots 20x2x2 --rtol 1e-4 --position-tolerance 1e-6 \
+      --velocity-tolerance 1e-4 --summary "$summary" --history "$report_dir/coach-1km.csv" --output-period 0.01 \
+      2>"$report_dir/coach-1km.log"; then
+    printf '%-18s %9s %12s %9s\n' wheelset Y/Q_max Y/Q_2m_max sumY[kN]
+    jq -r '.vehicle.wheelsets[] | .run_quantities as $q | [.name, ([$q.y_over_q.left.max, $q.y_over_q.right.max] | max),
+        ([$q.y_over_q_2m.left.max, $q.y_over_q_2m.right.max] | max), $q.track_shift_force.max / 1e3] | @tsv' "$summary" |
+      awk -F'\t' '{ printf "%-18s %9.3f %12.3f %9.1f\n", $1, $2, $3, $4 }'
+    jq -r '"wall time \(.wall_time * 100 | round / 100) s for \(.t_end) s simulated (\(.t_end / .wall_time * 10 | round / 10) times real time), \(.counters.steps) steps"' "$summary"
+  else
+    echo "whole-curve coach run failed:"; tail -3 "$report_dir/coach-1km.log"
+  fi
 else
   echo "the contact services did not report READY; launcher log:"; cat "$log"
 fi
@@ -211,6 +230,7 @@ if [ "${#curves[@]}" -gt 0 ]; then
 fi
 [ -s "$report_dir/irregularities.csv" ] && plot irregularities irregularities "$report_dir/irregularities.csv"
 [ -s "$report_dir/coach.csv" ] && plot coach-wheelsets wheelsets "$report_dir/coach.csv"
+[ -s "$report_dir/coach-1km.csv" ] && plot coach-1km-wheelsets wheelsets "$report_dir/coach-1km.csv"
 plot geometry geometry --y-from -0.008 --y-to 0.008
 plot conicity conicity --a-to 0.008
 plot profiles profiles --y 0.005

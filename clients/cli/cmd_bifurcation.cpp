@@ -16,7 +16,7 @@
 #include "cli/centred_run_options.hpp"
 #include "cli/run_options.hpp"
 #include "cli/command.hpp"
-#include "cli/fit_options.hpp"
+#include "options/fit_options.hpp"
 #include "cli/in_process_contact.hpp"
 #include "cli/options.hpp"
 #include "cli/output_paths.hpp"

@@ -13,7 +13,7 @@
 
 #include "cli/command.hpp"
 #include "cli/fit_on_service.hpp"
-#include "cli/fit_options.hpp"
+#include "options/fit_options.hpp"
 #include "cli/options.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/profile_options.hpp"

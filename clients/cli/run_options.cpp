@@ -9,7 +9,7 @@
 #include "bus/auth/message_auth.hpp"
 #include "bus/service/service_options.hpp"
 #include "bus/transport/guarded_subscription.hpp"
-#include "cli/fit_options.hpp"
+#include "options/fit_options.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/service_starter.hpp"
 #include "core/dynamics/run_parameter_table.hpp"
@@ -156,12 +156,9 @@ protocol::RunRequest run_request_from(const Options& o, std::ostream& notes) {
     request.swaps = parse_swaps(o.text("--swap-at"), spec.integrator.t_end);
   }
   request.in_process = o.has("--in-process");
-  // The spline model's fit travels with the run for the dynamics to fit it itself; a spline
-  // service fits with its own, so a fit option over the bus would change nothing.
-  const std::string fit_option = first_fit_option(o);
-  if (!fit_option.empty() && !request.in_process)
-    throw UsageError(fit_option + ": the fit options apply to the spline model a run evaluates itself (--in-process, "
-                     "a sweep's runs); the spline services fit with their own");
+  // The spline model's fit: the dynamics fits it itself with it (--in-process), or asks the spline
+  // services fitted with it (their key says which fit they serve; wrc run starts one when none is
+  // READY).
   request.spline_fit = fit_options_from(o);
   request.run_id = o.text("--run-id", "run-" + std::to_string(::getpid()));
   if (o.has("--dynamics-instance")) {

@@ -18,6 +18,8 @@
 #include "cli/run_outputs.hpp"
 #include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
+#include "options/fit_options.hpp"
+#include "protocol/contact/contact_service_key.hpp"
 #include "wrc/integrator_stats_t.hpp"
 #include "wrc/run_status_t.hpp"
 
@@ -77,7 +79,11 @@ void RunSession::start_services() {
   for (const std::string& m : models) {
     std::vector<std::string> service_args{"--model", m};
     for (auto& a : geometry_arguments(request_.geometry)) service_args.push_back(a);
-    keep(ensure_service(*session_.lcm, session_.monitor, context, m, key_, "wrc-contactd", service_args));
+    // A spline service fitted as the run asks (its key says which fit it serves).
+    if (contact_model_entry(m).needs_data)
+      for (auto& a : fit_arguments(options_)) service_args.push_back(a);
+    const std::string key = protocol::contact_service_key(m, request_.geometry, request_.spline_fit);
+    keep(ensure_service(*session_.lcm, session_.monitor, context, m, key, "wrc-contactd", service_args));
   }
 }
 

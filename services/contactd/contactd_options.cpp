@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/models/contact_model_factory.hpp"
+#include "options/fit_options.hpp"
 #include "options/geometry_options.hpp"
 #include "options/options.hpp"
 
@@ -18,10 +19,12 @@ std::string model_list() {
   return list;
 }
 
-/// --model, then the profile and track options of the front end's geometry commands (one table).
+/// --model, then the profile and track options of the front end's geometry commands (one table),
+/// then the spline fit's options (wrc fit's).
 std::vector<OptionSpec> contactd_option_specs() {
   std::vector<OptionSpec> specs{{"--model", true, "contact model: " + model_list() + " (required)", ""}};
   for (OptionSpec& s : geometry_option_specs()) specs.push_back(std::move(s));
+  for (OptionSpec& s : spline_model_fit_option_specs()) specs.push_back(std::move(s));
   return specs;
 }
 
@@ -42,6 +45,11 @@ ContactdOptions ContactdOptions::parse(const std::vector<std::string>& args) {
     }
     options.geometry = geometry_spec_from_options(parsed);
     if (options.model.empty()) throw std::invalid_argument("--model is required (" + model_list() + ")");
+    const std::string fit_option = first_fit_option(parsed);
+    if (!fit_option.empty() && !contact_model_entry(options.model).needs_data)
+      throw std::invalid_argument(fit_option + ": a fit option, but the " + options.model +
+                                  " model is not fitted (the spline model is)");
+    options.fit = fit_options_from(parsed);
     return options;
   } catch (const UsageError& e) {
     throw std::invalid_argument(e.what());

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/geometry/geometry_spec.hpp"
+#include "core/spline/spline_fit_options.hpp"
 
 namespace wrc::contactd {
 
@@ -21,6 +22,7 @@ namespace wrc::contactd {
 struct ContactdOptions {
   std::string model;      ///< a registered contact model (contact_model_names())
   GeometrySpec geometry;  ///< profiles, rail cant and track
+  SplineFitOptions fit;   ///< the spline model's fit (its box, knots, ...); the default for the others
 
   /// Parses the arguments ServiceOptions left over. Throws std::invalid_argument with one line
   /// naming the option and value (unknown option, missing value, bad number, unknown model).

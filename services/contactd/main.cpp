@@ -5,7 +5,9 @@
 // contactd/spline_model_source.hpp), then answers every contact_query_t on CONTACT_QUERY.<model> addressed to its
 // instance (or to any instance while it is the model's leader: contactd/instance_filter.hpp) with
 // a contact_reply_t on the query's reply channel, request id echoed. Heartbeats: model, instance,
-// state (STARTING, READY, DRAINING on SIGTERM/SIGINT), geometry key (core/identity/geometry_key.hpp),
+// state (STARTING, READY, DRAINING on SIGTERM/SIGINT), geometry key (core/identity/geometry_key.hpp;
+// the spline model fitted with options other than the default: its model key,
+// protocol/contact/contact_service_key.hpp),
 // model hash (contactd/model_hash.hpp, once built), and the load (queries handled and rejected,
 // handling time mean/p95/max). Replies carry the same key and hash; a query whose non-empty
 // geometry_key differs is rejected. The service adds nothing to the model:
@@ -49,6 +51,7 @@
 #include "contactd/spline_model_source.hpp"
 #include "core/geometry/geometry_spec.hpp"
 #include "core/identity/geometry_key.hpp"
+#include "protocol/contact/contact_service_key.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "protocol/contact/contact_lane.hpp"
 #include "protocol/contact/contact_query_codec.hpp"
@@ -163,7 +166,7 @@ EarlyExit wait_for_spline_model(lcm::LCM& lcm, const wrc::bus::ChannelNames& nam
     return 1;
   }
   served.splines = std::make_unique<wrc::contactd::SplineModelSource>(lcm, names, sender, options.geometry,
-                                                                      wrc::SplineFitOptions{}, kModelRequestPeriod);
+                                                                      options.fit, kModelRequestPeriod);
   wrc::contactd::SplineModelSource& splines = *served.splines;
   activity = [&splines] {
     const std::string& p = splines.last_progress();
@@ -234,7 +237,7 @@ int run(const wrc::bus::ServiceOptions& service, const wrc::contactd::ContactdOp
   const std::string request_channel = names.name(channel::kContactQuery, options.model);
   const std::string sender = sender_name("wrc-contactd", service.instance);
   const std::string instance = service.instance;
-  const std::string key = wrc::geometry_key(options.geometry);
+  const std::string key = wrc::protocol::contact_service_key(options.model, options.geometry, options.fit);
   ServedModel served;
   served.name = options.model;
 

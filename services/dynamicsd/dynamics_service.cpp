@@ -14,6 +14,7 @@
 #include "core/spline/spline_geometry_fit.hpp"
 #include "dynamicsd/bus_contact.hpp"
 #include "dynamicsd/run_end_log.hpp"
+#include "protocol/contact/contact_service_key.hpp"
 #include "wrc/integrator_stats_t.hpp"
 #include "wrc/progress_t.hpp"
 #include "wrc/run_status_t.hpp"
@@ -92,7 +93,7 @@ std::shared_ptr<ContactEvaluator> DynamicsService::make_contact(const std::strin
   BusContactSettings s;
   s.model = model;
   s.instance = request_.instance;
-  s.geometry_key = geometry_key_;
+  s.geometry_key = protocol::contact_service_key(model, request_.geometry, request_.spline_fit);
   s.policy.timeout = request_.contact_timeout;
   s.policy.retries = request_.contact_retries;
   s.wait = request_.contact_wait;
@@ -213,7 +214,9 @@ void DynamicsService::apply_select() {
   try {
     contact_model_entry(select.model);
     if (!request_.in_process) {
-      const std::string missing = missing_service_reason(monitor_, select.model, select.instance, geometry_key_);
+      const std::string missing =
+          missing_service_reason(monitor_, select.model, select.instance,
+                                 protocol::contact_service_key(select.model, request_.geometry, request_.spline_fit));
       if (!missing.empty()) {
         status_message_ = "swap to " + select.model + " refused, keeping " + simulation_->model() + ": " + missing;
         std::cerr << "wrc-dynamicsd: " << bus::log_text(status_message_) << "\n";

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "cli/fit_options.hpp"
+#include "options/fit_options.hpp"
 #include "cli/plot/contour_lines.hpp"
 #include "cli/plot/plot_kind.hpp"
 #include "cli/plot/plot_options.hpp"

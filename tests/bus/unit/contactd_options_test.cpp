@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 /// @file
 /// wrc-contactd's own options (services/contactd/contactd_options.hpp): a full command line lands
-/// in the model and geometry fields; a bad value, a missing value, an unknown option or model and
+/// in the model, geometry and (spline) fit fields; a bad value, a missing value, an unknown option or model and
 /// a missing --model are refused with one line naming the option and the value.
 #include <gtest/gtest.h>
 
@@ -53,6 +53,21 @@ TEST(ContactdOptions, RefusesNamingOptionAndValue) {
   expect_refused({"--model", "twopoint"}, "twopoint");
   expect_refused({"--model", "onepoint", "--inclination", "1:0"}, "--inclination: ");
   expect_refused({"--gauge", "1.435"}, "--model is required (onepoint, interp, multipoint, spline)");
+  expect_refused({"--model", "onepoint", "--box", "-0.012:0.012,0.004,0.005"},
+                 "--box: a fit option, but the onepoint model is not fitted (the spline model is)");
+  expect_refused({"--model", "spline", "--box", "-1:0.012,0.004,0.005"}, "--box: y_min = -1 is outside");
+}
+
+// The spline model's fit options land in its fit (wrc fit's names); without them, the default fit.
+TEST(ContactdOptions, TheSplineServiceTakesTheFitOptions) {
+  const ContactdOptions wide =
+      ContactdOptions::parse({"--model", "spline", "--box", "-0.012:0.012,0.004,0.005", "--knots", "20x2x2"});
+  EXPECT_DOUBLE_EQ(wide.fit.y_min, -0.012);
+  EXPECT_DOUBLE_EQ(wide.fit.y_max, 0.012);
+  EXPECT_DOUBLE_EQ(wide.fit.roll_max, 0.004);
+  EXPECT_EQ(wide.fit.intervals[0], 20);
+  const ContactdOptions plain = ContactdOptions::parse({"--model", "spline"});
+  EXPECT_EQ(plain.fit.canonical_text(), SplineFitOptions{}.canonical_text());
 }
 
 }  // namespace

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
-/// The spline-fit options of the command line (wrc fit; the same names as SplineFitOptions).
+/// The spline-fit options of the command line (wrc fit, run, sweep, bifurcation and wrc-contactd;
+/// the same names as SplineFitOptions).
 
 #include <vector>
 
-#include "cli/options.hpp"
+#include <string>
+
+#include "options/options.hpp"
 #include "core/spline/spline_fit_options.hpp"
 
-namespace wrc::cli {
+namespace wrc {
 
 /// --knots, --degree, --box, --knot-placement, --samples, --sample-step, --jump-weight,
 /// --jump-band, --flange-region-angle, --paper-variant, --threads.
@@ -25,4 +28,8 @@ std::vector<OptionSpec> spline_model_fit_option_specs();
 /// The first fit option given in options ("--box", ...), or empty when none is.
 std::string first_fit_option(const Options& options);
 
-}  // namespace wrc::cli
+/// The fit options given in options as the arguments of another program's command line (a
+/// spline service started for a run): each name, and its value when it takes one.
+std::vector<std::string> fit_arguments(const Options& options);
+
+}  // namespace wrc

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "cli/fit_options.hpp"
+#include "options/fit_options.hpp"
 
 #include <array>
 #include <sstream>
@@ -10,7 +10,7 @@
 #include "core/spline/spline_fit_table.hpp"
 #include "options/parameter_options.hpp"
 
-namespace wrc::cli {
+namespace wrc {
 
 namespace {
 
@@ -55,6 +55,16 @@ std::string first_fit_option(const Options& options) {
   return "";
 }
 
+std::vector<std::string> fit_arguments(const Options& options) {
+  std::vector<std::string> args;
+  for (const OptionSpec& spec : fit_option_specs()) {
+    if (!options.has(spec.name)) continue;
+    args.push_back(spec.name);
+    if (spec.takes_value) args.push_back(options.text(spec.name));
+  }
+  return args;
+}
+
 SplineFitOptions fit_options_from(const Options& options) {
   SplineFitOptions o = options.has("--paper-variant") ? SplineFitOptions::paper_benchmark() : SplineFitOptions{};
   try {
@@ -97,4 +107,4 @@ SplineFitOptions fit_options_from(const Options& options) {
   return o;
 }
 
-}  // namespace wrc::cli
+}  // namespace wrc

@@ -3,7 +3,8 @@
 /// @file
 /// Test support: the vehicle file of one wheelset (parameters/vehicles/single-wheelset.json) run on
 /// the vehicle's equations next to the lone wheelset's run from the same state, on S1002/UIC60:
-/// the reference a vehicle's switches and swaps are compared with.
+/// the reference a vehicle's switches and swaps are compared with; and the Cooperrider bogie's run
+/// they are tried on.
 
 #include <memory>
 #include <string>
@@ -67,6 +68,18 @@ inline RunSpec lone_run_of(const VehicleRunSpec& vehicle, double spin_rate) {
   lone.initial.y = vehicle.run.initial.y;
   lone.initial.spin_rate_offset = spin_rate - lone.wheelset.speed / 0.46;
   return lone;
+}
+
+/// The Cooperrider bogie (parameters/vehicles/cooperrider-bogie.json) on S1002/UIC60 of r0 0.425 m,
+/// friction 0.15, at speed [m/s] to t_end [s], its leading wheelset released y0 [m] off the centre.
+inline VehicleRunSpec cooperrider_bogie_run(double speed, double y0, double t_end) {
+  VehicleRunSpec spec;
+  spec.vehicle = shipped_vehicle("cooperrider-bogie");
+  spec.run.wheelset.material.friction = 0.15;
+  spec.run.wheelset.speed = speed;
+  spec.run.initial.y = y0;
+  spec.run.integrator.t_end = t_end;
+  return spec;
 }
 
 }  // namespace wrc::test

@@ -85,12 +85,7 @@ TEST(VehicleSwap, TheSingleWheelsetFileSwapsAsTheLoneWheelset) {
 // contact, misses by tens of percent; the run reaches its end.
 TEST(VehicleSwap, EveryWheelsetOfTheBogieChangesModel) {
   constexpr double r0 = 0.425;
-  VehicleRunSpec spec;
-  spec.vehicle = test::shipped_vehicle("cooperrider-bogie");
-  spec.run.wheelset.material.friction = 0.15;
-  spec.run.wheelset.speed = 60.0;
-  spec.run.initial.y = 1e-3;
-  spec.run.integrator.t_end = 0.6;
+  const VehicleRunSpec spec = test::cooperrider_bogie_run(60.0, 1e-3, 0.6);
   VehicleSimulation sim(spec, test::s1002_contact("onepoint", r0), r0);
   sim.schedule_swap(0.2, test::s1002_contact("multipoint", r0));
   sim.schedule_swap(0.4, test::s1002_contact("onepoint", r0));

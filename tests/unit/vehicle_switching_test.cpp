@@ -111,12 +111,7 @@ double excess_over_lowest(const WheelsetGeometry& geometry, const WheelsetSnapsh
 // N. The switches are located as events, each wheelset's its own.
 TEST(VehicleSwitching, EveryWheelOfTheBogieFollowsTheLowestMinimum) {
   constexpr double r0 = 0.425;
-  VehicleRunSpec spec;
-  spec.vehicle = test::shipped_vehicle("cooperrider-bogie");
-  spec.run.wheelset.material.friction = 0.15;
-  spec.run.wheelset.speed = 60.0;
-  spec.run.initial.y = 1e-3;
-  spec.run.integrator.t_end = 1.0;
+  const VehicleRunSpec spec = test::cooperrider_bogie_run(60.0, 1e-3, 1.0);
   const std::shared_ptr<const WheelsetGeometry> geometry = s1002_uic60(r0);
   VehicleSimulation sim(spec, std::make_shared<InProcessContact>(make_contact_model("onepoint", geometry)), r0);
   sim.start();

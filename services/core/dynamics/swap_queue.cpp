@@ -3,7 +3,13 @@
 
 #include <algorithm>
 
+#include "core/numerics/number_text.hpp"
+
 namespace wrc {
+
+std::string swap_failure_message(const std::string& to, double t, const std::string& kept, const std::string& why) {
+  return "swap to " + to + " at t = " + exact_number_text(t) + " s failed, keeping " + kept + ": " + why;
+}
 
 void SwapQueue::schedule(double t, std::shared_ptr<ContactEvaluator> next) {
   const auto later = std::upper_bound(scheduled_.begin(), scheduled_.end(), t,

@@ -7,11 +7,15 @@
 
 #include <deque>
 #include <memory>
+#include <string>
 #include <utility>
 
 #include "core/dynamics/contact_evaluator.hpp"
 
 namespace wrc {
+
+/// What a run says when a swap to model `to` at time t [s] failed and it keeps model `kept`: why.
+std::string swap_failure_message(const std::string& to, double t, const std::string& kept, const std::string& why);
 
 class SwapQueue {
  public:

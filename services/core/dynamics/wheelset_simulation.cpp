@@ -308,8 +308,7 @@ void WheelsetSimulation::perform_swap(std::shared_ptr<ContactEvaluator> next) {
     own_.add_evaluator(*previous);
   } catch (const std::exception& e) {
     contact_.replace(previous, from, previous_branches);
-    message_ = "swap to " + next->model() + " at t = " + format_time(t_) + " s failed, keeping " +
-               previous->model() + ": " + e.what();
+    message_ = swap_failure_message(next->model(), t_, previous->model(), e.what());
   }
 }
 

@@ -9,7 +9,6 @@
 #include "bus/auth/signed_publish.hpp"
 #include "bus/service/log_text.hpp"
 #include "bus/transport/clock.hpp"
-#include "core/identity/geometry_key.hpp"
 #include "core/models/contact_model_factory.hpp"
 #include "core/spline/spline_geometry_fit.hpp"
 #include "dynamicsd/bus_contact.hpp"
@@ -160,7 +159,6 @@ void DynamicsService::start(const run_command_t& command) {
   request_id_ = command.request_id;
   try {
     request_ = protocol::from_message(command);
-    geometry_key_ = geometry_key(request_.geometry);
     if (request_.in_process) geometry_ = std::make_shared<const WheelsetGeometry>(make_geometry(request_.geometry));
     const double r0 = request_.geometry.track.nominal_radius;
     states_.start(request_.run_id);

@@ -126,7 +126,6 @@ class DynamicsService {
   StateBatches states_;
   protocol::RunRequest request_;
   std::int64_t request_id_ = 0;
-  std::string geometry_key_;
   std::shared_ptr<const WheelsetGeometry> geometry_;  // in-process runs
   double wall_start_ = 0;
   double wall_time_ = 0;

@@ -169,6 +169,40 @@ TEST(SplineGeometry, QueryEvaluationIsTheFullOneRestricted) {
                std::invalid_argument);
 }
 
+// Fitted over a box that reaches into flange contact (y within +-12 mm, roll within +-30 mrad:
+// where a vehicle's leading wheelsets run in a curve), the fit of the lateral curvature, which
+// jumps where the flange starts to touch, overshoots below zero between its samples. Every patch
+// the model gives is still a Hertz ellipse (A, B > 0, k' in (0, 1], K, E, m, n > 0): there the
+// shape is the exact one of the fitted curvatures with B floored as the exact models floor it,
+// and it says so (floored). A scan of the left wheel every 0.1 mm in y at three rolls and two yaws.
+TEST(SplineGeometry, EveryPatchOfABoxOverFlangeContactIsAHertzEllipse) {
+  SplineFitOptions o = quick_spline_options();
+  o.y_min = -0.012;
+  o.y_max = 0.012;
+  o.roll_max = 0.03;
+  o.yaw_max = 0.01;
+  o.intervals[0] = 20;
+  const SplineFit fit = fit_spline_geometry(*s1002_uic60_geometry(), o);
+  const SplineContactGeometry& m = *fit.model;
+  long scanned = 0, overshooting = 0;
+  for (int i = -120; i <= 120; ++i)
+    for (double roll : {-0.02, 0.0, 0.02})
+      for (double yaw : {0.0, 0.005}) {
+        WheelsetPose p;
+        p.y = 1e-4 * i, p.roll = roll, p.yaw = yaw, p.z = 0.46;
+        SplineEvaluation e;
+        m.evaluate(WheelSide::kLeft, p, SplineDerivatives::kValue, e);
+        if (!(e.value[kFieldHertzB] > 0.0)) ++overshooting;
+        const HertzShape s = m.patch_shape(e).shape;
+        EXPECT_TRUE(s.A > 0.0 && s.B > 0.0 && s.minor_over_major > 0.0 && s.minor_over_major <= 1.0 && s.K > 0.0 &&
+                    s.E > 0.0 && s.m > 0.0 && s.n > 0.0)
+            << "y = " << p.y << ", roll = " << roll << ", yaw = " << yaw << ": A = " << s.A << ", B = " << s.B;
+        ++scanned;
+      }
+  EXPECT_GT(overshooting, 0) << "the scan should reach the overshoot this test is about";
+  std::cout << "[ measured ] " << overshooting << " of " << scanned << " configurations with a fitted B <= 0\n";
+}
+
 // The jumps of the tread contact point are located automatically: on the line roll = yaw = 0 the
 // bisection finds every jump that a dense 5 um scan of the exact common point sees, within 5 um,
 // and nothing else. (S1002/UIC60: one near y = 0.2 mm, one at ~5.2 mm for the left wheel.)

@@ -8,8 +8,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/contact/hertz.hpp"
 #include "core/geometry/wheel_side.hpp"
 #include "core/identity/sha256.hpp"
+#include "core/model_interface/contact_model.hpp"
 #include "core/model_interface/jump_transition.hpp"
 
 namespace wrc {
@@ -246,6 +248,21 @@ PatchShape SplineContactGeometry::patch_shape(const SplineEvaluation& e) const {
   s.axis_ratio = s.m / s.n;
   const double raw_b = 0.5 * (v[kFieldWheelCurvatureLateral] + v[kFieldRailCurvatureLateral]);
   out.floored = !(raw_b > lateral_curvature_floor_ * s.A);
+  // Where the fit reaches past its samples' smooth stretches (a box over flange contact, where the
+  // lateral curvature jumps) it can overshoot into a shape no Hertz ellipse has (B <= 0): the
+  // shape is then the exact one of the fitted curvatures, B floored as the exact models floor it
+  // (patch_builder.hpp). Within the samples' reach the fitted shape stands as fitted.
+  const bool valid = s.A > 0.0 && s.B > 0.0 && s.minor_over_major > 0.0 && s.minor_over_major <= 1.0 && s.K > 0.0 &&
+                     s.E > 0.0 && s.m > 0.0 && s.n > 0.0;
+  if (!valid) {
+    try {
+      s = hertz_shape(s.A, std::max(s.B, lateral_curvature_floor_ * s.A));
+    } catch (const std::invalid_argument& no_ellipse) {
+      throw ContactConfigurationError(std::string("spline model: no Hertz ellipse for the fitted curvatures: ") +
+                                      no_ellipse.what());
+    }
+    out.floored = true;
+  }
   return out;
 }
 

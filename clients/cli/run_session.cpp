@@ -110,7 +110,9 @@ const run_summary_t& RunSession::run() {
   bus::GuardedSubscription<run_status_t> status(
       lcm, session_.names.name(bus::channel::kRunStatus), "run status",
       [&](const run_status_t& m, const bus::ReceivedMessage& info) {
-        if (m.request_id != command.request_id) return;
+        // The request id is the wall clock's microsecond: runs started at once (a sweep's jobs) can
+        // share it, so the run id must match too.
+        if (m.request_id != command.request_id || m.run_id != run_id) return;
         if (!acknowledged) runner = info.origin.nonce;
         acknowledged = true;
         if (info.origin.nonce == runner) last_heard = bus::monotonic_seconds();
@@ -124,7 +126,7 @@ const run_summary_t& RunSession::run() {
   bus::GuardedSubscription<run_summary_t> summaries(
       lcm, session_.names.name(bus::channel::kRunSummary), "run summary",
       [&](const run_summary_t& m, const bus::ReceivedMessage&) {
-        if (m.request_id == command.request_id) summary_ = m;
+        if (m.request_id == command.request_id && m.run_id == run_id) summary_ = m;
       });
   bus::HeaderStamper stamper(bus::sender_name("wrc-run", run_id));
   auto send = [&](run_command_t& c) {

@@ -64,7 +64,7 @@ TEST(VehicleSwitching, TheSingleWheelsetFileSwitchesAsTheLoneWheelset) {
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) {
     SCOPED_TRACE("switch " + std::to_string(i));
-    EXPECT_EQ(vehicle.switch_wheelsets()[i], 0u);
+    EXPECT_EQ(a[i].wheelset, 0);
     EXPECT_EQ(a[i].wheel, b[i].wheel);
     EXPECT_NEAR(a[i].t, b[i].t, 1e-5);
     EXPECT_NEAR(a[i].s_to, b[i].s_to, 1e-6);
@@ -135,7 +135,7 @@ TEST(VehicleSwitching, EveryWheelOfTheBogieFollowsTheLowestMinimum) {
   EXPECT_EQ(c.missed_switches, 0);
   EXPECT_LE(c.max_branch_excess, kBranchTolerance);
   bool leading = false, trailing = false;
-  for (size_t w : sim.switch_wheelsets()) (w == 0 ? leading : trailing) = true;
+  for (const SwitchRecord& r : sim.switches()) (r.wheelset == 0 ? leading : trailing) = true;
   EXPECT_TRUE(leading && trailing) << "each wheelset crosses the jumps";
   std::cout << "[ measured ] " << checked << " wheel checks, " << c.contact_switches << " switches, " << c.steps
             << " steps, largest excess " << worst << " m\n";

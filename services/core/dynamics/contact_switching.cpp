@@ -71,7 +71,7 @@ void settle_pair(const SwitchingContext& context, const FollowedBranches& pair, 
 
 // Records a switch of wheel i from s_from to s_to [m] at the context's time.
 void record(const SwitchingContext& context, int wheel, double s_from, double s_to) {
-  context.log.push_back({context.t, wheel, s_from, s_to});
+  context.log.push_back({context.t, wheel, s_from, s_to, context.wheelset});
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ struct SwitchRecord {
   int wheel = 0;       ///< 0 left, 1 right
   double s_from = 0;   ///< wheel coordinate before [m]
   double s_to = 0;     ///< after [m]
+  int wheelset = 0;    ///< the wheelset's index in a vehicle (0 for the lone wheelset) [-]
 };
 
 /// The event functions of rigid contact: switch L, switch R, normal force L, normal force R,
@@ -45,8 +46,9 @@ void event_functions(const ContactResult& c, const double* y, const FollowedBran
 std::array<double, 2> branch_excess(const ContactResult& c);
 
 /// What a switch works on: the run's contact, the consistent values on its current branches, the
-/// run's choice of two-point sliding (IntegratorSettings::two_point_sliding), the time [s], and
-/// where it records its switches and counts them (contact_switches, two_point_entries).
+/// run's choice of two-point sliding (IntegratorSettings::two_point_sliding), the time [s],
+/// where it records its switches and counts them (contact_switches, two_point_entries), and the
+/// index of the wheelset its records name (0 for the lone wheelset).
 struct SwitchingContext {
   WheelsetContact& contact;
   std::function<InitialisationContext()> initialisation;
@@ -54,6 +56,7 @@ struct SwitchingContext {
   double t;
   std::vector<SwitchRecord>& log;
   RunCounters& counters;
+  int wheelset;
 };
 
 /// Wheel i leaves its branch for the point at target_s [m] (an event, or a switch the branch

@@ -138,7 +138,7 @@ InitialisationContext WheelsetSimulation::initialisation() {
 
 SwitchingContext WheelsetSimulation::switching() {
   return SwitchingContext{contact_, [this] { return initialisation(); }, spec_.integrator.two_point_sliding, t_,
-                          switch_log_, own_};
+                          switch_log_, own_, 0};
 }
 
 RunCounters WheelsetSimulation::counters() const {

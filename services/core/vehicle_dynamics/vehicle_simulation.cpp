@@ -151,9 +151,7 @@ std::vector<double> VehicleSimulation::continued_state() {
     block[kUnknownSpinRate] = equations_.speed() / e.nominal_radius() + start.spin_rate_offsets[static_cast<size_t>(w)];
     if (contact_.wheelset(static_cast<size_t>(w)).formulation() == ContactFormulation::kRigid) {
       block[kUnknownNormalLeft] = block[kUnknownNormalRight] = 1.0;  // the static wheel load each
-      const size_t first = switch_log_.size();
       settle_on_lowest_branches(switching(static_cast<size_t>(w)), block);
-      name_switches(first, static_cast<size_t>(w));
     }
     blocks.push_back(std::move(block));
   }
@@ -173,11 +171,8 @@ std::vector<double> VehicleSimulation::placed_on_rails(const std::vector<HeldWhe
   equations_.set_irregularity_share(1.0);
   equations_.place(0.0);
   std::vector<std::vector<double>> blocks = split_by_body(dae_.layout(), y);
-  for (size_t w = 0; w < equations_.wheelset_count(); ++w) {
-    const size_t first = switch_log_.size();
+  for (size_t w = 0; w < equations_.wheelset_count(); ++w)
     settle_on_lowest_branches(switching(w), blocks[equations_.wheelset_body(w)]);
-    name_switches(first, w);
-  }
   return join_bodies(blocks);
 }
 
@@ -248,21 +243,14 @@ InitialisationContext VehicleSimulation::initialisation(size_t w) {
 
 SwitchingContext VehicleSimulation::switching(size_t w) {
   return SwitchingContext{contact_.wheelset(w), [this, w] { return initialisation(w); },
-                          spec_.run.integrator.two_point_sliding, t_, switch_log_, own_};
-}
-
-void VehicleSimulation::name_switches(size_t first, size_t w) {
-  for (size_t i = first; i < switch_log_.size(); ++i) switch_wheelsets_.push_back(w);
+                          spec_.run.integrator.two_point_sliding, t_, switch_log_, own_, static_cast<int>(w)};
 }
 
 void VehicleSimulation::restart(std::vector<std::vector<double>> blocks) {
   equations_.place(t_);
   const bool rigid = formulation() == ContactFormulation::kRigid;
-  for (size_t w = 0; w < equations_.wheelset_count() && rigid; ++w) {
-    const size_t first = switch_log_.size();
+  for (size_t w = 0; w < equations_.wheelset_count() && rigid; ++w)
     settle_on_lowest_branches(switching(w), blocks[equations_.wheelset_body(w)]);
-    name_switches(first, w);
-  }
   std::vector<double> y = join_bodies(blocks);
   const std::vector<double> yp =
       vehicle_consistent_derivatives(dae_, t_, y, [this](size_t w) { return initialisation(w); });
@@ -338,9 +326,7 @@ void VehicleSimulation::handle_roots() {
            "elastic model (multipoint)");
       return;
     }
-    const size_t first = switch_log_.size();
     switch_at_events(switching(w), own, blocks[equations_.wheelset_body(w)]);
-    name_switches(first, w);
   }
   restart(std::move(blocks));
 }
@@ -353,11 +339,8 @@ void VehicleSimulation::restart_after_convergence_failure() {
   ++own_.convergence_restarts;
   equations_.place(t_);
   std::vector<std::vector<double>> blocks = split_by_body(dae_.layout(), integrator_.state());
-  for (size_t w = 0; w < equations_.wheelset_count(); ++w) {
-    const size_t first = switch_log_.size();
+  for (size_t w = 0; w < equations_.wheelset_count(); ++w)
     keep_more_loaded_points(switching(w), blocks[equations_.wheelset_body(w)]);
-    name_switches(first, w);
-  }
   restart(std::move(blocks));
 }
 

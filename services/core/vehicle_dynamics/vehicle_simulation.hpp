@@ -143,11 +143,8 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   /// The state vector now and its layout (vehicle_equations.hpp).
   std::vector<double> state_vector() const;
   VehicleLayout layout() const { return dae_.layout(); }
-  /// Every contact-point switch so far, of every wheelset (SwitchRecord::wheel is the wheel of
-  /// the wheelset switch_wheelsets() names at the same index).
+  /// Every contact-point switch so far, of every wheelset (SwitchRecord::wheelset names it).
   const std::vector<SwitchRecord>& switches() const { return switch_log_; }
-  /// The wheelset index of each entry of switches() [-].
-  const std::vector<size_t>& switch_wheelsets() const { return switch_wheelsets_; }
   /// Counters summed over the run: IDA's over every segment, the Jacobians, the contact batches,
   /// the switches and restarts.
   RunCounters counters() const override;
@@ -198,8 +195,6 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   /// Rigid: the rest state on the nominal rails (the held wheelsets held), each wheelset then
   /// settled on its lowest branches of the irregular rails at t = 0.
   std::vector<double> placed_on_rails(const std::vector<HeldWheelset>& held);
-  /// Names wheelset w the wheelset of the switches logged from entry first on.
-  void name_switches(size_t first, size_t w);
 
   VehicleRunSpec spec_;
   std::vector<double> wheel_loads_;
@@ -223,7 +218,6 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   RunCounters accumulated_;  // IDA's counters of the segments before the current one
   RunCounters own_;          // the switches and restarts
   std::vector<SwitchRecord> switch_log_;
-  std::vector<size_t> switch_wheelsets_;
   int convergence_restarts_in_a_row_ = 0;
 };
 

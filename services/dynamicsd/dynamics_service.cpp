@@ -116,7 +116,6 @@ void DynamicsService::add_query_instances(run_summary_t& summary) const {
 
 std::unique_ptr<Simulation> DynamicsService::make_wheelset_run(double nominal_radius) {
   auto run = std::make_unique<WheelsetSimulation>(request_.spec, make_contact(request_.model), nominal_radius);
-  for (const protocol::ScheduledSwap& swap : request_.swaps) run->schedule_swap(swap.t, make_contact(swap.model));
   const std::string run_id = request_.run_id;
   const WheelsetParameters wheelset = request_.spec.wheelset;
   run->on_output([this, run_id, wheelset](const WheelsetSnapshot& s) {
@@ -129,7 +128,6 @@ std::unique_ptr<Simulation> DynamicsService::make_wheelset_run(double nominal_ra
 std::unique_ptr<Simulation> DynamicsService::make_vehicle_run(double nominal_radius) {
   auto run = std::make_unique<VehicleSimulation>(VehicleRunSpec{*request_.vehicle, request_.spec, std::nullopt},
                                                  make_contact(request_.model), nominal_radius);
-  for (const protocol::ScheduledSwap& swap : request_.swaps) run->schedule_swap(swap.t, make_contact(swap.model));
   const std::string run_id = request_.run_id;
   VehicleSimulation* vehicle = run.get();
   std::vector<WheelsetParameters> parameters;
@@ -163,6 +161,7 @@ void DynamicsService::start(const run_command_t& command) {
     const double r0 = request_.geometry.track.nominal_radius;
     states_.start(request_.run_id);
     simulation_ = request_.vehicle ? make_vehicle_run(r0) : make_wheelset_run(r0);
+    for (const protocol::ScheduledSwap& swap : request_.swaps) simulation_->schedule_swap(swap.t, make_contact(swap.model));
     wall_start_ = bus::monotonic_seconds();
     std::cerr << "wrc-dynamicsd: run " << bus::log_text(request_.run_id) << " with " << request_.model
               << (request_.in_process ? " (in-process)" : "")

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <optional>
+#include <string>
 
 #include "core/dynamics/wheelset_simulation.hpp"
 #include "core/vehicle_dynamics/vehicle_simulation.hpp"
@@ -13,25 +14,25 @@ namespace wrc::cli {
 run_summary_t run_in_process(const protocol::RunRequest& request) {
   const auto start = std::chrono::steady_clock::now();
   const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(request.geometry));
-  const auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  if (request.vehicle) {  // a vehicle of several bodies
-    VehicleSimulation simulation(VehicleRunSpec{*request.vehicle, request.spec, std::nullopt},
-                                 in_process_contact(request.model, geometry, request.spline_fit), request.geometry.track.nominal_radius);
-    for (const protocol::ScheduledSwap& swap : request.swaps)
-      simulation.schedule_swap(swap.t, in_process_contact(swap.model, geometry, request.spline_fit));
+  const auto contact = [&](const std::string& model) { return in_process_contact(model, geometry, request.spline_fit); };
+  const double r0 = request.geometry.track.nominal_radius;
+  // The swaps, the start (it throws when no consistent initial state exists: the run never
+  // started) and the run (a failure on the way ends it: state failed, its message), then the summary.
+  const auto run = [&](auto& simulation) {
+    for (const protocol::ScheduledSwap& swap : request.swaps) simulation.schedule_swap(swap.t, contact(swap.model));
     simulation.start();
     simulation.run();
-    run_summary_t summary = protocol::to_summary_message(simulation, request.run_id, 0, wall());
-    if (summary.message.empty()) summary.message = simulation.start_note();  // as wrc-dynamicsd's
-    return summary;
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return protocol::to_summary_message(simulation, request.run_id, 0, wall);
+  };
+  if (!request.vehicle) {
+    WheelsetSimulation simulation(request.spec, contact(request.model), r0);
+    return run(simulation);
   }
-  WheelsetSimulation simulation(request.spec, in_process_contact(request.model, geometry, request.spline_fit),
-                                request.geometry.track.nominal_radius);
-  for (const protocol::ScheduledSwap& swap : request.swaps)
-    simulation.schedule_swap(swap.t, in_process_contact(swap.model, geometry, request.spline_fit));
-  simulation.start();  // throws when no consistent initial state exists: the run never started
-  simulation.run();    // a failure on the way ends the run (state failed, its message)
-  return protocol::to_summary_message(simulation, request.run_id, 0, wall());
+  VehicleSimulation simulation(VehicleRunSpec{*request.vehicle, request.spec, std::nullopt}, contact(request.model), r0);
+  run_summary_t summary = run(simulation);
+  if (summary.message.empty()) summary.message = simulation.start_note();  // as wrc-dynamicsd's
+  return summary;
 }
 
 }  // namespace wrc::cli

@@ -33,7 +33,6 @@
 #include "core/models/contact_model_factory.hpp"
 #include "core/numerics/number_text.hpp"
 #include "core/vehicle_dynamics/vehicle_hunting_run.hpp"
-#include "core/vehicle_dynamics/vehicle_linear_stability.hpp"
 #include "cli/vehicle_stability.hpp"
 #include "cli/sweep/sweep_table.hpp"
 #include "options/parameter_options.hpp"
@@ -247,24 +246,16 @@ int run_bifurcation(const std::vector<std::string>& args) {
   const auto contact = in_process_contact(model, geometry, fit_options_from(o));
 
   // The runs' runner, and the linear critical speed over the same speeds (docs/stability.md).
+  const CriticalSpeed linear = linear_critical_speed(spec, vehicle, contact, r0, speeds);
   std::function<HuntingRunner(const HuntingSettings&)> runner_with;
-  CriticalSpeed linear;
   std::string subject = "the wheelset";
   if (vehicle) {
     const VehicleRunSpec vehicle_spec{*vehicle, spec, std::nullopt};
-    VehicleLinearStability stability(vehicle_spec, contact, r0);
-    std::vector<LinearisedVehicle> scan;
-    for (double v : speeds) scan.push_back(stability.linearise(v));
-    linear = critical_speed_from(stability.critical_speed(scan));
     runner_with = [vehicle_spec, contact, r0](const HuntingSettings& s) {
       return vehicle_hunting_runner(vehicle_spec, contact, r0, s);
     };
     subject = vehicle->name + ", judged by its first wheelset";
   } else {
-    LinearStability stability(spec.wheelset, contact, r0);
-    std::vector<LinearisedWheelset> scan;
-    for (double v : speeds) scan.push_back(stability.linearise(v));
-    linear = stability.critical_speed(scan);
     runner_with = [spec, contact, r0](const HuntingSettings& s) { return hunting_runner(spec, contact, r0, s); };
   }
 

@@ -39,8 +39,7 @@ StabilityScanRow row_of(const LinearisedVehicle& l, const VehicleDescription& ve
   return row;
 }
 
-}  // namespace
-
+// The vehicle's linear critical speed found in a scan, in the lone wheelset's terms.
 CriticalSpeed critical_speed_from(const VehicleCriticalSpeed& found) {
   CriticalSpeed critical;
   critical.found = found.found;
@@ -48,6 +47,23 @@ CriticalSpeed critical_speed_from(const VehicleCriticalSpeed& found) {
   critical.frequency = found.mode.frequency();
   critical.kind = found.mode.kind;
   return critical;
+}
+
+}  // namespace
+
+CriticalSpeed linear_critical_speed(const RunSpec& spec, const std::optional<VehicleDescription>& vehicle,
+                                    std::shared_ptr<ContactEvaluator> contact, double r0,
+                                    const std::vector<double>& speeds) {
+  if (vehicle) {
+    VehicleLinearStability stability(VehicleRunSpec{*vehicle, spec, std::nullopt}, std::move(contact), r0);
+    std::vector<LinearisedVehicle> scan;
+    for (double v : speeds) scan.push_back(stability.linearise(v));
+    return critical_speed_from(stability.critical_speed(scan));
+  }
+  LinearStability stability(spec.wheelset, std::move(contact), r0);
+  std::vector<LinearisedWheelset> scan;
+  for (double v : speeds) scan.push_back(stability.linearise(v));
+  return stability.critical_speed(scan);
 }
 
 int run_vehicle_stability(const Options& o, const VehicleDescription& vehicle, const std::string& vehicle_path,

@@ -7,6 +7,10 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+#include <optional>
+#include <vector>
+
 #include "cli/options.hpp"
 #include "core/dynamics/linear_stability.hpp"
 #include "core/vehicle/vehicle_description.hpp"
@@ -14,9 +18,12 @@
 
 namespace wrc::cli {
 
-/// The vehicle's linear critical speed found in a scan, in the lone wheelset's terms (speed,
-/// frequency and kind of the mode crossing).
-CriticalSpeed critical_speed_from(const VehicleCriticalSpeed& found);
+/// The linear critical speed over speeds [m/s] (ascending) with contact and r0 [m]: of vehicle
+/// when given (the common run values from spec), else of spec's lone wheelset with its parameters
+/// as they are; in the lone wheelset's terms (speed, frequency and kind of the mode crossing).
+CriticalSpeed linear_critical_speed(const RunSpec& spec, const std::optional<VehicleDescription>& vehicle,
+                                    std::shared_ptr<ContactEvaluator> contact, double r0,
+                                    const std::vector<double>& speeds);
 
 /// Prints the least damped mode per speed and the critical speed, writes csv and picture.
 /// @throws UsageError for a parameter option that belongs to the vehicle file (masses, loads,

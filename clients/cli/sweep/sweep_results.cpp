@@ -150,21 +150,10 @@ std::pair<std::string, std::string> critical_speed_of(const protocol::RunRequest
   const std::vector<double> scan_speeds = critical_speed_scan(speeds);
   const auto geometry = std::make_shared<const WheelsetGeometry>(make_geometry(request.geometry));
   const auto contact = in_process_contact(request.model, geometry, request.spline_fit);
-  const double r0 = request.geometry.track.nominal_radius;
-  CriticalSpeed c;
-  if (request.vehicle) {  // a vehicle of several bodies: its own (its loads are its file's)
-    VehicleLinearStability stability(VehicleRunSpec{*request.vehicle, request.spec, std::nullopt}, contact, r0);
-    std::vector<LinearisedVehicle> scan;
-    for (double v : scan_speeds) scan.push_back(stability.linearise(v));
-    c = critical_speed_from(stability.critical_speed(scan));
-  } else {
-    WheelsetParameters wheelset = request.spec.wheelset;
-    wheelset.lateral_force = 0.0;
-    LinearStability stability(wheelset, contact, r0);
-    std::vector<LinearisedWheelset> scan;
-    for (double v : scan_speeds) scan.push_back(stability.linearise(v));
-    c = stability.critical_speed(scan);
-  }
+  RunSpec spec = request.spec;
+  if (!request.vehicle) spec.wheelset.lateral_force = 0.0;  // a vehicle's loads are its file's
+  const CriticalSpeed c =
+      linear_critical_speed(spec, request.vehicle, contact, request.geometry.track.nominal_radius, scan_speeds);
   if (!c.found) return {"", ""};
   return {number_text(c.speed), number_text(c.frequency)};
 }

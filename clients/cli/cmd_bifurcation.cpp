@@ -50,7 +50,7 @@ std::vector<std::string> csv_row(const std::string& branch, const HuntingRun& r,
   return {branch,
           number_text(r.speed),
           hunting_state_name(r.state),
-          number_text(r.cycle.amplitude),
+          number_text(r.amplitude()),
           number_text(r.cycle.mean),
           number_text(r.yaw_amplitude),
           number_text(r.cycle.frequency()),
@@ -129,7 +129,7 @@ void print_table_header() {
 // unstable cycle's bracket).
 void print_run_row(const char* branch, const char* state, const HuntingRun& r, double wall, const std::string& tail) {
   std::printf("%-11s %8.3f %-12s %11.4f %12.4f %9.4f %8.4f %10.2f %8.2f %7.1f%s%s\n", branch, r.speed, state,
-              r.cycle.amplitude * 1e3, r.yaw_amplitude * 1e3, r.cycle.frequency(), r.cycle.growth,
+              r.amplitude() * 1e3, r.yaw_amplitude * 1e3, r.cycle.frequency(), r.cycle.growth,
               r.largest_contact_angle * 180 / M_PI, r.simulated_time, wall, tail.empty() ? "" : "  ", tail.c_str());
   std::fflush(stdout);
 }
@@ -149,7 +149,7 @@ void add_unstable_cycles(const HuntingDiagram& d, const std::function<HuntingRun
       if (c.speed == cycle.speed) decayed = c.state == HuntingState::kCentred || c.state == HuntingState::kDecaying;
     if (!decayed) continue;
     const auto start = std::chrono::steady_clock::now();
-    const UnstableCycle u = unstable_cycle(probe, cycle.speed, settings.small_disturbance.y, cycle.cycle.amplitude, 6);
+    const UnstableCycle u = unstable_cycle(probe, cycle.speed, settings.small_disturbance.y, cycle.amplitude(), 6);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     HuntingRun row = u.run;
     row.speed = cycle.speed;
@@ -187,14 +187,14 @@ void report_nonlinear_critical_speed(const HuntingDiagram& d, const std::vector<
   if (d.critical.found) {
     std::printf("nonlinear critical speed: %.3f m/s (%.1f km/h): the lowest speed with a persisting cycle "
                 "(collapsed at %.3f m/s); its amplitude %.3f mm, %.4f Hz\n",
-                d.critical.speed, d.critical.speed * 3.6, d.critical.collapsed_at, d.critical.cycle.cycle.amplitude * 1e3,
+                d.critical.speed, d.critical.speed * 3.6, d.critical.collapsed_at, d.critical.cycle.amplitude() * 1e3,
                 d.critical.cycle.cycle.frequency());
     table.rows.push_back(csv_row("nonlinear-critical", d.critical.cycle, 0));
   } else if (!d.ramp_down.empty() && d.ramp_down.back().state == HuntingState::kFailed) {
     std::printf("nonlinear critical speed: not found, the ramp-down failed at %.3f m/s: %s\n",
                 d.ramp_down.back().speed, d.ramp_down.back().message.c_str());
   } else if (!d.ramp_down.empty() && d.ramp_down.back().persists() &&
-             d.ramp_down.back().cycle.amplitude >= settings.persisting_amplitude) {
+             d.ramp_down.back().amplitude() >= settings.persisting_amplitude) {
     std::printf("nonlinear critical speed: below %g m/s (the cycle persisted down to the lowest speed)\n",
                 speeds.front());
   } else {
@@ -213,8 +213,9 @@ int run_bifurcation(const std::vector<std::string>& args) {
                  "highest speed down, runs each started from the previous run's final state (the stable\n"
                  "limit-cycle branch) until the cycle collapses; the nonlinear critical speed (the lowest speed\n"
                  "with a persisting cycle) by bisection; the linear critical speed for comparison. Every run goes\n"
-                 "until its oscillation has settled (constant amplitude, or centred) or --max-time. The lateral\n"
-                 "load is set to 0. docs/bifurcation.md.\n"
+                 "until its oscillation has settled (constant amplitude; irregular: cycles that differ under an\n"
+                 "envelope that holds; or centred) or --max-time. The lateral load is set to 0.\n"
+                 "docs/bifurcation.md.\n"
                  "With --vehicle FILE of several bodies: the vehicle's diagram, each run judged by its first\n"
                  "wheelset; a fresh run holds that wheelset at y0 with the vehicle at rest about it, the\n"
                  "ramp-down continues the whole vehicle's state. docs/vehicle.md.\n";

@@ -102,6 +102,19 @@ TEST(LimitCycle, NoiseNearThePeaksIsNoCycle) {
   EXPECT_NEAR(m.period, 0.2, 0.2 * 0.01);
 }
 
+// The envelope of an oscillation about a mean: half its peak-to-peak over the samples in [from, to),
+// the right end excluded; sampled at the peaks (phase pi/2 at 5 Hz every 1 ms) it is exact.
+TEST(LimitCycle, HalfRangeIsHalfThePeakToPeakInsideTheInterval) {
+  const Signal s = oscillation(4e-3, 5.0, 0.0, 1e-3, 2.0, 1e-3, M_PI / 2);
+  EXPECT_NEAR(half_range(s.t, s.x, 0.0, 1.0), 4e-3, 1e-15);
+  // [0, 0.1) holds the crest at 0 s (5 mm) but not the trough at 0.1 s: its lowest sample is at 0.099 s.
+  const double at_099 = 1e-3 + 4e-3 * std::sin(2 * M_PI * 5.0 * 0.099 + M_PI / 2);
+  EXPECT_NEAR(half_range(s.t, s.x, 0.0, 0.1), 0.5 * (5e-3 - at_099), 1e-15);
+  EXPECT_EQ(half_range(s.t, s.x, 3.0, 4.0), 0.0);  // no sample there
+  const std::vector<double> t{0.0, 1e-3}, x{0.0};
+  test::expect_invalid([&] { half_range(t, x, 0.0, 1.0); }, "2 times but 1 values");
+}
+
 TEST(LimitCycle, Errors) {
   const std::vector<double> t{0.0, 1e-3, 2e-3}, x{0.0, 1.0};
   test::expect_invalid([&] { measure_cycle(t, x, 0.0); }, "3 times but 2 values");

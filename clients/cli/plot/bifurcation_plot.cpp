@@ -51,14 +51,15 @@ BifurcationPoints classify_bifurcation(const sweep::CsvTable& table) {
     }
     const double a = std::strtod(row[kAmplitude].c_str(), nullptr);
     const std::string& state = row[kState];
-    const bool oscillating = state == "limit-cycle" || state == "growing";
+    const bool oscillating = state == "limit-cycle" || state == "growing" || state == "irregular";
     std::string key;
     if (branch == "centred")
       key = state == "centred" ? "centred" : oscillating ? "grown" : "centred-unsettled";
     else
       key = state == "limit-cycle" ? (std::strtod(row[kAngle].c_str(), nullptr) > kTreadAngle ? "cycle" : "tread-cycle")
-            : oscillating ? "cycle-unsettled"
-                          : "collapsed";
+            : state == "irregular" ? "irregular"
+            : oscillating          ? "cycle-unsettled"
+                                   : "collapsed";
     out.points[key].push_back({v, state == "centred" ? 0.0 : a});
   }
   for (auto& [key, pts] : out.points) std::sort(pts.begin(), pts.end());
@@ -117,6 +118,8 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
       {"grown", "points pt 9 ps 1.5 lc rgb '#1f77b4'", "small start: grew into the cycle (centred state unstable)"},
       {"cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#d62728'", "ramp-down: stable cycle reaching the flange (root)"},
       {"tread-cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#ff7f0e'", "ramp-down: stable cycle on the tread"},
+      {"irregular", "linespoints dt 3 lw 2 pt 13 ps 1.2 lc rgb '#8c564b'",
+       "ramp-down: irregular motion persisting (half range of y)"},
       {"cycle-unsettled", "points pt 4 ps 1.2 lc rgb '#d62728'", "ramp-down: still growing at the end"},
       {"collapsed", "points pt 4 ps 1.5 lc rgb '#2ca02c'", "ramp-down: cycle collapsed (centred or decaying)"},
       {"unstable", "linespoints dt 2 lw 2 pt 6 ps 0.8 lc rgb '#9467bd'", "unstable cycle (separatrix estimate)"},
@@ -151,9 +154,10 @@ void draw_bifurcations(const std::vector<LabelledBifurcation>& diagrams, const I
     const BifurcationPoints p = classify_bifurcation(diagram.table);
     if (point_count(p) == 0) throw std::runtime_error(diagram.label + ": no run to draw");
     const std::string colour = kColours[d];
-    // The stable cycles of the ramp-down, tread and flange together, and what failed.
+    // The persisting motions of the ramp-down (tread and flange cycles, irregular motion) together,
+    // and what failed.
     std::vector<std::pair<double, double>> cycles;
-    for (const char* key : {"cycle", "tread-cycle"}) {
+    for (const char* key : {"cycle", "tread-cycle", "irregular"}) {
       auto it = p.points.find(key);
       if (it != p.points.end()) cycles.insert(cycles.end(), it->second.begin(), it->second.end());
     }

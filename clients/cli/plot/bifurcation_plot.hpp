@@ -20,7 +20,8 @@ const std::vector<std::string>& bifurcation_csv_header();
 
 /// A diagram's runs sorted by what they show, each point (speed [m/s], amplitude of y [m]) in
 /// increasing speed; keys: centred, centred-unsettled, grown (small starts), cycle (reaching the
-/// flange root), tread-cycle, cycle-unsettled, collapsed (ramp-down), unstable, failed.
+/// flange root), tread-cycle, irregular (its envelope), cycle-unsettled, collapsed (ramp-down),
+/// unstable, failed.
 struct BifurcationPoints {
   std::map<std::string, std::vector<std::pair<double, double>>> points;
   double linear = -1;            ///< linear critical speed [m/s], -1: none found

@@ -37,7 +37,7 @@ HuntingDiagram trace_hunting(const std::vector<double>& speeds, const HuntingRun
   for (std::size_t i = 1; i < speeds.size(); ++i)
     if (!(speeds[i] > speeds[i - 1]))
       throw std::invalid_argument("trace_hunting: speeds not ascending at " + std::to_string(speeds[i]) + " m/s");
-  auto persists = [&](const HuntingRun& r) { return r.persists() && r.cycle.amplitude >= settings.persisting_amplitude; };
+  auto persists = [&](const HuntingRun& r) { return r.persists() && r.amplitude() >= settings.persisting_amplitude; };
   auto report = [&](const char* branch, const HuntingRun& r) {
     if (progress) progress(branch, r);
   };
@@ -100,7 +100,8 @@ UnstableCycle unstable_cycle(const HuntingRunner& run, double speed, double deca
     const double mid = 0.5 * (u.decaying_start + u.growing_start);
     HuntingRun r = run(speed, InitialState{mid, 0, 0, 0, 0});
     ++u.runs;
-    const bool decays = r.state == HuntingState::kCentred || (r.state != HuntingState::kFailed && r.cycle.growth < 1.0);
+    const bool decays = r.state == HuntingState::kCentred ||
+                        (r.state != HuntingState::kFailed && r.state != HuntingState::kIrregular && r.cycle.growth < 1.0);
     if (decays) {
       u.decaying_start = mid;
       u.run = std::move(r);

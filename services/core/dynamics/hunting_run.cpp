@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -17,12 +18,17 @@ void require(bool ok, const char* name, double value, const char* range) {
                                 ", must be " + range);
 }
 
-HuntingState judge(const CycleMeasurement& c, const HuntingSettings& s) {
+// envelope_growth: 0 until the run holds two windows.
+HuntingState judge(const CycleMeasurement& c, double envelope_growth, const HuntingSettings& s) {
   if (c.largest < s.centred_amplitude) return HuntingState::kCentred;
   if (c.cycles < 2) return HuntingState::kDecaying;  // no oscillation to measure yet (an aperiodic decay)
-  if (c.growth < 1.0 - s.growth_tolerance) return HuntingState::kDecaying;
-  if (c.growth > 1.0 + s.growth_tolerance) return HuntingState::kGrowing;
-  return HuntingState::kLimitCycle;
+  const bool cycle_holds = std::abs(c.growth - 1.0) <= s.growth_tolerance;
+  if (cycle_holds) return HuntingState::kLimitCycle;
+  // The last cycles grow or shrink, but the envelope over the whole window holds: the cycles
+  // differ from one another (irregular motion), the oscillation does not die out. A regular decay
+  // or growth shows in the envelope as in the cycles.
+  if (envelope_growth > 0 && std::abs(envelope_growth - 1.0) <= s.growth_tolerance) return HuntingState::kIrregular;
+  return c.growth < 1.0 ? HuntingState::kDecaying : HuntingState::kGrowing;
 }
 
 }  // namespace
@@ -45,6 +51,7 @@ const char* hunting_state_name(HuntingState state) {
     case HuntingState::kDecaying: return "decaying";
     case HuntingState::kLimitCycle: return "limit-cycle";
     case HuntingState::kGrowing: return "growing";
+    case HuntingState::kIrregular: return "irregular";
     case HuntingState::kFailed: return "failed";
   }
   return "?";
@@ -57,29 +64,38 @@ void HuntingSamples::add(const WheelsetSnapshot& w) {
   angle.push_back(std::max(std::abs(w.wheels[0].contact_angle), std::abs(w.wheels[1].contact_angle)));
 }
 
-bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const HuntingSettings& settings,
-                    HuntingRun& result) {
-  settings.validate();
+void judge_hunting(const HuntingSamples& s, double now, const HuntingSettings& settings, HuntingRun& result) {
   // The last window; when it holds fewer than 3 cycles (a slow oscillation: at low speed the
   // kinematic wavelength of some 5 m takes seconds) and the run is longer than twice the window,
   // the second half of the run instead, if that holds more.
-  auto measure = [&] {
-    double from = simulation.time() - settings.window;
-    result.cycle = measure_cycle(s.t, s.y, from);
-    if (result.cycle.cycles < 3 && simulation.time() > 2 * settings.window) {
-      const CycleMeasurement longer = measure_cycle(s.t, s.y, 0.5 * simulation.time());
-      if (longer.cycles > result.cycle.cycles) {
-        from = 0.5 * simulation.time();
-        result.cycle = longer;
-      }
+  const CycleMeasurement window = measure_cycle(s.t, s.y, now - settings.window);
+  double from = now - settings.window;
+  result.cycle = window;
+  if (window.cycles < 3 && now > 2 * settings.window) {
+    const CycleMeasurement longer = measure_cycle(s.t, s.y, 0.5 * now);
+    if (longer.cycles > window.cycles) {
+      from = 0.5 * now;
+      result.cycle = longer;
     }
-    result.yaw_amplitude = measure_cycle(s.t, s.yaw, from).amplitude;
-    result.largest_contact_angle = 0;
-    for (std::size_t i = 0; i < s.t.size(); ++i)
-      if (s.t[i] >= from) result.largest_contact_angle = std::max(result.largest_contact_angle, s.angle[i]);
-    result.flange_contact = result.largest_contact_angle > settings.flange_contact_angle;
-    result.state = judge(result.cycle, settings);
-  };
+  }
+  result.yaw_amplitude = measure_cycle(s.t, s.yaw, from).amplitude;
+  result.largest_contact_angle = 0;
+  for (std::size_t i = 0; i < s.t.size(); ++i)
+    if (s.t[i] >= from) result.largest_contact_angle = std::max(result.largest_contact_angle, s.angle[i]);
+  result.flange_contact = result.largest_contact_angle > settings.flange_contact_angle;
+  // The envelope of the last window against the window before it, per cycle of the last.
+  result.envelope = half_range(s.t, s.y, now - settings.window, std::numeric_limits<double>::infinity());
+  const double previous = half_range(s.t, s.y, now - 2 * settings.window, now - settings.window);
+  result.envelope_growth = now - 2 * settings.window >= 0 && previous > 0 && window.cycles > 0
+                               ? std::pow(result.envelope / previous, 1.0 / window.cycles)
+                               : 0.0;
+  result.state = judge(result.cycle, result.envelope_growth, settings);
+}
+
+bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const HuntingSettings& settings,
+                    HuntingRun& result) {
+  settings.validate();
+  auto measure = [&] { judge_hunting(s, simulation.time(), settings, result); };
   try {
     simulation.start();
   } catch (const std::exception& e) {
@@ -89,10 +105,11 @@ bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const Hunti
   }
   // Settled: centred, or a constant amplitude at two successive judgements whose amplitudes agree
   // within the growth tolerance (a slow decay or growth of less than the tolerance per cycle
-  // shows over the check period's cycles).
+  // shows over the check period's cycles), or irregular at two successive judgements.
   double next_check = settings.settle_time;
   bool settled = false;
   double previous_amplitude = -1;
+  bool irregular_before = false;
   while (simulation.advance()) {
     if (simulation.time() + 1e-12 < next_check) continue;
     next_check += settings.check_period;
@@ -110,6 +127,17 @@ bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const Hunti
       previous_amplitude = result.cycle.amplitude;
     } else {
       previous_amplitude = -1;
+    }
+    // Irregular at two successive judgements: the envelope held at both; its cycles never agree,
+    // so waiting longer settles nothing more.
+    if (result.state == HuntingState::kIrregular) {
+      if (irregular_before) {
+        settled = true;
+        break;
+      }
+      irregular_before = true;
+    } else {
+      irregular_before = false;
     }
   }
   result.simulated_time = simulation.time();

@@ -43,10 +43,15 @@ enum class HuntingState {
   kDecaying,    ///< still decaying at max_time (growth < 1 - tolerance)
   kLimitCycle,  ///< constant amplitude (growth within tolerance) at two successive judgements
   kGrowing,     ///< still growing at max_time (growth > 1 + tolerance)
+  /// A bounded oscillation whose cycles differ (their growth outside the tolerance either way)
+  /// while its envelope, the half range of y over the last window, holds within the tolerance per
+  /// cycle against the window before, at two successive judgements (or at max_time): motion in
+  /// flange contact that is not one periodic cycle (quasi-periodic or chaotic).
+  kIrregular,
   kFailed,      ///< the run failed (message says why) before it settled
 };
 
-/// "centred", "decaying", "limit-cycle", "growing", "failed".
+/// "centred", "decaying", "limit-cycle", "growing", "irregular", "failed".
 const char* hunting_state_name(HuntingState state);
 
 /// One hunting run's result.
@@ -55,14 +60,22 @@ struct HuntingRun {
   InitialState start;             ///< where it started
   HuntingState state = HuntingState::kFailed;
   CycleMeasurement cycle;         ///< of y over the last window [m, s]
+  double envelope = 0;            ///< half range of y over the last window [m]
+  /// The envelope's growth per cycle against the window before it [-]: (envelope / previous
+  /// window's)^(1 / cycles in the last window); 0 until the run holds two windows.
+  double envelope_growth = 0;
   double yaw_amplitude = 0;       ///< half peak-to-peak of the yaw angle's last cycle [rad]
   double largest_contact_angle = 0;  ///< of both wheels over the last window [rad]
   bool flange_contact = false;    ///< largest_contact_angle above the settings' threshold
   InitialState end;               ///< the lateral state at the end (y, yaw, rates, spin offset)
   double simulated_time = 0;      ///< [s]
   std::string message;            ///< the failure's reason (kFailed)
-  /// A hunting oscillation that does not die out: a limit cycle or still growing.
-  bool persists() const { return state == HuntingState::kLimitCycle || state == HuntingState::kGrowing; }
+  /// A hunting oscillation that does not die out: a limit cycle, irregular or still growing.
+  bool persists() const {
+    return state == HuntingState::kLimitCycle || state == HuntingState::kGrowing || state == HuntingState::kIrregular;
+  }
+  /// The amplitude a diagram draws [m]: the envelope of an irregular motion, else the last cycle's.
+  double amplitude() const { return state == HuntingState::kIrregular ? envelope : cycle.amplitude; }
 };
 
 /// The output samples a hunting run is judged by: the observed wheelset's lateral shift y [m],
@@ -72,6 +85,12 @@ struct HuntingSamples {
   /// Appends the output sample w.
   void add(const WheelsetSnapshot& w);
 };
+
+/// Judges a hunting run at time now [s] by its samples (docs/bifurcation.md, "One run"): sets
+/// result's cycle (of y over the last settings.window, or over the run's second half when that
+/// holds more cycles and the window fewer than 3), envelope and envelope growth, yaw amplitude,
+/// largest contact angle, flange contact and state (never kFailed). Pure: no simulation.
+void judge_hunting(const HuntingSamples& samples, double now, const HuntingSettings& settings, HuntingRun& result);
 
 /// Starts simulation and advances it until the oscillation of samples (which its output fills)
 /// has settled (run_hunting's judgement) or its end time; sets result's state, cycle, yaw

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -53,15 +54,7 @@ CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<d
   // the integrator's or the contact's noise on a flank is no cycle); of two of a kind in a row the
   // more extreme one is kept.
   constexpr double kHysteresis = 0.01;
-  double lo = 0, hi = 0;
-  bool any = false;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (t[i] < from) continue;
-    lo = any ? std::min(lo, x[i]) : x[i];
-    hi = any ? std::max(hi, x[i]) : x[i];
-    any = true;
-  }
-  const double threshold = kHysteresis * (hi - lo);
+  const double threshold = kHysteresis * 2.0 * half_range(t, x, from, std::numeric_limits<double>::infinity());
   std::vector<Extremum> alternating;
   for (const Extremum& e : extremes) {
     if (!alternating.empty() && alternating.back().peak == e.peak) {
@@ -97,6 +90,21 @@ CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<d
     m.period = (peak_times.back() - peak_times[peak_times.size() - 1 - n]) / static_cast<double>(n);
   }
   return m;
+}
+
+double half_range(const std::vector<double>& t, const std::vector<double>& x, double from, double to) {
+  if (t.size() != x.size())
+    throw std::invalid_argument("half_range: " + std::to_string(t.size()) + " times but " +
+                                std::to_string(x.size()) + " values");
+  double lo = 0, hi = 0;
+  bool any = false;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i] < from || t[i] >= to) continue;
+    lo = any ? std::min(lo, x[i]) : x[i];
+    hi = any ? std::max(hi, x[i]) : x[i];
+    any = true;
+  }
+  return 0.5 * (hi - lo);
 }
 
 }  // namespace wrc

@@ -33,4 +33,9 @@ struct CycleMeasurement {
 CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<double>& x, double from,
                                int periods = 3);
 
+/// Half the range (largest minus smallest x) over the samples with from <= t < to [signal unit]:
+/// the envelope of an oscillation whose cycles differ; 0 without samples there. @throws
+/// std::invalid_argument when t and x differ in size.
+double half_range(const std::vector<double>& t, const std::vector<double>& x, double from, double to);
+
 }  // namespace wrc

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: Apache-2.0
+// The judgement of a hunting run (judge_hunting, core/dynamics/hunting_run.hpp;
+// docs/bifurcation.md, "One run") on synthetic samples whose cycles are known: a regular decay, a
+// regular growth, a constant cycle, and motion whose cycles differ while its envelope holds (the
+// flange-contact motion of a bogie at high speed, which a judgement by its last three cycles called
+// decaying or growing at random).
+//
+// Sampling as a hunting run samples: every 1 ms; 11 Hz, the Cooperrider bogie's hunting frequency
+// in flange contact. Default settings: window 2 s, tolerance 1 % per cycle.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/dynamics/hunting_run.hpp"
+
+namespace wrc {
+namespace {
+
+constexpr double kFrequency = 11.0;  // [Hz]
+constexpr double kStep = 1e-3;       // [s]
+
+// y(t) = a_k sin(2 pi f t) in the k-th cycle, a_k = amplitude(k); yaw and contact angle 0.
+template <class Amplitude>
+HuntingSamples samples(double t_end, Amplitude amplitude) {
+  HuntingSamples s;
+  for (long i = 0; i * kStep <= t_end + 1e-12; ++i) {
+    const double t = i * kStep;
+    const long cycle = static_cast<long>(std::floor(t * kFrequency));
+    s.t.push_back(t);
+    s.y.push_back(amplitude(cycle) * std::sin(2 * M_PI * kFrequency * t));
+    s.yaw.push_back(0.0);
+    s.angle.push_back(0.0);
+  }
+  return s;
+}
+
+// Cycle amplitudes between 3 and 4.5 mm in a fixed irregular order, repeating every 10 cycles
+// (0.9 s): the largest, 4.5 mm, recurs in every window of 2 s.
+double irregular_amplitude(long k) {
+  static const double pattern[] = {4.5e-3, 3.2e-3, 3.9e-3, 3.0e-3, 4.1e-3, 3.6e-3, 4.4e-3, 3.3e-3, 3.8e-3, 3.1e-3};
+  return pattern[k % 10];
+}
+
+TEST(HuntingJudgement, CyclesThatDifferUnderAHeldEnvelopeAreIrregularAndPersist) {
+  const HuntingSettings settings;
+  const double now = 6.0;
+  const HuntingSamples s = samples(now, irregular_amplitude);
+  HuntingRun r;
+  judge_hunting(s, now, settings, r);
+  // Cycle k lasts from k / f to (k + 1) / f, its crest and trough inside it: at 6 s the last
+  // complete cycles are 62..65 (3.9, 3.0, 4.1, 3.6 mm), growth (3.6 / 3.9)^(1/3) = 0.974, which
+  // the cycles alone judge decaying.
+  EXPECT_NEAR(r.cycle.growth, std::cbrt(3.6 / 3.9), 1e-3);
+  EXPECT_EQ(r.state, HuntingState::kIrregular) << hunting_state_name(r.state);
+  EXPECT_TRUE(r.persists());
+  // Both windows hold a 4.5 mm cycle: the envelope is 4.5 mm (sampled within 1 - cos(pi f h) =
+  // 6e-4 of the crest) and holds exactly.
+  EXPECT_NEAR(r.envelope, 4.5e-3, 4.5e-3 * 6e-4);
+  EXPECT_NEAR(r.envelope_growth, 1.0, 1e-3);
+  EXPECT_DOUBLE_EQ(r.amplitude(), r.envelope);
+
+  // Before the run holds two windows the envelope has nothing to compare with: the cycles decide.
+  HuntingRun early;
+  judge_hunting(s, 3.0, settings, early);
+  EXPECT_EQ(early.envelope_growth, 0.0);
+  EXPECT_NE(early.state, HuntingState::kIrregular) << hunting_state_name(early.state);
+}
+
+// A regular decay shows in the envelope as in the cycles: decaying, the envelope's growth per cycle
+// the cycles' (0.9) to the sampling of the crests (1e-3).
+TEST(HuntingJudgement, ARegularDecayIsDecayingByItsEnvelopeToo) {
+  const HuntingSettings settings;
+  const double now = 6.0;
+  const HuntingSamples s = samples(now, [](long k) { return 5e-3 * std::pow(0.97, static_cast<double>(k)); });
+  HuntingRun r;
+  judge_hunting(s, now, settings, r);
+  EXPECT_EQ(r.state, HuntingState::kDecaying) << hunting_state_name(r.state);
+  EXPECT_NEAR(r.cycle.growth, 0.97, 1e-3);
+  EXPECT_NEAR(r.envelope_growth, 0.97, 1e-3);
+  EXPECT_FALSE(r.persists());
+}
+
+TEST(HuntingJudgement, ARegularGrowthIsGrowingAndAConstantCycleALimitCycle) {
+  const HuntingSettings settings;
+  const double now = 6.0;
+  HuntingRun growing, constant;
+  judge_hunting(samples(now, [](long k) { return 1e-5 * std::pow(1.03, static_cast<double>(k)); }), now, settings,
+                growing);
+  EXPECT_EQ(growing.state, HuntingState::kGrowing) << hunting_state_name(growing.state);
+  EXPECT_NEAR(growing.envelope_growth, 1.03, 1e-3);
+  judge_hunting(samples(now, [](long) { return 4e-3; }), now, settings, constant);
+  EXPECT_EQ(constant.state, HuntingState::kLimitCycle) << hunting_state_name(constant.state);
+  EXPECT_NEAR(constant.cycle.amplitude, 4e-3, 4e-3 * 6e-4);
+  EXPECT_DOUBLE_EQ(constant.amplitude(), constant.cycle.amplitude);
+}
+
+}  // namespace
+}  // namespace wrc

@@ -28,6 +28,7 @@
 #include "core/track/track_layout_file.hpp"
 #include "core/vehicle_dynamics/vehicle_equilibrium.hpp"
 #include "core/vehicle_dynamics/vehicle_simulation.hpp"
+#include "single_wheelset_vehicle_run.hpp"
 #include "spline_test_model.hpp"
 
 namespace wrc {
@@ -134,6 +135,50 @@ TEST(VehicleRest, ARigidRunWithNoRestOnItsRailsStartsPlacedOnThemAndSaysSo) {
   sim.start();
   EXPECT_NE(sim.start_note().find("started off its equilibrium"), std::string::npos) << sim.start_note();
   for (size_t w = 0; w < 4; ++w)
+    for (const WheelOutput& wheel : sim.last_step_wheels(w)) EXPECT_GT(wheel.normal_force, 0.0) << "wheelset " << w;
+  sim.run();
+  EXPECT_EQ(sim.state(), RunState::kFinished) << sim.message();
+}
+
+// A start held off centre (a hunting run's disturbance) may have no rest reachable by Newton from
+// the nominal positions: the Cooperrider bogie with its leading wheelset held 4 mm off centre puts
+// the trailing one near a jump of its contact point (S1002/UIC60: the rigid stage of the multipoint
+// model's rest does not converge there). The rest is then continued from the centred rest, the
+// hold's offset raised from 0 to 4 mm in the elastic formulation, which is smooth. What comes out
+// must be the equilibrium with the whole offset held: Newton started there converges at once, and
+// the leading wheelset stands at 4 mm.
+TEST(VehicleRest, ABogieHeldOffCentreRestsByContinuationFromTheCentredRest) {
+  constexpr double r0 = 0.425, y0 = 4e-3;  // [m] the bogie's wheels; [m] the hold
+  const VehicleRunSpec spec = test::cooperrider_bogie_run(95.0, y0, 0.1);
+  const std::vector<double> loads = static_wheel_loads(spec.vehicle, spec.run.wheelset.gravity);
+  VehicleEquations equations(spec.vehicle, spec.run.wheelset, spec.run.track, spec.run.irregularity, r0, loads);
+  VehicleContact contact(test::s1002_contact("multipoint", r0), equations, true);
+  VehicleDae dae(equations, contact);
+  const std::vector<HeldWheelset> held{{0, y0, 0.0}};
+  const std::vector<double> rest = vehicle_rest_state(dae, ContactFormulation::kElastic, 0.0, 1e-8, 1e-6, held);
+  const VehicleEquilibrium again = vehicle_equilibrium(dae, 0.0, rest, equilibrium_weights(dae, 1e-8, 1e-6), held);
+  EXPECT_LE(again.iterations, 1);
+  EXPECT_LT(again.last_step, 1e-3);
+  const std::vector<BodyState> bodies = equations.body_states(dae.layout(), rest.data());
+  EXPECT_NEAR(bodies[equations.wheelset_body(0)].displacement[kBodyLateral], y0, 1e-9);
+  // The trailing wheelset follows the leading one through the frame, part of the way.
+  const double trailing = bodies[equations.wheelset_body(1)].displacement[kBodyLateral];
+  EXPECT_GT(trailing, 0.0);
+  EXPECT_LT(trailing, y0);
+}
+
+// The rigid one-point model has no rest at all with that hold: the continuation stops where the
+// trailing wheelset stands at its contact point's jump (a third of the way). The run then starts
+// from the centred rest with the leading wheelset moved to its hold and every wheelset placed onto
+// its rails, says so, and runs: the leading wheelset at 4 mm, every wheel loaded, the run to its end.
+TEST(VehicleRest, ARigidBogieHeldWhereItHasNoRestStartsMovedToItsHoldAndSaysSo) {
+  constexpr double r0 = 0.425, y0 = 4e-3;
+  VehicleSimulation sim(test::cooperrider_bogie_run(95.0, y0, 0.05), test::s1002_contact("onepoint", r0), r0);
+  sim.start();
+  EXPECT_NE(sim.start_note().find("first wheelset then moved to its held y and yaw"), std::string::npos)
+      << sim.start_note();
+  EXPECT_NEAR(sim.wheelset_snapshot(sim.snapshot(), 0).y, y0, 1e-9);
+  for (size_t w = 0; w < 2; ++w)
     for (const WheelOutput& wheel : sim.last_step_wheels(w)) EXPECT_GT(wheel.normal_force, 0.0) << "wheelset " << w;
   sim.run();
   EXPECT_EQ(sim.state(), RunState::kFinished) << sim.message();

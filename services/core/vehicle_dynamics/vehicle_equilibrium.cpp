@@ -21,8 +21,8 @@ namespace {
 constexpr double kConvergedStep = 1e-3;
 // [-] the smallest damping factor of a Newton step.
 constexpr double kSmallestDamping = 1.0 / 64.0;
-// [-] the first and largest step of the irregularities' share in the rest state's continuation,
-// and the smallest before it gives up.
+// [-] the first and largest step of the share of the irregularities and the holds' offsets in the
+// rest state's continuation, and the smallest before it gives up.
 constexpr double kFirstShareStep = 0.25;
 constexpr double kSmallestShareStep = 1.0 / 256.0;
 
@@ -176,20 +176,33 @@ std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, 
   try {
     return rest_state_on_rails(dae, own, t, position_tolerance, velocity_tolerance, held);
   } catch (const std::runtime_error& direct) {
-    if (!e.has_irregularities()) throw;
-    // Continued from the nominal rails: the irregularities' share raised from 0 to 1, each
-    // equilibrium the next one's guess, the share's step halved where Newton does not converge.
+    const bool off_centre = std::any_of(held.begin(), held.end(),
+                                        [](const HeldWheelset& h) { return h.lateral != 0.0 || h.yaw != 0.0; });
+    if (!e.has_irregularities() && !off_centre) throw;
+    // Continued from the nominal rails with the held wheelsets centred: the share of the
+    // irregularities and of the holds' offsets raised from 0 to 1 in the formulation own (an
+    // elastic contact is smooth where a rigid one's contact point jumps), each equilibrium the next
+    // one's guess, the share's step halved where Newton does not converge.
+    auto holds_at = [&held](double share) {
+      std::vector<HeldWheelset> scaled = held;
+      for (HeldWheelset& h : scaled) {
+        h.lateral *= share;
+        h.yaw *= share;
+      }
+      return scaled;
+    };
     std::string reached = "0";
     try {
       e.set_irregularity_share(0.0);
-      std::vector<double> y = rest_state_on_rails(dae, own, t, position_tolerance, velocity_tolerance, held);
+      std::vector<double> y = rest_state_on_rails(dae, own, t, position_tolerance, velocity_tolerance, holds_at(0.0));
       double share = 0.0;
       double step = kFirstShareStep;
       while (share < 1.0) {
         const double next = std::min(1.0, share + step);
         e.set_irregularity_share(next);
         try {
-          y = vehicle_equilibrium(dae, t, y, equilibrium_weights(dae, position_tolerance, velocity_tolerance), held)
+          y = vehicle_equilibrium(dae, t, y, equilibrium_weights(dae, position_tolerance, velocity_tolerance),
+                                  holds_at(next))
                   .state;
           share = next;
           reached = number_text(share);
@@ -203,8 +216,9 @@ std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, 
       return y;
     } catch (const std::exception& continued) {
       e.set_irregularity_share(1.0);
-      throw std::runtime_error(std::string(direct.what()) + "; continued from the rails without irregularities, " +
-                               "the equilibrium reached " + reached + " of them: " + continued.what());
+      throw std::runtime_error(std::string(direct.what()) + "; continued from the nominal rails" +
+                               (off_centre ? " with the held wheelsets centred" : "") + ", the equilibrium reached " +
+                               reached + " of the way: " + continued.what());
     }
   }
 }

@@ -49,7 +49,10 @@ VehicleEquilibrium vehicle_equilibrium(VehicleDae& dae, double t, std::vector<do
 /// position, each wheelset rolling at V / r0 as the guess; the equilibrium in rigid contact (a
 /// Hertz spring at zero approach has no stiffness to start Newton from), then, for an elastic
 /// model (own), in elastic contact from the rigid one lowered by 0.1 mm. Leaves every wheelset in
-/// formulation own. The tolerances [m, rad] and [m/s, rad/s] weigh the convergence test.
+/// formulation own. The tolerances [m, rad] and [m/s, rad/s] weigh the convergence test. Where
+/// Newton does not find it directly (irregular rails; a wheelset held off centre, which may put
+/// another on a jump of its contact point), it is continued from the nominal rails with the held
+/// wheelsets centred, raising the irregularities and the offsets together in formulation own.
 std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, double t, double position_tolerance,
                                        double velocity_tolerance, const std::vector<HeldWheelset>& held = {});
 

@@ -107,11 +107,12 @@ void VehicleSimulation::start() {
       y = vehicle_rest_state(dae_, own, 0.0, s.position_tolerance, s.velocity_tolerance, held);
       yp.assign(y.size(), 0.0);
     } catch (const std::runtime_error& no_rest) {
-      if (own != ContactFormulation::kRigid || !equations_.has_irregularities()) throw;
-      y = placed_on_rails(held);
+      if (own != ContactFormulation::kRigid || (!equations_.has_irregularities() && held.empty())) throw;
+      std::string how;
+      y = placed_on_rails(held, how);
       yp = vehicle_consistent_derivatives(dae_, 0.0, y, [this](size_t w) { return initialisation(w); });
-      start_note_ = std::string("started off its equilibrium: ") + no_rest.what() +
-                    "; the vehicle at rest on the nominal rails, each wheelset placed onto its rails at t = 0";
+      start_note_ = std::string("started off its equilibrium: ") + no_rest.what() + "; " + how +
+                    ", each wheelset placed onto its rails at t = 0";
     }
   }
   integrator_.begin(0.0, y, yp, vehicle_segment(s, equations_, dae_.layout(), own == ContactFormulation::kRigid));
@@ -158,12 +159,19 @@ std::vector<double> VehicleSimulation::continued_state() {
   return join_bodies(blocks);
 }
 
-std::vector<double> VehicleSimulation::placed_on_rails(const std::vector<HeldWheelset>& held) {
+std::vector<double> VehicleSimulation::placed_on_rails(const std::vector<HeldWheelset>& held, std::string& how) {
   const IntegratorSettings& s = spec_.run.integrator;
   equations_.set_irregularity_share(0.0);
   std::vector<double> y;
+  bool moved = false;
   try {
-    y = vehicle_rest_state(dae_, ContactFormulation::kRigid, 0.0, s.position_tolerance, s.velocity_tolerance, held);
+    try {
+      y = vehicle_rest_state(dae_, ContactFormulation::kRigid, 0.0, s.position_tolerance, s.velocity_tolerance, held);
+    } catch (const std::runtime_error&) {
+      if (held.empty()) throw;
+      y = vehicle_rest_state(dae_, ContactFormulation::kRigid, 0.0, s.position_tolerance, s.velocity_tolerance);
+      moved = true;
+    }
   } catch (...) {
     equations_.set_irregularity_share(1.0);
     throw;
@@ -171,6 +179,14 @@ std::vector<double> VehicleSimulation::placed_on_rails(const std::vector<HeldWhe
   equations_.set_irregularity_share(1.0);
   equations_.place(0.0);
   std::vector<std::vector<double>> blocks = split_by_body(dae_.layout(), y);
+  for (const HeldWheelset& h : held) {
+    if (!moved) break;
+    std::vector<double>& block = blocks[equations_.wheelset_body(h.wheelset)];
+    block[kUnknownY] = h.lateral;
+    block[kUnknownYaw] = h.yaw;
+  }
+  how = moved ? "the vehicle at rest centred on the nominal rails, its first wheelset then moved to its held y and yaw"
+              : "the vehicle at rest on the nominal rails";
   for (size_t w = 0; w < equations_.wheelset_count(); ++w)
     settle_on_lowest_branches(switching(w), blocks[equations_.wheelset_body(w)]);
   return join_bodies(blocks);

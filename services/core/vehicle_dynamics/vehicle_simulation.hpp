@@ -99,9 +99,11 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   void on_output(std::function<void(const VehicleSnapshot&)> callback) { on_output_ = std::move(callback); }
 
   /// The equilibrium at t = 0 (rigid contact first, then the model's own formulation) and the
-  /// first output. A rigid model with no equilibrium on irregular rails (a wheel at rest where its
-  /// contact point jumps) starts from the equilibrium on the nominal rails with each wheelset
-  /// placed onto its rails and consistent derivatives, and says so in start_note().
+  /// first output. A rigid model with no equilibrium on irregular rails or with its first wheelset
+  /// held off centre (a wheel at rest where its contact point jumps) starts from the equilibrium
+  /// on the nominal rails (with the hold, or else centred and the first wheelset then moved to its
+  /// held y and yaw) with each wheelset placed onto its rails and consistent derivatives, and says
+  /// so in start_note().
   /// @throws std::runtime_error when there is no start (the message says why).
   void start() override;
   /// How the run started when not from its equilibrium on its rails; empty otherwise.
@@ -192,9 +194,10 @@ class VehicleSimulation : public Simulation, private DaeSystem {
   void perform_swap(std::shared_ptr<ContactEvaluator> next);
   /// The state of spec_.start (every wheelset in its own formulation, projected when rigid).
   std::vector<double> continued_state();
-  /// Rigid: the rest state on the nominal rails (the held wheelsets held), each wheelset then
-  /// settled on its lowest branches of the irregular rails at t = 0.
-  std::vector<double> placed_on_rails(const std::vector<HeldWheelset>& held);
+  /// Rigid: the rest state on the nominal rails (the held wheelsets held; where that has none, the
+  /// vehicle's centred rest with the held wheelsets moved to their y and yaw), each wheelset then
+  /// settled on its lowest branches of the (irregular) rails at t = 0. Says which in how.
+  std::vector<double> placed_on_rails(const std::vector<HeldWheelset>& held, std::string& how);
 
   VehicleRunSpec spec_;
   std::vector<double> wheel_loads_;

@@ -168,7 +168,8 @@ void draw_bifurcations(const std::vector<LabelledBifurcation>& diagrams, const I
         add_series(plots, write_points(job, format("%zu-", d) + name + ".dat", pts), with + " lc rgb '" + colour + "'",
                    text);
     };
-    std::string text = diagram.label + ": stable cycles";
+    const bool irregular = p.points.count("irregular") > 0;
+    std::string text = diagram.label + (irregular ? ": stable cycles, irregular motion" : ": stable cycles");
     if (p.nonlinear > 0) text += format(", V_nl = %.2f m/s", p.nonlinear);
     if (p.linear > 0) text += format(", V_c = %.2f m/s", p.linear);
     add("cycles", cycles, "linespoints lw 2 pt 5 ps 0.8", text);

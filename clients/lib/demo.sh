@@ -197,7 +197,7 @@ echo "(docs/vehicle.md, \"The Cooperrider car and bogie on S1002/UIC60 1:40\", h
 wrc bifurcation --model spline --vehicle parameters/vehicles/cooperrider-bogie.json --r0 0.425 --friction 0.15 \
   --speeds 40:80:10 --start-amplitude 2e-3 --max-time 6 --speed-tolerance 1 \
   --out "$report_dir/bogie-s1002-bifurcation.csv" --plot "$report_dir/figures/bogie-s1002-bifurcation.png" 2>&1 |
-  sed -n '/^ramp-down\|^refinement\|critical speed/p' | sed 's/^/  /'
+  sed -n '/^branch\|^ramp-down\|^refinement\|critical speed/p' | sed 's/^/  /'
 
 section "A small sweep on both cores (wrc sweep; docs/sweep.md)"
 echo "The benchmark (Fy = 20 kN) at four speeds with the one-point and the spline model, 1 s each, every"

@@ -105,11 +105,11 @@ bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const Hunti
   }
   // Settled: centred, or a constant amplitude at two successive judgements whose amplitudes agree
   // within the growth tolerance (a slow decay or growth of less than the tolerance per cycle
-  // shows over the check period's cycles), or irregular at two successive judgements.
+  // shows over the check period's cycles), or irregular after a judgement whose envelope held.
   double next_check = settings.settle_time;
   bool settled = false;
   double previous_amplitude = -1;
-  bool irregular_before = false;
+  bool envelope_held_before = false;
   while (simulation.advance()) {
     if (simulation.time() + 1e-12 < next_check) continue;
     next_check += settings.check_period;
@@ -128,17 +128,15 @@ bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const Hunti
     } else {
       previous_amplitude = -1;
     }
-    // Irregular at two successive judgements: the envelope held at both; its cycles never agree,
-    // so waiting longer settles nothing more.
-    if (result.state == HuntingState::kIrregular) {
-      if (irregular_before) {
-        settled = true;
-        break;
-      }
-      irregular_before = true;
-    } else {
-      irregular_before = false;
+    // Irregular after a judgement whose envelope held too (irregular, or a cycle whose last three
+    // agreed by chance): its cycles never agree for long, so waiting settles nothing more.
+    if (result.state == HuntingState::kIrregular && envelope_held_before) {
+      settled = true;
+      break;
     }
+    envelope_held_before = (result.state == HuntingState::kIrregular || result.state == HuntingState::kLimitCycle) &&
+                           result.envelope_growth > 0 &&
+                           std::abs(result.envelope_growth - 1.0) <= settings.growth_tolerance;
   }
   result.simulated_time = simulation.time();
   if (simulation.state() == RunState::kFailed) {

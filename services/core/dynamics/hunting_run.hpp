@@ -45,8 +45,9 @@ enum class HuntingState {
   kGrowing,     ///< still growing at max_time (growth > 1 + tolerance)
   /// A bounded oscillation whose cycles differ (their growth outside the tolerance either way)
   /// while its envelope, the half range of y over the last window, holds within the tolerance per
-  /// cycle against the window before, at two successive judgements (or at max_time): motion in
-  /// flange contact that is not one periodic cycle (quasi-periodic or chaotic).
+  /// cycle against the window before, after a judgement whose envelope held too (or at
+  /// max_time): motion in flange contact that is not one periodic cycle (quasi-periodic or
+  /// chaotic).
   kIrregular,
   kFailed,      ///< the run failed (message says why) before it settled
 };

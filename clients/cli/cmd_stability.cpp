@@ -17,6 +17,7 @@
 #include "cli/run_options.hpp"
 #include "cli/command.hpp"
 #include "cli/in_process_contact.hpp"
+#include "options/fit_options.hpp"
 #include "cli/options.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/plot/gnuplot_job.hpp"
@@ -47,6 +48,7 @@ int run_stability(const std::vector<std::string>& args) {
   specs.insert(specs.begin() + 2, sources.begin(), sources.end());
   for (auto& spec : parameter_option_specs(wheelset_parameter_table(), WheelsetParameters{})) specs.push_back(spec);
   for (auto& spec : profile_option_specs()) specs.push_back(spec);
+  for (auto& spec : spline_model_fit_option_specs()) specs.push_back(spec);
   const Options o("stability", "--model M [--speeds 5:80:1] [--out FILE.csv] [--plot FILE.png] [options]", specs, args);
   if (o.help_requested()) {
     std::cout << o.help()
@@ -83,7 +85,7 @@ int run_stability(const std::vector<std::string>& args) {
   const double r0 = geometry_spec.track.nominal_radius;
   if (contact_model_entry(model).needs_data)
     std::cerr << "fitting the spline model (in-process, as wrc run --in-process does) ...\n";
-  LinearStability stability(spec.wheelset, in_process_contact(model, geometry), r0);
+  LinearStability stability(spec.wheelset, in_process_contact(model, geometry, fit_options_from(o)), r0);
 
   std::printf("linear stability, %s contact (%s formulation), %s\n", model.c_str(),
               stability.formulation() == ContactFormulation::kRigid ? "rigid" : "elastic",

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli/in_process_contact.hpp"
+#include "options/fit_options.hpp"
 #include "cli/plot/plot_options.hpp"
 #include "cli/profile_options.hpp"
 #include "cli/run_options.hpp"
@@ -77,7 +78,7 @@ int run_vehicle_stability(const Options& o, const VehicleDescription& vehicle, c
   const double r0 = geometry_spec.track.nominal_radius;
   if (contact_model_entry(model).needs_data)
     std::cerr << "fitting the spline model (in-process, as wrc run --in-process does) ...\n";
-  VehicleLinearStability stability(spec, in_process_contact(model, geometry), r0);
+  VehicleLinearStability stability(spec, in_process_contact(model, geometry, fit_options_from(o)), r0);
   std::printf("vehicle: '%s' (%s), %zu bodies, %zu wheelsets\n", vehicle.name.c_str(), vehicle_path.c_str(),
               vehicle.bodies.size(), vehicle.wheelsets().size());
   std::printf("linear stability, %s contact (%s formulation), %s\n", model.c_str(),

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file
-/// The spline-fit options of the command line (wrc fit, run, sweep, bifurcation and wrc-contactd;
-/// the same names as SplineFitOptions).
+/// The spline-fit options of the command line (wrc fit, run, sweep, stability, bifurcation and
+/// wrc-contactd; the same names as SplineFitOptions).
 
 #include <vector>
 
@@ -22,7 +22,7 @@ std::vector<OptionSpec> fit_option_specs();
 SplineFitOptions fit_options_from(const Options& options);
 
 /// fit_option_specs() for a command whose contact model may be the spline model (run, sweep,
-/// bifurcation), each help beginning "spline model only: ".
+/// stability, bifurcation), each help beginning "spline model only: ".
 std::vector<OptionSpec> spline_model_fit_option_specs();
 
 /// The first fit option given in options ("--box", ...), or empty when none is.

@@ -24,6 +24,12 @@ SplineModel::SplineModel(std::shared_ptr<const WheelsetGeometry> geometry,
   }
 }
 
+bool SplineModel::has_flange_side_minimum(WheelSide side, const WheelsetPose& pose) const {
+  const std::vector<ContactPoint> points = geometry_->potential_points(side, pose, options_.search);
+  return std::any_of(points.begin(), points.end(),
+                     [this](const ContactPoint& p) { return p.is_minimum && p.s <= splines_->s_split(); });
+}
+
 WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContext& context,
                                                ContactResult& result) const {
   const WheelsetPose& pose = context.query.pose;
@@ -59,6 +65,12 @@ WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContex
     c.contact_angle = point.contact_angle;
     c.switch_function = clearance;          // flange contact begins where it falls through 0
     c.switch_s_wheel = splines_->s_split();  // a tracked s <= s_split selects flange contact
+    // The fitted clearance is within its fit's accuracy of the exact one, not its sign: where it
+    // falls below 0 but the exact geometry has no minimum on the flange side, flange contact would
+    // find none to follow and come back to the tread at once (a switch back and forth without
+    // end). The tread stays: the switch function is mirrored above 0 until the exact flange
+    // minimum exists.
+    if (!(clearance > 0.0) && !has_flange_side_minimum(side, pose)) c.switch_function = -clearance;
     return c;
   }
   // Flange contact: the exact geometry's minimum on the flange side of the split.

@@ -35,6 +35,9 @@ class SplineModel final : public HertzianContactModel {
  private:
   WheelConstraint add_wheel_patches(WheelSide side, const PatchContext& context,
                                     ContactResult& result) const override;
+  /// Whether the exact geometry of wheel side has a minimum of the distance on the flange side of
+  /// the splines' split at pose.
+  bool has_flange_side_minimum(WheelSide side, const WheelsetPose& pose) const;
   std::shared_ptr<const SplineContactGeometry> splines_;
 };
 

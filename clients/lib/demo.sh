@@ -146,14 +146,14 @@ if [ "$ready" = 1 ]; then
     echo "coach run failed:"; tail -3 "$report_dir/coach.log"
   fi
   echo "The whole 1 km curve (parameters/track-curve-R600-1km.json, 1050 m of the same spectrum, seed 1):"
-  echo "the spline model fitted over flange contact too (--box -0.012:0.012,0.004,0.005 --knots 20x2x2),"
+  echo "the spline model fitted over flange contact too (--box -0.012:0.012,0.004,0.005 --knots 20x4x2),"
   echo "in-process (the spline services fit the tread's box), at a track run's tolerances (docs/track.md):"
   wrc irregularities --spectrum erri-low --length 1050 --wavelengths 3:70 --seed 1 \
     --out "$report_dir/irregularities-1km.csv" 2>&1 | sed 's/^/  /'
   summary="$report_dir/coach-1km.json"
   if wrc run --model spline --in-process --vehicle parameters/vehicles/manchester-coach.json --t-end 33.7 \
       --track parameters/track-curve-R600-1km.json --irregularities "$report_dir/irregularities-1km.csv" \
-      --box -0.012:0.012,0.004,0.005 --knots 20x2x2 --rtol 1e-4 --position-tolerance 1e-6 \
+      --box -0.012:0.012,0.004,0.005 --knots 20x4x2 --rtol 1e-4 --position-tolerance 1e-6 \
       --velocity-tolerance 1e-4 --summary "$summary" --history "$report_dir/coach-1km.csv" --output-period 0.01 \
       2>"$report_dir/coach-1km.log"; then
     printf '%-18s %9s %12s %9s\n' wheelset Y/Q_max Y/Q_2m_max sumY[kN]

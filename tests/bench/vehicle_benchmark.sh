@@ -10,7 +10,7 @@
 # queries (batches: round trips over the bus) and configurations, and the front bogie's leading
 # wheelset's 2 m sliding mean of Y/Q. T_END (default 33.7 s: the last wheelset past the track's
 # end) sets the run's length. The spline model is fitted over flange contact too (FIT, default
-# "--box -0.012:0.012,0.004,0.005 --knots 20x2x2": the stiff bogies' leading wheelsets run 6 to 11
+# "--box -0.012:0.012,0.004,0.005 --knots 20x4x2": the stiff bogies' leading wheelsets run 6 to 11
 # mm out in the curve, beyond the default box's tread; docs/vehicle.md), in-process by the
 # dynamics and over the bus by the spline service the run starts (fit time excluded from both;
 # FIT= fits the default box).
@@ -27,7 +27,7 @@ trap 'rm -rf "$work"' EXIT
 export WRC_CACHE_DIR="${WRC_CACHE_DIR:-$work/cache}"
 speed=30
 t_end="${T_END:-33.7}"
-read -r -a fit <<< "${FIT---box -0.012:0.012,0.004,0.005 --knots 20x2x2}"
+read -r -a fit <<< "${FIT---box -0.012:0.012,0.004,0.005 --knots 20x4x2}"
 read -r rtol position_tolerance velocity_tolerance <<< "${TOLERANCES:-1e-4 1e-6 1e-4}"
 "$cli" irregularities --spectrum erri-low --length 1050 --wavelengths 3:70 --seed 1 --out "$work/irr.csv"
 echo "coach: $root/parameters/vehicles/manchester-coach.json on $root/parameters/track-curve-R600-1km.json," \

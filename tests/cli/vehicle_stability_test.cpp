@@ -17,18 +17,26 @@
 namespace wrc::cli {
 namespace {
 
-TEST(VehicleStabilityCommand, WritesEveryEigenvalueWithItsBody) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "wrc-vehicle-stability-test";
+// `wrc stability` with args and the Cooperrider bogie's file, its CSV and plot into dir; the status.
+int stability_of_the_bogie(std::vector<std::string> args, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
-  const std::string csv = (dir / "stability.csv").string(), png = (dir / "stability.png").string();
-  const std::vector<std::string> args{"--model", "onepoint", "--vehicle",
-                                      std::string(WRC_PARAMETERS_DIR) + "/vehicles/cooperrider-bogie.json",
-                                      "--wheel", "conic:0.2", "--rail", "circle:0.1", "--gauge", "1.5",
-                                      "--gauge-depth", "0", "--inclination", "0", "--r0", "0.425", "--friction", "10",
-                                      "--speeds", "70:100:10", "--out", csv, "--plot", png};
+  const std::vector<std::string> common{"--vehicle", std::string(WRC_PARAMETERS_DIR) + "/vehicles/cooperrider-bogie.json",
+                                        "--out", (dir / "stability.csv").string(), "--plot",
+                                        (dir / "stability.png").string()};
+  args.insert(args.end(), common.begin(), common.end());
   int status = -1;
   for (const Command& c : command_registry())
     if (c.name == "stability") status = c.run(args);
+  return status;
+}
+
+TEST(VehicleStabilityCommand, WritesEveryEigenvalueWithItsBody) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "wrc-vehicle-stability-test";
+  const std::string csv = (dir / "stability.csv").string();
+  const int status = stability_of_the_bogie({"--model", "onepoint", "--wheel", "conic:0.2", "--rail", "circle:0.1",
+                                             "--gauge", "1.5", "--gauge-depth", "0", "--inclination", "0", "--r0",
+                                             "0.425", "--friction", "10", "--speeds", "70:100:10"},
+                                            dir);
   ASSERT_EQ(status, 0);
   std::ifstream in(csv);
   std::string header;
@@ -61,16 +69,11 @@ TEST(VehicleStabilityCommand, WritesEveryEigenvalueWithItsBody) {
 // 0.425 m, friction 0.15) with the spline model fitted by the fit options given.
 double spline_bogie_largest_real(const std::vector<std::string>& fit, double speed) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "wrc-vehicle-stability-fit-test";
-  std::filesystem::create_directories(dir);
-  const std::string csv = (dir / "stability.csv").string(), png = (dir / "stability.png").string();
-  std::vector<std::string> args{"--model", "spline", "--vehicle",
-                                std::string(WRC_PARAMETERS_DIR) + "/vehicles/cooperrider-bogie.json", "--r0", "0.425",
-                                "--friction", "0.15", "--speeds", std::to_string(speed) + ":" + std::to_string(speed) + ":1",
-                                "--out", csv, "--plot", png};
+  const std::string csv = (dir / "stability.csv").string();
+  std::vector<std::string> args{"--model", "spline", "--r0", "0.425", "--friction", "0.15", "--speeds",
+                                std::to_string(speed) + ":" + std::to_string(speed) + ":1"};
   args.insert(args.end(), fit.begin(), fit.end());
-  int status = -1;
-  for (const Command& c : command_registry())
-    if (c.name == "stability") status = c.run(args);
+  const int status = stability_of_the_bogie(args, dir);
   EXPECT_EQ(status, 0);
   std::ifstream in(csv);
   std::string line;

@@ -452,9 +452,12 @@ TEST_F(DynamicsServiceTest, SwapToAMissingServiceIsRefusedWithTheReason) {
   auto launcher = launch({"contact-multipoint", "dynamics"}, log);
   for (const char* model : {"multipoint", "dynamicsd"})
     ASSERT_TRUE(wait_available(model, kRunDeadline)) << model << "\n" << read_text(log);
-  // Long enough (about 8 s of wall time here, 2 s of it for 25 s simulated) for `wrc status`
-  // (1.2 s) and `wrc swap` to act while it runs.
-  const std::vector<std::string> args = run_args("multipoint", 100.0, temp_path("refused.json"));
+  // Long enough for `wrc status` (1.2 s) and `wrc swap` to act while it runs: 100 s simulated took
+  // 8 s of wall time once and 2.9 s on a faster day, when the run ended before the swap came (the
+  // test failed with no refusal); 400 s take some 12 s here (every 10 ms an output sample: at the
+  // default 1 ms they would be more than a run may write).
+  std::vector<std::string> args = run_args("multipoint", 400.0, temp_path("refused.json"));
+  args.insert(args.end(), {"--output-period", "0.01"});
   // The run's progress_t: fraction of the simulated interval, with the time remaining once it moves.
   std::vector<progress_t> progress;
   GuardedSubscription<progress_t> progress_sub(*lcm_, names_.name(channel::kProgress), "test progress",

@@ -79,8 +79,13 @@ double spline_bogie_largest_real(const std::vector<std::string>& fit, double spe
   std::string line;
   std::getline(in, line);
   double largest = -1e300;
+  bool found = false;
   while (std::getline(in, line))
-    if (line.substr(line.rfind(',') + 1) == "1") largest = std::stod(line.substr(line.find(',') + 1));
+    if (line.substr(line.rfind(',') + 1) == "1") {
+      largest = std::stod(line.substr(line.find(',') + 1));
+      found = true;
+    }
+  EXPECT_TRUE(found) << "no least damped mode in the CSV";
   std::filesystem::remove_all(dir);
   return largest;
 }

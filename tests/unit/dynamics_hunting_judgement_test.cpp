@@ -21,15 +21,15 @@ namespace {
 constexpr double kFrequency = 11.0;  // [Hz]
 constexpr double kStep = 1e-3;       // [s]
 
-// y(t) = a_k sin(2 pi f t) in the k-th cycle, a_k = amplitude(k); yaw and contact angle 0.
+// y(t) = drift t + a_k sin(2 pi f t) in the k-th cycle, a_k = amplitude(k); yaw and contact angle 0.
 template <class Amplitude>
-HuntingSamples samples(double t_end, Amplitude amplitude) {
+HuntingSamples samples(double t_end, Amplitude amplitude, double frequency = kFrequency, double drift = 0.0) {
   HuntingSamples s;
   for (long i = 0; i * kStep <= t_end + 1e-12; ++i) {
     const double t = i * kStep;
-    const long cycle = static_cast<long>(std::floor(t * kFrequency));
+    const long cycle = static_cast<long>(std::floor(t * frequency));
     s.t.push_back(t);
-    s.y.push_back(amplitude(cycle) * std::sin(2 * M_PI * kFrequency * t));
+    s.y.push_back(drift * t + amplitude(cycle) * std::sin(2 * M_PI * frequency * t));
     s.yaw.push_back(0.0);
     s.angle.push_back(0.0);
   }
@@ -55,8 +55,8 @@ TEST(HuntingJudgement, CyclesThatDifferUnderAHeldEnvelopeAreIrregularAndPersist)
   EXPECT_NEAR(r.cycle.growth, std::cbrt(3.6 / 3.9), 1e-3);
   EXPECT_EQ(r.state, HuntingState::kIrregular) << hunting_state_name(r.state);
   EXPECT_TRUE(r.persists());
-  // Both windows hold a 4.5 mm cycle: the envelope is 4.5 mm (sampled within 1 - cos(pi f h) =
-  // 6e-4 of the crest) and holds exactly.
+  // Both windows hold a 4.5 mm cycle: the envelope, the largest cycle, is 4.5 mm (its crest and
+  // trough refined by the parabola through three samples) and holds exactly.
   EXPECT_NEAR(r.envelope, 4.5e-3, 4.5e-3 * 6e-4);
   EXPECT_NEAR(r.envelope_growth, 1.0, 1e-3);
   EXPECT_DOUBLE_EQ(r.amplitude(), r.envelope);
@@ -69,7 +69,7 @@ TEST(HuntingJudgement, CyclesThatDifferUnderAHeldEnvelopeAreIrregularAndPersist)
 }
 
 // A regular decay shows in the envelope as in the cycles: decaying, the envelope's growth per cycle
-// the cycles' (0.9) to the sampling of the crests (1e-3).
+// the cycles' (0.97) to the sampling of the crests (1e-3).
 TEST(HuntingJudgement, ARegularDecayIsDecayingByItsEnvelopeToo) {
   const HuntingSettings settings;
   const double now = 6.0;
@@ -80,6 +80,38 @@ TEST(HuntingJudgement, ARegularDecayIsDecayingByItsEnvelopeToo) {
   EXPECT_NEAR(r.cycle.growth, 0.97, 1e-3);
   EXPECT_NEAR(r.envelope_growth, 0.97, 1e-3);
   EXPECT_FALSE(r.persists());
+}
+
+// The envelope's growth is per period elapsed: at 10.3 Hz a window of 2 s holds 20.6 periods, and
+// the largest cycles of two windows lie 20 or 21 cycles apart, so the growth per period comes out
+// as 0.97^(20/20.6) or 0.97^(21/20.6), within 0.0015 of 0.97 (tolerance 2e-3). A slow drift of the
+// mean (2 mm/s, as a body's sway would) leaves it alone: the envelope is the largest cycle's half
+// peak-to-peak, not the window's range, which the drift would hold up (4 mm over a window against
+// cycles of 0.5 to 2 mm) into an irregular judgement.
+TEST(HuntingJudgement, TheEnvelopeGrowsPerPeriodAndIgnoresADriftOfTheMean) {
+  const HuntingSettings settings;
+  const double now = 6.0;
+  HuntingRun r;
+  judge_hunting(samples(now, [](long k) { return 5e-3 * std::pow(0.97, static_cast<double>(k)); }, 10.3, 2e-3), now,
+                settings, r);
+  EXPECT_EQ(r.state, HuntingState::kDecaying) << hunting_state_name(r.state);
+  EXPECT_NEAR(r.envelope_growth, 0.97, 2e-3);
+  EXPECT_LT(r.cycle.growth, 0.99);  // the cycles decay too (their half peak-to-peak carries a
+                                    // drift of drift / (4 f) = 49 um, so not exactly 0.97)
+}
+
+// Samples after the time judged do not count: the same signal judged at 3 s with samples up to 6 s
+// and with samples up to 3 s alone gives the same judgement.
+TEST(HuntingJudgement, OnlySamplesUpToTheTimeJudgedCount) {
+  const HuntingSettings settings;
+  auto decay = [](long k) { return 5e-3 * std::pow(0.97, static_cast<double>(k)); };
+  HuntingRun longer, exact;
+  judge_hunting(samples(6.0, decay), 3.0, settings, longer);
+  judge_hunting(samples(3.0, decay), 3.0, settings, exact);
+  EXPECT_EQ(longer.cycle.cycles, exact.cycle.cycles);
+  EXPECT_DOUBLE_EQ(longer.cycle.amplitude, exact.cycle.amplitude);
+  EXPECT_DOUBLE_EQ(longer.envelope, exact.envelope);
+  EXPECT_EQ(longer.state, exact.state);
 }
 
 TEST(HuntingJudgement, ARegularGrowthIsGrowingAndAConstantCycleALimitCycle) {

@@ -226,22 +226,23 @@ TEST(SplineModel, FlangeContactUsesTheExactGeometry) {
 // switch function asks for flange contact (< 0), the exact geometry must have a flange-side
 // minimum. A scan of the left wheel every 0.1 mm in y at three rolls and two yaws, followed on the
 // tread.
-TEST(SplineModel, ATreadSwitchToFlangeContactAlwaysFindsAFlangeMinimum) {
+// The scan of the left wheel every 0.1 mm in y at three rolls (within roll_max) and two yaws,
+// followed on the tread: configurations whose tread asks for flange contact (switch function < 0)
+// without a flange-side minimum of the exact geometry, those that ask with one, and those where
+// the fitted clearance is <= 0 without one.
+struct TreadScan {
+  long asking_without = 0, asking = 0, fitted_below_without = 0;
+};
+TreadScan scan_tread(const SplineFit& fit, double roll_max) {
   const auto geometry = s1002_uic60_geometry();
-  SplineFitOptions o = test::quick_spline_options();
-  o.y_min = -0.012;
-  o.y_max = 0.012;
-  o.roll_max = 0.004;
-  o.roll_samples = 9;
-  o.intervals = {20, 4, 2};
-  const SplineFit fit = fit_spline_geometry(*geometry, o);
   const SplineModel spline(geometry, fit.model);
   const double s_split = fit.model->s_split();
-  long asking = 0, fitted_below_without_flange = 0;
+  TreadScan scan;
   for (int i = -120; i <= 120; ++i)
-    for (double roll : {-0.003, 0.0, 0.003})
+    for (double roll : {-0.75 * roll_max, 0.0, 0.75 * roll_max})
       for (double yaw : {0.0, 0.004}) {
         ContactQuery q = rigid_query(1e-4 * i, roll, yaw);
+        if (!fit.model->inside(WheelSide::kLeft, q.pose)) continue;
         q.tracked_s_wheel = {0.0, 0.0};  // on the tread (the taping line), s > s_split
         SplineEvaluation e;
         fit.model->evaluate(WheelSide::kLeft, q.pose, SplineDerivatives::kValue, e);
@@ -249,17 +250,41 @@ TEST(SplineModel, ATreadSwitchToFlangeContactAlwaysFindsAFlangeMinimum) {
         const bool flange_minimum = std::any_of(points.begin(), points.end(), [&](const ContactPoint& p) {
           return p.is_minimum && p.s <= s_split;
         });
-        if (!(e.value[kFieldFlangeClearance] > 0.0) && !flange_minimum) ++fitted_below_without_flange;
+        if (!(e.value[kFieldFlangeClearance] > 0.0) && !flange_minimum) ++scan.fitted_below_without;
         const ContactResult r = spline.evaluate(q);
         if (!(r.wheels[0].switch_function < 0.0)) continue;
-        ++asking;
-        EXPECT_TRUE(flange_minimum) << "y = " << q.pose.y << ", roll = " << roll << ", yaw = " << yaw
-                                    << ": the tread asks for flange contact (switch function "
-                                    << r.wheels[0].switch_function << ") where the exact geometry has none";
+        ++scan.asking;
+        if (!flange_minimum) ++scan.asking_without;
       }
-  EXPECT_GT(asking, 0) << "the scan should reach flange contact";
-  std::cout << "[ measured ] " << asking << " configurations ask for flange contact; the fitted clearance is <= 0 "
-            << "without a flange minimum at " << fitted_below_without_flange << "\n";
+  return scan;
+}
+
+// Fitted over flange contact (y within +-12 mm, roll within +-4 mrad, 20 x 4 x 2 knot intervals:
+// the coach benchmark's box), the fitted flange clearance is within its fit's accuracy of the
+// exact one, not of its sign: near the flange root it falls below 0 (by 63 nm where the coach met
+// it) where the exact geometry has no minimum on the flange side. A switch from the tread to
+// flange contact there found no flange point to follow and came straight back, without end (the
+// coach's run stopped at 6.9 s on "finds no branch that is the lowest";
+// VehicleSwitching.TheSplineModelFittedOverFlangeContactRunsThroughTheFitsBand). So wherever the
+// tread asks for flange contact, the exact geometry must have a flange-side minimum. The default
+// fit (the tread's box) has no such band in the scan, so its runs are what they were.
+TEST(SplineModel, ATreadSwitchToFlangeContactAlwaysFindsAFlangeMinimum) {
+  SplineFitOptions o = test::quick_spline_options();
+  o.y_min = -0.012;
+  o.y_max = 0.012;
+  o.roll_max = 0.004;
+  o.roll_samples = 9;
+  o.intervals = {20, 4, 2};
+  const TreadScan wide = scan_tread(fit_spline_geometry(*s1002_uic60_geometry(), o), o.roll_max);
+  EXPECT_EQ(wide.asking_without, 0) << "the tread asks for flange contact where the exact geometry has none";
+  EXPECT_GT(wide.asking, 0) << "the scan should reach flange contact";
+  EXPECT_GT(wide.fitted_below_without, 0) << "the scan should reach the band this test is about";
+  const TreadScan tread = scan_tread(default_spline_fit(), SplineFitOptions{}.roll_max);
+  EXPECT_EQ(tread.fitted_below_without, 0);
+  EXPECT_EQ(tread.asking_without, 0);
+  std::cout << "[ measured ] box over flange contact: " << wide.asking << " configurations ask for flange contact; "
+            << "the fitted clearance is <= 0 without a flange minimum at " << wide.fitted_below_without
+            << "; the default box: " << tread.asking << " and " << tread.fitted_below_without << "\n";
 }
 
 }  // namespace

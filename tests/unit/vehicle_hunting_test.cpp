@@ -123,7 +123,7 @@ TEST(VehicleHunting, ARunContinuedFromAnothersEndGoesOnAsOneRun) {
 // along the branch the amplitude changes by 0.045 mm per m/s (0.87 mm at 60, 1.35 mm at 70 m/s),
 // and the two models' folds lie 1.9 m/s apart (44.4 and 46.3 m/s, where the cycle comes down to
 // S1002's centred contact-point jump), which would move the amplitude at 60 m/s by 10 % if the
-// whole branch shifted with them; measured 0.9 %. Frequency within 1 % (measured 0.3 %).
+// whole branch shifted with them; measured 1.0 %. Frequency within 1 % (measured 0.3 %).
 TEST(VehicleHunting, OnS1002TheRigidModelsFollowOneSubcriticalTreadCycleOfTheBogie) {
   VehicleRunSpec spec = test::cooperrider_bogie_run(60.0, 0.0, 6.0);
   HuntingSettings settings;

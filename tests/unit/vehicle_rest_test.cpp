@@ -28,6 +28,7 @@
 #include "core/track/track_layout_file.hpp"
 #include "core/vehicle_dynamics/vehicle_equilibrium.hpp"
 #include "core/vehicle_dynamics/vehicle_simulation.hpp"
+#include "coach_on_track.hpp"
 #include "single_wheelset_vehicle_run.hpp"
 #include "spline_test_model.hpp"
 
@@ -76,28 +77,6 @@ TEST(VehicleRest, TheManchesterCoachRestsOnItsSpringsAsItsStaticsSay) {
   }
 }
 
-// ERRI low-level irregularities (3 to 70 m, 1050 m) of the given seed, as `wrc irregularities
-// --spectrum erri-low --length 1050 --wavelengths 3:70 --seed N` writes them.
-TrackIrregularity erri_low(std::uint64_t seed) {
-  IrregularityGeneration g;
-  g.length = 1050.0;
-  g.min_wavelength = 3.0;
-  g.max_wavelength = 70.0;
-  g.seed = seed;
-  return generate_irregularity(g);
-}
-
-// The coach on the R600 layout with irregularities, its common run values.
-VehicleRunSpec coach_on_irregular_track(std::uint64_t seed) {
-  VehicleRunSpec spec;
-  spec.vehicle = read_vehicle_file(std::string(WRC_PARAMETERS_DIR) + "/vehicles/manchester-coach.json");
-  spec.run.wheelset.speed = 30.0;
-  spec.run.wheelset.lateral_force = 0.0;
-  spec.run.track = read_track_layout_file(std::string(WRC_PARAMETERS_DIR) + "/track-curve-R600-1km.json");
-  spec.run.irregularity = erri_low(seed);
-  return spec;
-}
-
 // On irregular rails a model's Newton iteration from the nominal positions may not find the rest
 // (the multipoint model on these, seed 2: the elastic stage's first steps sink a wheel 50 mm into
 // its rail, which Hertz's theory refuses). The rest is then continued from the nominal rails, the
@@ -106,7 +85,7 @@ VehicleRunSpec coach_on_irregular_track(std::uint64_t seed) {
 // tolerances), not one on a share of them (a share of 0.9 moves the wheelsets by tenths of a
 // millimetre, thousands of tolerances).
 TEST(VehicleRest, OnIrregularRailsTheRestIsContinuedFromTheNominalRails) {
-  const VehicleRunSpec spec = coach_on_irregular_track(2);
+  const VehicleRunSpec spec = test::coach_on_irregular_track(2);
   const std::vector<double> loads = static_wheel_loads(spec.vehicle, spec.run.wheelset.gravity);
   VehicleEquations equations(spec.vehicle, spec.run.wheelset, spec.run.track, spec.run.irregularity, kR0, loads);
   VehicleContact contact(std::make_shared<InProcessContact>(make_contact_model("multipoint", test::s1002_uic60_geometry())),
@@ -128,7 +107,7 @@ TEST(VehicleRest, OnIrregularRailsTheRestIsContinuedFromTheNominalRails) {
 // placed onto its rails (positions and velocities projected, derivatives consistent), says so,
 // and runs: every wheel loaded at the start, the run to 0.2 s.
 TEST(VehicleRest, ARigidRunWithNoRestOnItsRailsStartsPlacedOnThemAndSaysSo) {
-  VehicleRunSpec spec = coach_on_irregular_track(1);
+  VehicleRunSpec spec = test::coach_on_irregular_track(1);
   spec.run.integrator.t_end = 0.2;
   VehicleSimulation sim(spec, std::make_shared<InProcessContact>(make_contact_model("onepoint", test::s1002_uic60_geometry())),
                         kR0);

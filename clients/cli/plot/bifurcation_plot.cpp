@@ -119,7 +119,7 @@ void draw_bifurcation(const sweep::CsvTable& table, const ImageRequest& image, c
       {"cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#d62728'", "ramp-down: stable cycle reaching the flange (root)"},
       {"tread-cycle", "linespoints lw 2 pt 5 ps 0.8 lc rgb '#ff7f0e'", "ramp-down: stable cycle on the tread"},
       {"irregular", "linespoints dt 3 lw 2 pt 13 ps 1.2 lc rgb '#8c564b'",
-       "ramp-down: irregular motion persisting (half range of y)"},
+       "ramp-down: irregular motion persisting (its largest cycle)"},
       {"cycle-unsettled", "points pt 4 ps 1.2 lc rgb '#d62728'", "ramp-down: still growing at the end"},
       {"collapsed", "points pt 4 ps 1.5 lc rgb '#2ca02c'", "ramp-down: cycle collapsed (centred or decaying)"},
       {"unstable", "linespoints dt 2 lw 2 pt 6 ps 0.8 lc rgb '#9467bd'", "unstable cycle (separatrix estimate)"},

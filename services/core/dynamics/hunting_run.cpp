@@ -18,16 +18,19 @@ void require(bool ok, const char* name, double value, const char* range) {
                                 ", must be " + range);
 }
 
-// envelope_growth: 0 until the run holds two windows.
+// Whether an envelope's growth per cycle (0: not measured) holds within the tolerance.
+bool envelope_holds(double envelope_growth, const HuntingSettings& s) {
+  return envelope_growth > 0 && std::abs(envelope_growth - 1.0) <= s.growth_tolerance;
+}
+
 HuntingState judge(const CycleMeasurement& c, double envelope_growth, const HuntingSettings& s) {
   if (c.largest < s.centred_amplitude) return HuntingState::kCentred;
   if (c.cycles < 2) return HuntingState::kDecaying;  // no oscillation to measure yet (an aperiodic decay)
-  const bool cycle_holds = std::abs(c.growth - 1.0) <= s.growth_tolerance;
-  if (cycle_holds) return HuntingState::kLimitCycle;
-  // The last cycles grow or shrink, but the envelope over the whole window holds: the cycles
+  if (std::abs(c.growth - 1.0) <= s.growth_tolerance) return HuntingState::kLimitCycle;
+  // The last cycles grow or shrink, but the envelope holds against the window before: the cycles
   // differ from one another (irregular motion), the oscillation does not die out. A regular decay
   // or growth shows in the envelope as in the cycles.
-  if (envelope_growth > 0 && std::abs(envelope_growth - 1.0) <= s.growth_tolerance) return HuntingState::kIrregular;
+  if (envelope_holds(envelope_growth, s)) return HuntingState::kIrregular;
   return c.growth < 1.0 ? HuntingState::kDecaying : HuntingState::kGrowing;
 }
 
@@ -67,27 +70,32 @@ void HuntingSamples::add(const WheelsetSnapshot& w) {
 void judge_hunting(const HuntingSamples& s, double now, const HuntingSettings& settings, HuntingRun& result) {
   // The last window; when it holds fewer than 3 cycles (a slow oscillation: at low speed the
   // kinematic wavelength of some 5 m takes seconds) and the run is longer than twice the window,
-  // the second half of the run instead, if that holds more.
-  const CycleMeasurement window = measure_cycle(s.t, s.y, now - settings.window);
+  // the second half of the run instead, if that holds more. Samples after now do not count.
+  constexpr int kPeriods = 3;
+  const double end = std::nextafter(now, std::numeric_limits<double>::infinity());
+  const CycleMeasurement window = measure_cycle(s.t, s.y, now - settings.window, kPeriods, end);
   double from = now - settings.window;
   result.cycle = window;
   if (window.cycles < 3 && now > 2 * settings.window) {
-    const CycleMeasurement longer = measure_cycle(s.t, s.y, 0.5 * now);
+    const CycleMeasurement longer = measure_cycle(s.t, s.y, 0.5 * now, kPeriods, end);
     if (longer.cycles > window.cycles) {
       from = 0.5 * now;
       result.cycle = longer;
     }
   }
-  result.yaw_amplitude = measure_cycle(s.t, s.yaw, from).amplitude;
+  result.yaw_amplitude = measure_cycle(s.t, s.yaw, from, kPeriods, end).amplitude;
   result.largest_contact_angle = 0;
   for (std::size_t i = 0; i < s.t.size(); ++i)
-    if (s.t[i] >= from) result.largest_contact_angle = std::max(result.largest_contact_angle, s.angle[i]);
+    if (s.t[i] >= from && s.t[i] <= now) result.largest_contact_angle = std::max(result.largest_contact_angle, s.angle[i]);
   result.flange_contact = result.largest_contact_angle > settings.flange_contact_angle;
-  // The envelope of the last window against the window before it, per cycle of the last.
-  result.envelope = half_range(s.t, s.y, now - settings.window, std::numeric_limits<double>::infinity());
-  const double previous = half_range(s.t, s.y, now - 2 * settings.window, now - settings.window);
-  result.envelope_growth = now - 2 * settings.window >= 0 && previous > 0 && window.cycles > 0
-                               ? std::pow(result.envelope / previous, 1.0 / window.cycles)
+  // The envelope, the largest cycle of the last window, against the window before it, per period
+  // of the last window elapsed.
+  result.envelope = window.largest_amplitude;
+  const double previous =
+      measure_cycle(s.t, s.y, now - 2 * settings.window, kPeriods, now - settings.window).largest_amplitude;
+  const double periods = window.period > 0 ? settings.window / window.period : 0.0;
+  result.envelope_growth = now - 2 * settings.window >= 0 && previous > 0 && result.envelope > 0 && periods > 0
+                               ? std::pow(result.envelope / previous, 1.0 / periods)
                                : 0.0;
   result.state = judge(result.cycle, result.envelope_growth, settings);
 }
@@ -105,11 +113,11 @@ bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const Hunti
   }
   // Settled: centred, or a constant amplitude at two successive judgements whose amplitudes agree
   // within the growth tolerance (a slow decay or growth of less than the tolerance per cycle
-  // shows over the check period's cycles), or irregular after a judgement whose envelope held.
+  // shows over the check period's cycles), or irregular with its envelope held over a window.
   double next_check = settings.settle_time;
   bool settled = false;
   double previous_amplitude = -1;
-  bool envelope_held_before = false;
+  double held_since = -1;  // [s] the first of the judgements in a row whose envelope held; -1: none
   while (simulation.advance()) {
     if (simulation.time() + 1e-12 < next_check) continue;
     next_check += settings.check_period;
@@ -128,15 +136,21 @@ bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const Hunti
     } else {
       previous_amplitude = -1;
     }
-    // Irregular after a judgement whose envelope held too (irregular, or a cycle whose last three
-    // agreed by chance): its cycles never agree for long, so waiting settles nothing more.
-    if (result.state == HuntingState::kIrregular && envelope_held_before) {
+    // Irregular, its envelope held at every judgement over a whole window (irregular, or a cycle
+    // whose last three agreed by chance): its cycles never agree for long, so waiting settles
+    // nothing more.
+    const bool held = (result.state == HuntingState::kIrregular || result.state == HuntingState::kLimitCycle) &&
+                      envelope_holds(result.envelope_growth, settings);
+    if (!held) {
+      held_since = -1;
+    } else if (held_since < 0) {
+      held_since = simulation.time();
+    }
+    if (result.state == HuntingState::kIrregular && held_since >= 0 &&
+        simulation.time() - held_since >= settings.window - 1e-9) {
       settled = true;
       break;
     }
-    envelope_held_before = (result.state == HuntingState::kIrregular || result.state == HuntingState::kLimitCycle) &&
-                           result.envelope_growth > 0 &&
-                           std::abs(result.envelope_growth - 1.0) <= settings.growth_tolerance;
   }
   result.simulated_time = simulation.time();
   if (simulation.state() == RunState::kFailed) {

@@ -2,9 +2,10 @@
 #pragma once
 /// @file
 /// One hunting run (docs/bifurcation.md): the wheelset on straight track at one speed, from a given
-/// lateral state, integrated until its lateral oscillation has settled (a converged limit cycle or
-/// the centred state) or a time limit, and classified by the last cycles of y. A run judged a
-/// limit cycle at max_time without a second judgement is reported as one.
+/// lateral state, integrated until its lateral oscillation has settled (a converged limit cycle,
+/// an irregular motion whose envelope holds, or the centred state) or a time limit, and classified
+/// by the last cycles of y and their envelope. A run judged a limit cycle at max_time without a
+/// second judgement is reported as one.
 
 #include <memory>
 #include <string>
@@ -44,10 +45,10 @@ enum class HuntingState {
   kLimitCycle,  ///< constant amplitude (growth within tolerance) at two successive judgements
   kGrowing,     ///< still growing at max_time (growth > 1 + tolerance)
   /// A bounded oscillation whose cycles differ (their growth outside the tolerance either way)
-  /// while its envelope, the half range of y over the last window, holds within the tolerance per
-  /// cycle against the window before, after a judgement whose envelope held too (or at
-  /// max_time): motion in flange contact that is not one periodic cycle (quasi-periodic or
-  /// chaotic).
+  /// while its envelope, the largest cycle of the last window, holds within the tolerance per
+  /// period against the window before, at every judgement over a whole window (or at max_time):
+  /// motion that is not one periodic cycle (quasi-periodic or chaotic; the Cooperrider bogie's in
+  /// flange contact).
   kIrregular,
   kFailed,      ///< the run failed (message says why) before it settled
 };
@@ -61,9 +62,10 @@ struct HuntingRun {
   InitialState start;             ///< where it started
   HuntingState state = HuntingState::kFailed;
   CycleMeasurement cycle;         ///< of y over the last window [m, s]
-  double envelope = 0;            ///< half range of y over the last window [m]
-  /// The envelope's growth per cycle against the window before it [-]: (envelope / previous
-  /// window's)^(1 / cycles in the last window); 0 until the run holds two windows.
+  double envelope = 0;            ///< the largest cycle's half peak-to-peak over the last window [m]
+  /// The envelope's growth per period against the window before it [-]: (envelope / previous
+  /// window's)^(period / window); 0 while not measurable (the run shorter than two windows, no
+  /// cycle in either window).
   double envelope_growth = 0;
   double yaw_amplitude = 0;       ///< half peak-to-peak of the yaw angle's last cycle [rad]
   double largest_contact_angle = 0;  ///< of both wheels over the last window [rad]
@@ -94,8 +96,9 @@ struct HuntingSamples {
 void judge_hunting(const HuntingSamples& samples, double now, const HuntingSettings& settings, HuntingRun& result);
 
 /// Starts simulation and advances it until the oscillation of samples (which its output fills)
-/// has settled (run_hunting's judgement) or its end time; sets result's state, cycle, yaw
-/// amplitude, contact angle, flange contact, simulated time and message (not start, end, speed).
+/// has settled (judge_hunting() every check period from settle_time on) or its end time; sets
+/// result's state, cycle, envelope, yaw amplitude, contact angle, flange contact, simulated time
+/// and message (not start, end, speed).
 /// The one loop of the lone wheelset's hunting run and a vehicle's. Returns false when the run
 /// found no consistent initial state (result kFailed, the message says why).
 bool follow_hunting(Simulation& simulation, const HuntingSamples& samples, const HuntingSettings& settings,

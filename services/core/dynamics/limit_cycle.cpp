@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -30,7 +29,8 @@ Extremum vertex(double t0, double x0, double t1, double x1, double t2, double x2
 
 }  // namespace
 
-CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<double>& x, double from, int periods) {
+CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<double>& x, double from, int periods,
+                               double to) {
   if (t.size() != x.size())
     throw std::invalid_argument("measure_cycle: " + std::to_string(t.size()) + " times but " +
                                 std::to_string(x.size()) + " values");
@@ -42,9 +42,9 @@ CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<d
   CycleMeasurement m;
   std::vector<Extremum> extremes;
   for (std::size_t i = 0; i < t.size(); ++i) {
-    if (t[i] < from) continue;
+    if (t[i] < from || t[i] >= to) continue;
     m.largest = std::max(m.largest, std::abs(x[i]));
-    if (i == 0 || i + 1 >= t.size() || t[i - 1] < from) continue;
+    if (i == 0 || i + 1 >= t.size() || t[i - 1] < from || t[i + 1] >= to) continue;
     const bool peak = x[i] > x[i - 1] && x[i] >= x[i + 1];
     const bool trough = x[i] < x[i - 1] && x[i] <= x[i + 1];
     if (peak || trough) extremes.push_back(vertex(t[i - 1], x[i - 1], t[i], x[i], t[i + 1], x[i + 1], peak));
@@ -54,7 +54,7 @@ CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<d
   // the integrator's or the contact's noise on a flank is no cycle); of two of a kind in a row the
   // more extreme one is kept.
   constexpr double kHysteresis = 0.01;
-  const double threshold = kHysteresis * 2.0 * half_range(t, x, from, std::numeric_limits<double>::infinity());
+  const double threshold = kHysteresis * 2.0 * half_range(t, x, from, to);
   std::vector<Extremum> alternating;
   for (const Extremum& e : extremes) {
     if (!alternating.empty() && alternating.back().peak == e.peak) {
@@ -78,6 +78,7 @@ CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<d
   if (!amplitudes.empty()) {
     m.amplitude = amplitudes.back();
     m.mean = means.back();
+    m.largest_amplitude = *std::max_element(amplitudes.begin(), amplitudes.end());
   }
   // The mean ratio of successive cycles over the last up to `periods` + 1 cycles.
   if (amplitudes.size() >= 2) {

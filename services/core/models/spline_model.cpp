@@ -24,10 +24,13 @@ SplineModel::SplineModel(std::shared_ptr<const WheelsetGeometry> geometry,
   }
 }
 
-bool SplineModel::has_flange_side_minimum(WheelSide side, const WheelsetPose& pose) const {
-  const std::vector<ContactPoint> points = geometry_->potential_points(side, pose, options_.search);
+bool SplineModel::any_flange_side_minimum(const std::vector<ContactPoint>& points) const {
   return std::any_of(points.begin(), points.end(),
                      [this](const ContactPoint& p) { return p.is_minimum && p.s <= splines_->s_split(); });
+}
+
+bool SplineModel::has_flange_side_minimum(WheelSide side, const WheelsetPose& pose) const {
+  return any_flange_side_minimum(geometry_->potential_points(side, pose, options_.search));
 }
 
 WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContext& context,
@@ -40,7 +43,10 @@ WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContex
   splines_->evaluate(side, pose, SplineDerivatives::kGradient, e, kSplineQueryFieldCount, 1);
   const double clearance = e.value[kFieldFlangeClearance];
   const double tracked = context.query.tracked_s_wheel[static_cast<size_t>(side)];
-  const bool flange_contact = std::isnan(tracked) ? !(clearance > 0.0) : tracked <= splines_->s_split();
+  // Untracked (a first query), flange contact where the fitted clearance and the exact geometry
+  // both say so: the tracked run's tread keeps it where only the fit does (below).
+  const bool flange_contact = std::isnan(tracked) ? !(clearance > 0.0) && has_flange_side_minimum(side, pose)
+                                                  : tracked <= splines_->s_split();
   if (!flange_contact) {
     const ContactPoint point = splines_->contact_point(side, pose, e);
     std::optional<ContactPatch> patch = one_point_patch(point, splines_->patch_shape(e), context);
@@ -78,9 +84,7 @@ WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContex
   std::vector<ContactPoint> flange_side;
   for (const ContactPoint& p : points)
     if (p.s <= splines_->s_split()) flange_side.push_back(p);
-  const bool any_flange_minimum =
-      std::any_of(flange_side.begin(), flange_side.end(), [](const ContactPoint& p) { return p.is_minimum; });
-  const std::vector<ContactPoint>& candidates = any_flange_minimum ? flange_side : points;
+  const std::vector<ContactPoint>& candidates = any_flange_side_minimum(points) ? flange_side : points;
   if (!std::any_of(candidates.begin(), candidates.end(), [](const ContactPoint& p) { return p.is_minimum; }))
     check_common_point(*geometry_, side, nullptr, pose, steepest_flange_);
   const TrackedBranch branch = track_branch(candidates, tracked);

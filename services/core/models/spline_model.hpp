@@ -6,6 +6,7 @@
 /// with the fitted shape and the contact point as centre.
 
 #include <memory>
+#include <vector>
 
 #include "core/models/hertzian_model.hpp"
 #include "core/spline/spline_contact_geometry.hpp"
@@ -22,7 +23,10 @@ namespace wrc {
 ///    curvatures and distance_curvature (SplineContactGeometry::evaluate of every field gives them);
 ///  - flange clearance <= 0 (flange contact, a physical discontinuity the model keeps): the exact
 ///    common point and its Hertz shape, as OnePointModel. The fitted clearance is continuous, so
-///    a simulation locates the switch as the root of that function (an event).
+///    a simulation locates the switch as the root of that function (an event). Where it is <= 0
+///    but the exact geometry has no minimum on the flange side (the fit's error near the flange
+///    root), the tread stays: its switch function is mirrored above 0 there, and jumps to the
+///    clearance where the exact flange minimum appears (the event is then that jump).
 class SplineModel final : public HertzianContactModel {
  public:
   /// @throws std::invalid_argument for a null geometry or splines, or invalid options.
@@ -35,8 +39,9 @@ class SplineModel final : public HertzianContactModel {
  private:
   WheelConstraint add_wheel_patches(WheelSide side, const PatchContext& context,
                                     ContactResult& result) const override;
-  /// Whether the exact geometry of wheel side has a minimum of the distance on the flange side of
-  /// the splines' split at pose.
+  /// Whether one of points is a minimum of the distance on the flange side of the splines' split.
+  bool any_flange_side_minimum(const std::vector<ContactPoint>& points) const;
+  /// Whether the exact geometry of wheel side has such a minimum at pose.
   bool has_flange_side_minimum(WheelSide side, const WheelsetPose& pose) const;
   std::shared_ptr<const SplineContactGeometry> splines_;
 };

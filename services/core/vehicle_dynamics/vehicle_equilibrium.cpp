@@ -171,14 +171,15 @@ std::vector<double> rest_state_on_rails(VehicleDae& dae, ContactFormulation own,
 }  // namespace
 
 std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, double t, double position_tolerance,
-                                       double velocity_tolerance, const std::vector<HeldWheelset>& held) {
+                                       double velocity_tolerance, const std::vector<HeldWheelset>& held,
+                                       bool continued) {
   VehicleEquations& e = dae.equations();
   try {
     return rest_state_on_rails(dae, own, t, position_tolerance, velocity_tolerance, held);
   } catch (const std::runtime_error& direct) {
     const bool off_centre = std::any_of(held.begin(), held.end(),
                                         [](const HeldWheelset& h) { return h.lateral != 0.0 || h.yaw != 0.0; });
-    if (!e.has_irregularities() && !off_centre) throw;
+    if (!continued || (!e.has_irregularities() && !off_centre)) throw;
     // Continued from the nominal rails with the held wheelsets centred: the share of the
     // irregularities and of the holds' offsets raised from 0 to 1 in the formulation own (an
     // elastic contact is smooth where a rigid one's contact point jumps), each equilibrium the next
@@ -214,11 +215,11 @@ std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, 
       }
       e.set_irregularity_share(1.0);
       return y;
-    } catch (const std::exception& continued) {
+    } catch (const std::exception& stopped) {
       e.set_irregularity_share(1.0);
       throw std::runtime_error(std::string(direct.what()) + "; continued from the nominal rails" +
                                (off_centre ? " with the held wheelsets centred" : "") + ", the equilibrium reached " +
-                               reached + " of the way: " + continued.what());
+                               reached + " of the way: " + stopped.what());
     }
   }
 }

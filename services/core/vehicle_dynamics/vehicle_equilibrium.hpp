@@ -52,8 +52,10 @@ VehicleEquilibrium vehicle_equilibrium(VehicleDae& dae, double t, std::vector<do
 /// formulation own. The tolerances [m, rad] and [m/s, rad/s] weigh the convergence test. Where
 /// Newton does not find it directly (irregular rails; a wheelset held off centre, which may put
 /// another on a jump of its contact point), it is continued from the nominal rails with the held
-/// wheelsets centred, raising the irregularities and the offsets together in formulation own.
+/// wheelsets centred, raising the irregularities and the offsets together in formulation own;
+/// continued = false tries Newton alone, on the rails as the equations place them now.
 std::vector<double> vehicle_rest_state(VehicleDae& dae, ContactFormulation own, double t, double position_tolerance,
-                                       double velocity_tolerance, const std::vector<HeldWheelset>& held = {});
+                                       double velocity_tolerance, const std::vector<HeldWheelset>& held = {},
+                                       bool continued = true);
 
 }  // namespace wrc

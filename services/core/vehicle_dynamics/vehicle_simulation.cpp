@@ -164,12 +164,16 @@ std::vector<double> VehicleSimulation::placed_on_rails(const std::vector<HeldWhe
   equations_.set_irregularity_share(0.0);
   std::vector<double> y;
   bool moved = false;
+  // Newton alone on the nominal rails (a continuation would raise the irregularities again, and
+  // with a hold it has failed already in start()).
   try {
     try {
-      y = vehicle_rest_state(dae_, ContactFormulation::kRigid, 0.0, s.position_tolerance, s.velocity_tolerance, held);
+      y = vehicle_rest_state(dae_, ContactFormulation::kRigid, 0.0, s.position_tolerance, s.velocity_tolerance, held,
+                             false);
     } catch (const std::runtime_error&) {
       if (held.empty()) throw;
-      y = vehicle_rest_state(dae_, ContactFormulation::kRigid, 0.0, s.position_tolerance, s.velocity_tolerance);
+      y = vehicle_rest_state(dae_, ContactFormulation::kRigid, 0.0, s.position_tolerance, s.velocity_tolerance, {},
+                             false);
       moved = true;
     }
   } catch (...) {

@@ -11,9 +11,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "core/dynamics/hunting_run.hpp"
+#include "core/dynamics/simulation.hpp"
 
 namespace wrc {
 namespace {
@@ -126,6 +129,78 @@ TEST(HuntingJudgement, ARegularGrowthIsGrowingAndAConstantCycleALimitCycle) {
   EXPECT_EQ(constant.state, HuntingState::kLimitCycle) << hunting_state_name(constant.state);
   EXPECT_NEAR(constant.cycle.amplitude, 4e-3, 4e-3 * 6e-4);
   EXPECT_DOUBLE_EQ(constant.amplitude(), constant.cycle.amplitude);
+}
+
+// A run that steps 1 ms at a time and samples the signal y(t) into the samples follow_hunting
+// judges: the loop's settling without an integrator.
+class SampledSignal final : public Simulation {
+ public:
+  SampledSignal(std::function<double(double)> y, double t_end, HuntingSamples& samples)
+      : y_(std::move(y)), t_end_(t_end), samples_(samples) {}
+  void start() override { sample(); }
+  bool advance() override {
+    if (t_ + 0.5 * kStep >= t_end_) {
+      state_ = RunState::kFinished;
+      return false;
+    }
+    t_ += kStep;
+    sample();
+    return true;
+  }
+  void request_stop() override {}
+  void request_swap(std::shared_ptr<ContactEvaluator>) override {}
+  void schedule_swap(double, std::shared_ptr<ContactEvaluator>) override {}
+  RunState state() const override { return state_; }
+  const std::string& message() const override { return message_; }
+  double time() const override { return t_; }
+  std::string model() const override { return "signal"; }
+  RunCounters counters() const override { return {}; }
+  const std::vector<SwapRecord>& swaps() const override { return swaps_; }
+
+ private:
+  void sample() {
+    samples_.t.push_back(t_);
+    samples_.y.push_back(y_(t_));
+    samples_.yaw.push_back(0.0);
+    samples_.angle.push_back(0.0);
+  }
+  std::function<double(double)> y_;
+  double t_end_;
+  HuntingSamples& samples_;
+  double t_ = 0;
+  RunState state_ = RunState::kRunning;
+  std::string message_;
+  std::vector<SwapRecord> swaps_;
+};
+
+// The cycle amplitudes of irregular_amplitude() times decay^k, at 11 Hz.
+std::function<double(double)> irregular(double decay) {
+  return [decay](double t) {
+    const long k = static_cast<long>(std::floor(t * kFrequency));
+    return irregular_amplitude(k) * std::pow(decay, static_cast<double>(k)) * std::sin(2 * M_PI * kFrequency * t);
+  };
+}
+
+// The loop settles an irregular motion once its envelope has held at every judgement over a whole
+// window: the first judgement with two windows behind it is at 4 s, the window 2 s, so it stops at
+// 6 s of a run allowed 20 s, and it persists. The same motion dying at 1.5 % per cycle (its
+// envelope by 0.985^20.6 = 0.73 per window) is no irregular motion at any judgement: it runs to
+// its end and is judged decaying.
+TEST(HuntingJudgement, AnIrregularMotionSettlesOnceItsEnvelopeHeldOverAWindow) {
+  HuntingSettings settings;
+  settings.max_time = 20.0;
+  HuntingSamples held_samples, dying_samples;
+  SampledSignal held(irregular(1.0), settings.max_time, held_samples);
+  SampledSignal dying(irregular(0.985), settings.max_time, dying_samples);
+  HuntingRun h, d;
+  ASSERT_TRUE(follow_hunting(held, held_samples, settings, h));
+  ASSERT_TRUE(follow_hunting(dying, dying_samples, settings, d));
+  EXPECT_EQ(h.state, HuntingState::kIrregular) << hunting_state_name(h.state);
+  EXPECT_NEAR(h.simulated_time, 6.0, 1e-9);
+  EXPECT_TRUE(h.persists());
+  EXPECT_EQ(d.state, HuntingState::kDecaying) << hunting_state_name(d.state);
+  EXPECT_NEAR(d.simulated_time, settings.max_time, 1e-9);
+  EXPECT_FALSE(d.persists());
 }
 
 }  // namespace

@@ -94,7 +94,7 @@ void judge_hunting(const HuntingSamples& s, double now, const HuntingSettings& s
   const double previous =
       measure_cycle(s.t, s.y, now - 2 * settings.window, kPeriods, now - settings.window).largest_amplitude;
   const double periods = window.period > 0 ? settings.window / window.period : 0.0;
-  result.envelope_growth = now - 2 * settings.window >= 0 && previous > 0 && result.envelope > 0 && periods > 0
+  result.envelope_growth = now >= 2 * settings.window - 1e-9 && previous > 0 && result.envelope > 0 && periods > 0
                                ? std::pow(result.envelope / previous, 1.0 / periods)
                                : 0.0;
   result.state = judge(result.cycle, result.envelope_growth, settings);
@@ -117,7 +117,9 @@ bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const Hunti
   double next_check = settings.settle_time;
   bool settled = false;
   double previous_amplitude = -1;
-  double held_since = -1;  // [s] the first of the judgements in a row whose envelope held; -1: none
+  // Judgements in a row whose envelope held, and how many span a window (both ends included).
+  int held_judgements = 0;
+  const int judgements_over_a_window = static_cast<int>(std::ceil(settings.window / settings.check_period - 1e-9)) + 1;
   while (simulation.advance()) {
     if (simulation.time() + 1e-12 < next_check) continue;
     next_check += settings.check_period;
@@ -141,13 +143,8 @@ bool follow_hunting(Simulation& simulation, const HuntingSamples& s, const Hunti
     // nothing more.
     const bool held = (result.state == HuntingState::kIrregular || result.state == HuntingState::kLimitCycle) &&
                       envelope_holds(result.envelope_growth, settings);
-    if (!held) {
-      held_since = -1;
-    } else if (held_since < 0) {
-      held_since = simulation.time();
-    }
-    if (result.state == HuntingState::kIrregular && held_since >= 0 &&
-        simulation.time() - held_since >= settings.window - 1e-9) {
+    held_judgements = held ? held_judgements + 1 : 0;
+    if (result.state == HuntingState::kIrregular && held_judgements >= judgements_over_a_window) {
       settled = true;
       break;
     }

@@ -28,12 +28,13 @@ struct CycleMeasurement {
   double frequency() const { return period > 0 ? 1.0 / period : 0.0; }
 };
 
-/// Measures the oscillation of x(t) over the samples with from <= t < to [s]. Peaks and troughs are the
-/// samples larger (smaller) than both neighbours, their value and time refined by the parabola
-/// through the three samples, and counted when they differ from the last counted extremum of the
-/// other kind by more than 1 % of the range of x over the measured samples; the period is the mean spacing of the last up to `periods` + 1
-/// peaks, the growth the mean ratio of the last up to `periods` + 1 cycles. @throws std::invalid_argument when t and x differ in size, t is not increasing, or
-/// periods < 1.
+/// Measures the oscillation of x(t) over the samples with from <= t < to [s]. Peaks and troughs
+/// are the samples larger (smaller) than both neighbours, their value and time refined by the
+/// parabola through the three samples, and counted when they differ from the last counted extremum
+/// of the other kind by more than 1 % of the range of x over the measured samples; the period is
+/// the mean spacing of the last up to `periods` + 1 peaks, the growth the mean ratio of the last up
+/// to `periods` + 1 cycles. @throws std::invalid_argument when t and x differ in size, t is not
+/// increasing, or periods < 1.
 CycleMeasurement measure_cycle(const std::vector<double>& t, const std::vector<double>& x, double from,
                                int periods = 3, double to = std::numeric_limits<double>::infinity());
 

@@ -73,6 +73,8 @@ json report_json(const GeometrySpec& spec, const SplineFitOptions& o, const Spli
       residuals[kSplineFields[static_cast<size_t>(f)].name] = field_error(w.residuals[static_cast<size_t>(f)]);
     wheels.push_back({{"wheel", side_name(side)},
                       {"branches", w.y_breakpoints.size()},
+                      {"across_jumps", w.across_jumps},
+                      {"line_jumps", {{"fewest", w.fewest_line_jumps}, {"most", w.most_line_jumps}}},
                       {"y_breakpoints", w.y_breakpoints},
                       {"samples", w.samples},
                       {"samples_near_jumps", w.samples_near_jumps},
@@ -190,6 +192,7 @@ int run_fit(const std::vector<std::string>& args) {
   std::printf("precomputation %.3f s (sampling %.3f s, fitting %.3f s); %d x %d knot intervals in y, roll, yaw %d\n",
               fit.sampling_seconds + fit.fitting_seconds, fit.sampling_seconds, fit.fitting_seconds,
               options.intervals[0], options.intervals[1], options.intervals[2]);
+  if (const std::string note = across_jumps_note(fit, options); !note.empty()) std::printf("%s\n", note.c_str());
   if (accuracy) {
     // Every parameter's rms error against the distance from the nearest jump (both wheels).
     const auto& bands = accuracy->wheels[0].z_by_jump_distance;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -199,6 +200,34 @@ TEST(SplineBranches, BranchesFollowTheExactContinuationWithinATransition) {
   EXPECT_LT(worst_z, 1.5e-7);
   EXPECT_LT(worst_angle, 1.5e-3);
   EXPECT_LT(worst_s, 1.5e-4);
+}
+
+// Branch fits need the same number of tread jumps on every sample line. The jumps move by about
+// -0.5 mm per mrad of roll: over +-2 mrad of roll with +-10 mrad of yaw the left wheel's centred
+// jump (near y = 0.2 mm at roll 0) leaves some lines of a +-6 mm box and stays on others, so the
+// wheel is fitted once across its jumps, and the fit says so (across_jumps_note: such a fit puts
+// the Cooperrider bogie's linear critical speed at 63 m/s against 111 m/s with branch fits,
+// docs/vehicle.md). The default box holds the same jumps on every line: branch fits, no note.
+TEST(SplineBranches, AFitAcrossTheJumpsSaysWhy) {
+  SplineFitOptions o = test::quick_spline_options();
+  o.roll_max = 0.002;
+  o.yaw_max = 0.01;
+  const SplineFit across = fit_spline_geometry(*test::s1002_uic60_geometry(), o);
+  const WheelFitReport& left = across.wheels[0];
+  EXPECT_TRUE(left.across_jumps);
+  EXPECT_LT(left.fewest_line_jumps, left.most_line_jumps);
+  const std::string note = across_jumps_note(across, o);
+  EXPECT_NE(note.find("the left wheel's sample lines hold " + std::to_string(left.fewest_line_jumps) + " to " +
+                      std::to_string(left.most_line_jumps) + " tread jumps"),
+            std::string::npos)
+      << note;
+  const SplineFit& branches = test::quick_spline_fit();
+  for (const WheelFitReport& w : branches.wheels) {
+    EXPECT_FALSE(w.across_jumps);
+    EXPECT_EQ(w.fewest_line_jumps, w.most_line_jumps);
+    EXPECT_GT(w.fewest_line_jumps, 0);
+  }
+  EXPECT_EQ(across_jumps_note(branches, test::quick_spline_options()), "");
 }
 
 }  // namespace

@@ -274,6 +274,11 @@ size_t common_jump_count(const WheelSampleGrid& grid) {
 // those near a jump.
 void count_samples(const WheelSampleGrid& grid, const SplineFitOptions& options, WheelFitReport& report) {
   for (const auto& line : grid.line_jumps) report.jumps.insert(report.jumps.end(), line.begin(), line.end());
+  for (size_t l = 0; l < grid.line_jumps.size(); ++l) {
+    const int n = static_cast<int>(grid.line_jumps[l].size());
+    report.fewest_line_jumps = l == 0 ? n : std::min(report.fewest_line_jumps, n);
+    report.most_line_jumps = l == 0 ? n : std::max(report.most_line_jumps, n);
+  }
   report.exact_evaluations = grid.exact_evaluations;
   const size_t count = grid.samples.size();
   const size_t nyy = grid.y.size(), nk = grid.yaw.size();
@@ -652,6 +657,7 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
     count_samples(grid, options, report);
     const size_t jumps = options.transition > 0.0 && options.y_breakpoints.empty() ? common_jump_count(grid) : 0;
     SplineWheel& wheel = wheels[static_cast<size_t>(w)];
+    report.across_jumps = jumps == 0;
     if (jumps == 0) {
       start = std::chrono::steady_clock::now();
       fit_across_jumps(grid, options, box, side, lines, report, wheel);
@@ -666,6 +672,23 @@ SplineFit fit_spline_geometry(const WheelsetGeometry& geometry, const SplineFitO
   for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight})
     add_residuals(*out.model, *out.samples[static_cast<size_t>(side)], options, out.wheels[static_cast<size_t>(side)]);
   return out;
+}
+
+std::string across_jumps_note(const SplineFit& fit, const SplineFitOptions& options) {
+  if (!(options.transition > 0.0) || !options.y_breakpoints.empty()) return {};
+  std::string note;
+  for (WheelSide side : {WheelSide::kLeft, WheelSide::kRight}) {
+    const WheelFitReport& r = fit.wheels[static_cast<size_t>(side)];
+    if (!r.across_jumps || r.fewest_line_jumps == r.most_line_jumps) continue;
+    if (!note.empty()) note += "\n";
+    note += std::string("spline fit: the ") + (side == WheelSide::kLeft ? "left" : "right") +
+            " wheel's sample lines hold " + std::to_string(r.fewest_line_jumps) + " to " +
+            std::to_string(r.most_line_jumps) +
+            " tread jumps (the box's roll and yaw move jumps in and out of it), so it is fitted once across "
+            "its jumps, which smooths the tread's local conicity near them (a linear critical speed may move "
+            "by tens of percent); a smaller roll or yaw range keeps the branch fits";
+  }
+  return note;
 }
 
 }  // namespace wrc

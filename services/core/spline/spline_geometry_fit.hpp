@@ -68,6 +68,12 @@ struct WheelFitReport {
   int samples_near_jumps = 0;            ///< within jump_band of a jump (weight jump_weight)
   int samples_in_flange_contact = 0;     ///< flange clearance <= 0
   int exact_evaluations = 0;             ///< potential-point scans
+  /// The fewest and the most tread jumps on one sample line [-]. Branch fits need the same number
+  /// (> 0) on every line: where the box's roll and yaw move a jump in and out of it, the wheel is
+  /// fitted once across its jumps (the paper's form), which smooths the tread's local conicity
+  /// near them.
+  int fewest_line_jumps = 0, most_line_jumps = 0;
+  bool across_jumps = false;             ///< fitted once across the jumps
   /// Residuals on the samples with weight 1 outside flange contact (the continuous region).
   std::array<FieldError, kSplineFieldCount> residuals{};
 };
@@ -81,6 +87,11 @@ struct SplineFit {
   double sampling_seconds = 0;           ///< exact-geometry sampling and jump location [s]
   double fitting_seconds = 0;            ///< weights, knots and least squares [s]
 };
+
+/// One line per wheel that fit asked for branch fits (transition > 0, no y breakpoints given) but
+/// fitted across its jumps because its sample lines hold different numbers of them: the wheel,
+/// the numbers and what it means for the model; empty when there is none.
+std::string across_jumps_note(const SplineFit& fit, const SplineFitOptions& options);
 
 /// The grid values of the fit's samples: n values from lo to hi inclusive (n >= 2), or the
 /// midpoints of the n - 1 intervals of that grid when midpoints is set (a validation set that does

@@ -4,11 +4,9 @@
 // track (core/vehicle_dynamics/vehicle_linear_stability.hpp, docs/vehicle.md "Linear stability"),
 // in-process with the chosen contact model; the table, the critical speed, the CSV and the plot.
 
-#include <string>
-#include <vector>
-
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "cli/options.hpp"

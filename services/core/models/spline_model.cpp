@@ -43,10 +43,14 @@ WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContex
   splines_->evaluate(side, pose, SplineDerivatives::kGradient, e, kSplineQueryFieldCount, 1);
   const double clearance = e.value[kFieldFlangeClearance];
   const double tracked = context.query.tracked_s_wheel[static_cast<size_t>(side)];
-  // Untracked (a first query), flange contact where the fitted clearance and the exact geometry
-  // both say so: the tracked run's tread keeps it where only the fit does (below).
-  const bool flange_contact = std::isnan(tracked) ? !(clearance > 0.0) && has_flange_side_minimum(side, pose)
-                                                  : tracked <= splines_->s_split();
+  // Flange contact where the fitted clearance and the exact geometry both say so when untracked (a
+  // first query); tracked, where the followed point lies on the flange side. The exact geometry is
+  // asked once, only untracked or on the tread where the fit says flange contact.
+  const bool untracked = std::isnan(tracked);
+  const bool on_tread = !untracked && tracked > splines_->s_split();
+  const bool fitted_flange = !(clearance > 0.0);
+  const bool exact_flange = fitted_flange && (untracked || on_tread) && has_flange_side_minimum(side, pose);
+  const bool flange_contact = untracked ? exact_flange : !on_tread;
   if (!flange_contact) {
     const ContactPoint point = splines_->contact_point(side, pose, e);
     std::optional<ContactPatch> patch = one_point_patch(point, splines_->patch_shape(e), context);
@@ -76,7 +80,7 @@ WheelConstraint SplineModel::add_wheel_patches(WheelSide side, const PatchContex
     // find none to follow and come back to the tread at once (a switch back and forth without
     // end). The tread stays: the switch function is mirrored above 0 until the exact flange
     // minimum exists.
-    if (!(clearance > 0.0) && !has_flange_side_minimum(side, pose)) c.switch_function = -clearance;
+    if (fitted_flange && !exact_flange) c.switch_function = -clearance;
     return c;
   }
   // Flange contact: the exact geometry's minimum on the flange side of the split.

@@ -183,11 +183,12 @@ std::vector<double> VehicleSimulation::placed_on_rails(const std::vector<HeldWhe
   equations_.set_irregularity_share(1.0);
   equations_.place(0.0);
   std::vector<std::vector<double>> blocks = split_by_body(dae_.layout(), y);
-  for (const HeldWheelset& h : held) {
-    if (!moved) break;
-    std::vector<double>& block = blocks[equations_.wheelset_body(h.wheelset)];
-    block[kUnknownY] = h.lateral;
-    block[kUnknownYaw] = h.yaw;
+  if (moved) {
+    for (const HeldWheelset& h : held) {
+      std::vector<double>& block = blocks[equations_.wheelset_body(h.wheelset)];
+      block[kUnknownY] = h.lateral;
+      block[kUnknownYaw] = h.yaw;
+    }
   }
   how = moved ? "the vehicle at rest centred on the nominal rails, its first wheelset then moved to its held y and yaw"
               : "the vehicle at rest on the nominal rails";
